@@ -1,0 +1,215 @@
+// Impulse2D — definitions used to create worlds, bodies, shapes and joints,
+// the world's settings, and the events and query results a world reports.
+//
+// Definitions are plain aggregates with defaults: fill in what differs, e.g.
+//   i2d::BodyDef def{.type = i2d::BodyType::dynamic, .position = {0, 4}};
+#pragma once
+
+#include <cstdint>
+
+#include "impulse2d/collision.hpp"
+#include "impulse2d/id.hpp"
+#include "impulse2d/math.hpp"
+
+namespace i2d {
+
+/// How position error (overlap, joint drift) is corrected.
+enum class PositionCorrection : std::uint8_t {
+    /// Seed 001 §5.2–5.3: the push factor β adds a velocity β·d/Δt (d the
+    /// penetration beyond the slop) to the velocity constraint. Simple, but
+    /// the push velocity stays in the body after the overlap is gone.
+    baumgarte,
+    /// Seed 001 §8.1, the single-frame push factor: the push is solved on a
+    /// separate pseudo-velocity that moves positions for one step and is then
+    /// dropped, so correcting overlap adds no kinetic energy.
+    split,
+    /// Substepping with soft constraints and a relax pass (the "soft step"
+    /// of Box2D v3): the step is divided into `substeps`, each solving
+    /// spring-damped contacts and joints, then relaxing without the push.
+    soft_step,
+};
+
+/// How a contact that begins with an approach speed is resolved.
+enum class ImpactModel : std::uint8_t {
+    /// Seed 000 §5: closed-form 2D frictional impact with Stronge's energetic
+    /// restitution, applied before the iterative solver. Never creates energy.
+    closed_form,
+    /// Restitution as a velocity bias in the contact solver (seed 001 §8.2), as Box2D does.
+    velocity_bias,
+};
+
+/// Settings of a world. All can be changed between steps with World::settings().
+struct WorldSettings {
+    Vec2 gravity{0.0f, -10.0f};  ///< m/s²
+
+    PositionCorrection positionCorrection = PositionCorrection::soft_step;
+    ImpactModel impactModel = ImpactModel::closed_form;
+
+    /// Velocity iterations per step (baumgarte, split) or per substep (soft_step).
+    int velocityIterations = 8;
+    /// Iterations of the position (pseudo-velocity) pass in split mode; relax
+    /// iterations per substep in soft_step mode.
+    int positionIterations = 3;
+    /// Substeps per step (soft_step only).
+    int substeps = 4;
+
+    /// Push factor β ∈ [0, 1] of seed 001 eq. 5.2.3 (baumgarte and split). Dimensionless.
+    float pushFactor = 0.2f;
+    /// Penetration allowed without correction (m). Keeps resting contacts
+    /// touching so the narrowphase keeps reporting them (seed 001 §8.1, last note).
+    float penetrationSlop = 0.005f;
+    /// Largest speed used to push overlapping bodies apart (m/s).
+    float maxPushSpeed = 3.0f;
+    /// Contact stiffness (Hz) and damping ratio for soft_step.
+    float contactHertz = 30.0f;
+    float contactDampingRatio = 10.0f;
+    /// Joint stiffness (Hz) and damping ratio for the position error of rigid joints in soft_step.
+    float jointHertz = 60.0f;
+    float jointDampingRatio = 2.0f;
+
+    /// Approach speed (m/s) below which a contact gets no restitution.
+    float restitutionThreshold = 1.0f;
+    /// Approach speed (m/s) above which a new contact is resolved as an impact
+    /// by the closed-form law (when impactModel == closed_form).
+    float impactThreshold = 1.0f;
+
+    /// Contacts are created when shapes are closer than this (m).
+    float speculativeDistance = 0.02f;
+    /// Fattening of broadphase boxes (m): a proxy moves in the tree only when
+    /// its shape leaves the fat box.
+    float aabbMargin = 0.1f;
+    /// Speed limit for stability (m/s).
+    float maxLinearSpeed = 400.0f;
+
+    bool enableWarmStarting = true;
+    bool enableSleep = true;
+    /// Seconds an island must rest before it sleeps.
+    float timeToSleep = 0.5f;
+    /// Speeds under which a body counts as resting (m/s and rad/s).
+    float linearSleepTolerance = 0.05f;
+    float angularSleepTolerance = 2.0f / 180.0f * 3.14159265f;
+};
+
+enum class BodyType : std::uint8_t {
+    static_body,     ///< never moves; infinite mass
+    kinematic_body,  ///< moves by its velocity only; infinite mass
+    dynamic_body,    ///< moved by forces, contacts and joints
+};
+
+struct BodyDef {
+    BodyType type = BodyType::static_body;
+    Vec2 position{};  ///< body origin, world (m)
+    float angle = 0.0f;  ///< radians, counter-clockwise
+    Vec2 linearVelocity{};  ///< of the centre of mass (m/s)
+    float angularVelocity = 0.0f;  ///< rad/s
+    float linearDamping = 0.0f;  ///< 1/s, ≥ 0
+    float angularDamping = 0.0f;  ///< 1/s, ≥ 0
+    float gravityScale = 1.0f;
+    bool fixedRotation = false;
+    bool isAwake = true;
+    bool enableSleep = true;
+    std::uintptr_t userData = 0;
+};
+
+/// Which shapes may collide. Two shapes collide when each one's category is
+/// in the other's mask, unless they share a non-zero group: a positive group
+/// always collides, a negative one never does.
+struct Filter {
+    std::uint32_t categoryBits = 0x0001;
+    std::uint32_t maskBits = 0xFFFFFFFF;
+    std::int32_t groupIndex = 0;
+};
+
+constexpr bool shouldCollide(const Filter& a, const Filter& b) {
+    if (a.groupIndex == b.groupIndex && a.groupIndex != 0) return a.groupIndex > 0;
+    return (a.maskBits & b.categoryBits) != 0 && (a.categoryBits & b.maskBits) != 0;
+}
+
+struct ShapeDef {
+    float density = 1.0f;      ///< kg/m², ≥ 0 (0 adds no mass)
+    float friction = 0.6f;     ///< Coulomb coefficient μ ≥ 0
+    float restitution = 0.0f;  ///< coefficient of restitution e ∈ [0, 1]
+    Filter filter{};
+    bool isSensor = false;     ///< detects overlap, makes no contact
+    bool enableContactEvents = true;
+    bool enableSensorEvents = true;
+    std::uintptr_t userData = 0;
+};
+
+enum class ShapeType : std::uint8_t { circle, capsule, segment, polygon };
+
+/// Distance constraint of seed 001 §5.2 between two anchor points. Rigid by
+/// default; with enableSpring it becomes a spring of the given frequency and
+/// damping ratio; with enableLimit its length is kept within
+/// [minLength, maxLength] (a rope: enableSpring with hertz 0 and a limit).
+struct DistanceJointDef {
+    BodyId bodyA{};
+    BodyId bodyB{};
+    Vec2 localAnchorA{};  ///< relative to body A's origin, body frame
+    Vec2 localAnchorB{};
+    float length = 1.0f;  ///< rest length (m), > 0
+    bool enableSpring = false;
+    float hertz = 0.0f;   ///< spring frequency (Hz), ≥ 0; 0 = no spring force
+    float dampingRatio = 0.0f;  ///< ≥ 0
+    bool enableLimit = false;
+    float minLength = 0.0f;
+    float maxLength = 1.0e9f;
+    bool collideConnected = false;
+    std::uintptr_t userData = 0;
+};
+
+struct ContactBeginEvent {
+    ShapeId shapeA{};
+    ShapeId shapeB{};
+    Manifold manifold{};
+};
+
+struct ContactEndEvent {
+    ShapeId shapeA{};
+    ShapeId shapeB{};
+};
+
+struct SensorBeginEvent {
+    ShapeId sensor{};
+    ShapeId visitor{};
+};
+
+struct SensorEndEvent {
+    ShapeId sensor{};
+    ShapeId visitor{};
+};
+
+/// A contact whose shapes touch (the manifold has points), for inspection.
+struct ContactData {
+    ShapeId shapeA{};
+    ShapeId shapeB{};
+    Manifold manifold{};
+    float normalImpulse[2]{};   ///< accumulated over the last step (N·s)
+    float tangentImpulse[2]{};
+};
+
+/// Filter for queries: a shape is reported when its category is in `maskBits`
+/// and `categoryBits` is in its mask.
+struct QueryFilter {
+    std::uint32_t categoryBits = 0x0001;
+    std::uint32_t maskBits = 0xFFFFFFFF;
+};
+
+struct RayResult {
+    ShapeId shape{};
+    Vec2 point{};
+    Vec2 normal{};
+    float fraction = 0.0f;
+};
+
+/// Time spent in each stage of the last step (milliseconds).
+struct Profile {
+    float step = 0.0f;
+    float pairs = 0.0f;
+    float collide = 0.0f;
+    float impacts = 0.0f;
+    float solve = 0.0f;
+    float sleep = 0.0f;
+};
+
+}  // namespace i2d
