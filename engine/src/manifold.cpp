@@ -214,21 +214,23 @@ Manifold collidePolygonsLocal(const Polygon& polyA, const Polygon& polyB, float 
     const bool flip = separationB > separationA + kReferenceTolerance;
     const float separation = flip ? separationB : std::fmax(separationA, separationB);
 
-    if (separation > kReferenceTolerance) {
-        // Cores apart: SAT gives a lower bound of their distance; it is the
-        // exact distance for a face contact (a vertex over a face) and an
-        // underestimate when the closest features are two vertices.
-        ClosestFeatures cf;
+    // Cores apart: SAT gives a lower bound of their distance; it is the exact
+    // distance for a face contact (a vertex over a face) and an underestimate
+    // when the closest features are two vertices.
+    const bool disjoint = separation > kReferenceTolerance;
+    ClosestFeatures cf;
+    float dist = 0.0f;
+    if (disjoint) {
         closestEdgeVertex(polyA, polyB, true, cf);
         closestEdgeVertex(polyB, polyA, false, cf);
-        float dist = std::sqrt(cf.distanceSquared);
+        dist = std::sqrt(cf.distanceSquared);
         if (dist > speculativeDistance + radius) return m;
-        if (dist > separation + kReferenceTolerance) {
-            Vec2 n = (1.0f / dist) * (cf.pB - cf.pA);
-            return singlePoint(cf.pA, cf.pB, n, dist, polyA.radius, polyB.radius,
-                               makeFeatureId(cf.vertexA, cf.vertexB));
-        }
     }
+    auto vertexContact = [&]() {
+        Vec2 n = (1.0f / dist) * (cf.pB - cf.pA);
+        return singlePoint(cf.pA, cf.pB, n, dist, polyA.radius, polyB.radius, makeFeatureId(cf.vertexA, cf.vertexB));
+    };
+    if (disjoint && dist > separation + kReferenceTolerance) return vertexContact();
 
     // Reference face and incident edge (the incident edge's normal is the
     // most anti-parallel to the reference normal).
@@ -251,6 +253,14 @@ Manifold collidePolygonsLocal(const Polygon& polyA, const Polygon& polyB, float 
     const int i2 = edgeInc + 1 < inc.count ? edgeInc + 1 : 0;
     clipSegments(ref.vertices[r1], ref.vertices[r2], n, ref.radius, r1, r2, inc.vertices[i1], inc.vertices[i2],
                  inc.radius, i1, i2, flip, true, speculativeDistance, m);
+    if (disjoint) {
+        // A vertex just past the end of the reference face (within the
+        // classification tolerance) can be clipped away, leaving points that
+        // overstate the gap; then the exact closest-vertex contact is better.
+        float minSep = FLT_MAX;
+        for (int i = 0; i < m.pointCount; ++i) minSep = std::fmin(minSep, m.points[i].separation);
+        if (m.pointCount == 0 || minSep > dist - radius + kReferenceTolerance) return vertexContact();
+    }
     return m;
 }
 
