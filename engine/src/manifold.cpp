@@ -23,7 +23,8 @@
 //   is within ~10° of one segment's normal and the projections overlap, the
 //   other segment is clipped against that one (two points when nearly
 //   parallel, e.g. one lying on the other); otherwise (end-to-end, crossing
-//   at an angle with separated cores) one point at the closest points.
+//   at an angle with separated cores, or a clip that cut away the closest
+//   point) one point at the closest points.
 //   Crossing/intersecting cores: reference = A, normal = A's perpendicular
 //   on the side of B's midpoint (+left perpendicular when exactly centred).
 //   Parallel collinear segments overlapping end to end: two points.
@@ -412,7 +413,13 @@ Manifold collideCapsulesLocal(Vec2 p1, Vec2 q1, float rA, Vec2 p2, Vec2 q2, floa
                 clipSegments(forward ? p2 : q2, forward ? q2 : p2, n, rB, forward ? 0 : 1, forward ? 1 : 0, p1, q1, rA, 0,
                              1, true, false, speculativeDistance, m);
             }
-            if (m.pointCount > 0) return m;
+            // Keep the clipped manifold only if its deepest point agrees with
+            // the exact closest-point gap; the clip can cut away the closest
+            // point when it lies just past the end of the reference segment.
+            float minSep = FLT_MAX;
+            for (int i = 0; i < m.pointCount; ++i) minSep = std::fmin(minSep, m.points[i].separation);
+            if (m.pointCount > 0 && minSep <= dist - rA - rB + kReferenceTolerance) return m;
+            m.pointCount = 0;
         }
     }
     return singlePoint(sd.closest1, sd.closest2, nClosest, dist, rA, rB, 0);
