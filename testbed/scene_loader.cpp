@@ -9,6 +9,7 @@
 #include <cfloat>
 #include <cmath>
 #include <cstdint>
+#include <cstdlib>
 #include <filesystem>
 #include <fstream>
 #include <map>
@@ -368,8 +369,6 @@ ShapeDesc parseShape(const json& j, const Loc& loc) {
         i2d::Vec2 c = o.vec("center", {}, kMaxCoordinate);
         float a = o.f("angle", 0.0f, {-kMaxAngle, kMaxAngle});
         float r = o.f("radius", 0.0f, {0, kMaxSize});
-        if (hx < 0.5f * i2d::kLinearSlop || hy < 0.5f * i2d::kLinearSlop)
-            fail(o.at(hx < hy ? "hx" : "hy"), "box is thinner than 0.005 m (degenerate polygon)");
         s.polygon = i2d::makeOffsetBox(hx, hy, c, a);
         s.polygon.radius = r;
     } else {
@@ -517,12 +516,12 @@ struct Builder {
 
 // Generators: see docs/scene-format.md, "Generators".
 void expandGenerator(const json& j, const Loc& loc, Builder& bld) {
-    Obj o(j, loc, {"comment", "generator", "body", "name_prefix", "name_first", "name_last"});
+    Obj o(j, loc, {"comment", "generator", "body", "name_prefix", "name_first", "name_last", "name_at"});
     std::string kind = o.reqStr("generator");
     if (kind == "row") {
         o.allow({"count", "origin", "step", "copies", "copy_step"});
     } else if (kind == "grid") {
-        o.allow({"columns", "rows", "origin", "spacing", "copies", "copy_step"});
+        o.allow({"columns", "rows", "origin", "spacing", "copies", "copy_step", "link"});
     } else if (kind == "pyramid") {
         o.allow({"base", "origin", "spacing", "copies", "copy_step"});
     } else if (kind == "chain") {
@@ -581,6 +580,20 @@ void expandGenerator(const json& j, const Loc& loc, Builder& bld) {
     std::string prefix = o.str("name_prefix", "");
     std::string first = o.str("name_first", "");
     std::string last = o.str("name_last", "");
+    std::map<std::int64_t, std::string> nameAt;
+    if (o.has("name_at")) {
+        Obj na(o.get("name_at"), o.at("name_at"), {});
+        for (auto it = o.get("name_at").begin(); it != o.get("name_at").end(); ++it) {
+            Loc kl = na.loc().key(it.key());
+            char* end = nullptr;
+            long long idx = std::strtoll(it.key().c_str(), &end, 10);
+            if (it.key().empty() || *end != '\0' || idx < 0 || idx >= total)
+                fail(kl, "key must be a body index of this generator, from 0 to " + std::to_string(total - 1));
+            if (!it.value().is_string() || it.value().get<std::string>().empty())
+                fail(kl, "expected a non-empty name (string), got " + typeName(it.value()));
+            nameAt[idx] = it.value().get<std::string>();
+        }
+    }
     int firstIndex = static_cast<int>(bld.bodies.size());
     std::int64_t k = 0;
     for (std::int64_t qy = 0; qy < cy; ++qy) {
@@ -592,7 +605,9 @@ void expandGenerator(const json& j, const Loc& loc, Builder& bld) {
                 if (!i2d::isFinite(b.def.position) || std::fabs(b.def.position.x) > kMaxCoordinate ||
                     std::fabs(b.def.position.y) > kMaxCoordinate)
                     fail(loc, "generated position out of range: coordinates must have magnitude at most 1e7");
-                if (k == 0 && !first.empty()) {
+                if (auto it = nameAt.find(k); it != nameAt.end()) {
+                    b.name = it->second;
+                } else if (k == 0 && !first.empty()) {
                     b.name = first;
                 } else if (k == total - 1 && !last.empty()) {
                     b.name = last;
@@ -605,6 +620,34 @@ void expandGenerator(const json& j, const Loc& loc, Builder& bld) {
         }
     }
 
+    if (kind == "grid" && o.has("link")) {
+        // Joints between each body and its right and upper neighbours, centre to centre.
+        if (o.has("copies")) fail(o.at("link"), "link cannot be combined with copies");
+        Obj lo(o.get("link"), o.at("link"), {"comment", "length", "spring", "limit", "collide_connected"});
+        lo.checkUnknown();
+        PendingJoint base;
+        parseJointOptions(lo, base);
+        base.loc = o.at("link");
+        int cols = static_cast<int>(o.reqInt("columns", 1, maxCount));
+        int rows = static_cast<int>(o.reqInt("rows", 1, maxCount));
+        for (int r = 0; r < rows; ++r) {
+            for (int c = 0; c < cols; ++c) {
+                int i = firstIndex + r * cols + c;
+                if (c + 1 < cols) {
+                    PendingJoint pj = base;
+                    pj.indexA = i;
+                    pj.indexB = i + 1;
+                    bld.joints.push_back(pj);
+                }
+                if (r + 1 < rows) {
+                    PendingJoint pj = base;
+                    pj.indexA = i;
+                    pj.indexB = i + cols;
+                    bld.joints.push_back(pj);
+                }
+            }
+        }
+    }
     if (kind != "chain") return;
     PendingJoint base;
     base.loc = loc;
