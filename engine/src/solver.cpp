@@ -176,7 +176,7 @@ void solveContacts(WorldImpl& w, float h, Target target) {
                 // Speculative: allow exactly the approach that closes the gap this (sub)step.
                 bias = s * invH;
             } else if (target == Target::soft_bias) {
-                bias = std::max(cc.biasRate * std::min(s + slop, 0.0f), -maxPush);
+                bias = std::max(cc.biasRate * s, -maxPush);
                 massScale = cc.massScale;
                 impulseScale = cc.impulseScale;
             } else if (target == Target::baumgarte) {
