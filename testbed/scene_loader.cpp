@@ -651,10 +651,8 @@ void expandGenerator(const json& j, const Loc& loc, Builder& bld) {
     if (kind != "chain") return;
     PendingJoint base;
     base.loc = loc;
-    i2d::Vec2 step = o.reqVec("step", kMaxSize);
     i2d::Vec2 prevAnchor = o.vec("anchor_prev", {}, kMaxSize);
     i2d::Vec2 nextAnchor = o.vec("anchor_next", {}, kMaxSize);
-    (void)step;
     parseJointOptions(o, base);
     int n = static_cast<int>(local.size());
     auto attach = [&](const char* key, bool atStart) {
