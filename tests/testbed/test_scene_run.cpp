@@ -28,7 +28,7 @@ class EveryScene : public ::testing::TestWithParam<std::string> {};
 
 // Five simulated seconds with every body state finite after every step.
 // many_pyramids (22,000 boxes) runs 1 s only, to keep this whole suite
-// well under a minute on a shared 2-core machine (about 70 ms per step in a
+// well under a minute on a shared 2-core machine (about 30 ms per step in a
 // release build; sanitizer builds are ~10x slower): its pyramids start
 // resting on their grounds, so every contact is active from the first step
 // and a blow-up of the contact solver would already show within 1 s.
