@@ -1,0 +1,153 @@
+// Shipped scenes built as worlds and stepped; `testbed run` options and its
+// JSON report.
+#include <gtest/gtest.h>
+
+#include <nlohmann/json.hpp>
+
+#include <cmath>
+#include <map>
+#include <sstream>
+#include <string>
+
+#include "metrics.hpp"
+#include "run_command.hpp"
+#include "scene_build.hpp"
+#include "scene_loader.hpp"
+
+namespace {
+
+const std::string kAssets = TB_TEST_ASSETS_DIR;
+
+std::vector<std::string> sceneNames() {
+    std::vector<std::string> names;
+    for (const auto& s : tb::listScenes(kAssets)) names.push_back(s.first);
+    return names;
+}
+
+class EveryScene : public ::testing::TestWithParam<std::string> {};
+
+// Five simulated seconds with every body state finite after every step.
+// many_pyramids (22,000 boxes) runs 1 s only, to keep this whole suite
+// well under a minute on a shared 2-core machine (about 30 ms per step in a
+// release build; sanitizer builds are ~10x slower): its pyramids start
+// resting on their grounds, so every contact is active from the first step
+// and a blow-up of the contact solver would already show within 1 s.
+TEST_P(EveryScene, BuildsAndRunsFiveSecondsFinite) {
+    const std::string name = GetParam();
+    tb::SceneDesc desc = tb::loadSceneDesc(name, kAssets);
+    double seconds = 5.0;
+    if (name == "many_pyramids") seconds = 1.0;
+    long steps = std::lround(seconds / desc.dt);
+    tb::Scene scene = tb::buildScene(desc);
+    ASSERT_EQ(scene.bodies.size(), desc.bodies.size());
+    ASSERT_EQ(scene.world->bodyCount(), static_cast<int>(desc.bodies.size()));
+    ASSERT_EQ(scene.world->jointCount(), static_cast<int>(desc.joints.size()));
+    for (long i = 0; i < steps; ++i) {
+        scene.world->step(desc.dt);
+        ASSERT_TRUE(tb::allFinite(*scene.world)) << name << ": non-finite state after step " << i + 1;
+    }
+    tb::Energy e = tb::computeEnergy(*scene.world);
+    EXPECT_TRUE(std::isfinite(e.total())) << name;
+}
+
+INSTANTIATE_TEST_SUITE_P(Shipped, EveryScene, ::testing::ValuesIn(sceneNames()),
+                         [](const ::testing::TestParamInfo<std::string>& info) { return info.param; });
+
+TEST(RunCommand, JsonHasEveryField) {
+    std::ostringstream out, err;
+    int rc = tb::runRunCommand({"stack5", "--steps", "10", "--json", "--assets", kAssets}, out, err);
+    ASSERT_EQ(rc, 0) << err.str();
+    nlohmann::json j = nlohmann::json::parse(out.str());
+    EXPECT_EQ(j.at("scene"), "stack5");
+    EXPECT_EQ(j.at("steps"), 10);
+    EXPECT_NEAR(j.at("dt").get<double>(), 1.0 / 60.0, 1e-6);
+    for (const char* k : {"median", "min", "max"}) {
+        ASSERT_TRUE(j.at("ms_per_step").at(k).is_number()) << k;
+        EXPECT_GE(j["ms_per_step"][k].get<double>(), 0.0);
+    }
+    EXPECT_LE(j["ms_per_step"]["min"].get<double>(), j["ms_per_step"]["median"].get<double>());
+    EXPECT_LE(j["ms_per_step"]["median"].get<double>(), j["ms_per_step"]["max"].get<double>());
+    EXPECT_EQ(j.at("bodies"), 6);
+    EXPECT_TRUE(j.at("contacts").is_number_integer());
+    EXPECT_TRUE(j.at("max_contacts").is_number_integer());
+    EXPECT_GE(j.at("max_penetration").get<double>(), 0.0);
+    for (const char* k : {"initial", "final", "max"}) ASSERT_TRUE(j.at("energy").at(k).is_number()) << k;
+    EXPECT_GE(j["energy"]["max"].get<double>(), j["energy"]["initial"].get<double>());
+    EXPECT_EQ(j.at("nan"), false);
+    const auto& top = j.at("named").at("top");
+    for (const char* k : {"x0", "y0", "angle0", "x", "y", "angle", "vx", "vy", "w"})
+        ASSERT_TRUE(top.at(k).is_number()) << k;
+    EXPECT_FLOAT_EQ(top["y0"].get<float>(), 14.0f);
+    EXPECT_TRUE(j["named"].contains("bottom"));
+    // Ten steps of free fall from rest: the top box has moved down.
+    EXPECT_LT(top["y"].get<double>(), 14.0);
+    EXPECT_LT(top["vy"].get<double>(), 0.0);
+}
+
+TEST(RunCommand, InitialEnergyIsPotentialOfTheStack) {
+    // stack5: 5 boxes of 1.2 kg at heights 2, 5, 8, 11, 14 m under g = 10:
+    // E = Σ m g y = 1.2·10·40 = 480 J, at rest so no kinetic part. The
+    // density is rounded to 6 decimals in the file: relative error < 3e-6.
+    std::ostringstream out, err;
+    ASSERT_EQ(tb::runRunCommand({"stack5", "--steps", "0", "--json", "--assets", kAssets}, out, err), 0) << err.str();
+    nlohmann::json j = nlohmann::json::parse(out.str());
+    EXPECT_NEAR(j["energy"]["initial"].get<double>(), 480.0, 480.0 * 1e-5);
+    EXPECT_EQ(j["energy"]["initial"], j["energy"]["final"]);
+}
+
+TEST(RunCommand, SecondsAndOverrides) {
+    std::ostringstream out, err;
+    int rc = tb::runRunCommand({"bounce", "--seconds", "0.5", "--json", "--substeps", "2", "--correction", "split",
+                                "--impact", "velocity_bias", "--sleep", "on", "--velocity-iterations", "5",
+                                "--position-iterations", "1", "--assets", kAssets},
+                               out, err);
+    ASSERT_EQ(rc, 0) << err.str();
+    nlohmann::json j = nlohmann::json::parse(out.str());
+    EXPECT_EQ(j["steps"], 30);  // 0.5 s at 60 Hz
+
+    tb::RunOptions o = tb::parseRunOptions({"x", "--substeps", "2", "--correction", "baumgarte", "--impact",
+                                            "closed_form", "--sleep", "off", "--velocity-iterations", "25",
+                                            "--position-iterations", "0"});
+    i2d::WorldSettings s;
+    o.overrides.applyTo(s);
+    EXPECT_EQ(s.substeps, 2);
+    EXPECT_EQ(s.positionCorrection, i2d::PositionCorrection::baumgarte);
+    EXPECT_EQ(s.impactModel, i2d::ImpactModel::closed_form);
+    EXPECT_FALSE(s.enableSleep);
+    EXPECT_EQ(s.velocityIterations, 25);
+    EXPECT_EQ(s.positionIterations, 0);
+}
+
+TEST(RunCommand, BadArgumentsAreRefused) {
+    auto rc = [](std::vector<std::string> args) {
+        std::ostringstream out, err;
+        args.push_back("--assets");
+        args.push_back(kAssets);
+        return tb::runRunCommand(args, out, err);
+    };
+    EXPECT_EQ(rc({"stack5", "--steps", "-1"}), 2);
+    EXPECT_EQ(rc({"stack5", "--steps", "ten"}), 2);
+    EXPECT_EQ(rc({"stack5", "--correction", "magic"}), 2);
+    EXPECT_EQ(rc({"stack5", "--sleep", "maybe"}), 2);
+    EXPECT_EQ(rc({"stack5", "--steps", "1", "--seconds", "1"}), 2);
+    EXPECT_EQ(rc({"stack5", "--frobnicate"}), 2);
+    EXPECT_EQ(rc({}), 2);
+    EXPECT_EQ(rc({"no_such_scene"}), 1);
+}
+
+TEST(ListCommand, OneLinePerScene) {
+    std::ostringstream out, err;
+    ASSERT_EQ(tb::runListCommand({"--assets", kAssets}, out, err), 0) << err.str();
+    std::istringstream lines(out.str());
+    std::string line;
+    int n = 0;
+    bool sawStack = false;
+    while (std::getline(lines, line)) {
+        ++n;
+        if (line.rfind("stack5 ", 0) == 0) sawStack = line.find("Seed 001") != std::string::npos;
+    }
+    EXPECT_EQ(n, static_cast<int>(tb::listScenes(kAssets).size()));
+    EXPECT_TRUE(sawStack);
+}
+
+}  // namespace
