@@ -26,7 +26,9 @@
 
 namespace i2d {
 
+namespace detail {
 class WorldImpl;
+}
 
 class World {
 public:
@@ -190,7 +192,7 @@ public:
     void draw(DebugDraw& drawer) const;
 
 private:
-    std::unique_ptr<WorldImpl> impl_;
+    std::unique_ptr<detail::WorldImpl> impl_;
 };
 
 }  // namespace i2d

@@ -1,0 +1,83 @@
+// World::draw: hands every shape, joint and (optionally) AABB and contact to
+// a DebugDraw implementation, in world coordinates.
+#include "impulse2d/world.hpp"
+#include "world_impl.hpp"
+
+namespace i2d {
+
+namespace {
+Color bodyColor(const detail::Body& b) {
+    if (b.type == BodyType::static_body) return {0.45f, 0.55f, 0.45f, 1.0f};
+    if (b.type == BodyType::kinematic_body) return {0.45f, 0.45f, 0.8f, 1.0f};
+    if (!b.awake) return {0.55f, 0.55f, 0.6f, 1.0f};
+    return {0.9f, 0.7f, 0.45f, 1.0f};
+}
+}  // namespace
+
+void World::draw(DebugDraw& dd) const {
+    const auto& w = *impl_;
+    if (dd.drawShapes) {
+        for (int s = 0; s < w.shapes.capacity(); ++s) {
+            const detail::Shape& sh = w.shapes[s];
+            if (!sh.alive) continue;
+            const detail::Body& b = w.bodies[sh.body];
+            Color c = bodyColor(b);
+            if (sh.isSensor) c.a = 0.3f;
+            switch (sh.type) {
+                case ShapeType::circle: {
+                    Vec2 center = transformPoint(b.xf, sh.circle.center);
+                    dd.drawSolidCircle(center, sh.circle.radius, rotate(b.xf.q, {1.0f, 0.0f}), c);
+                    break;
+                }
+                case ShapeType::capsule:
+                    dd.drawSolidCapsule(transformPoint(b.xf, sh.capsule.center1), transformPoint(b.xf, sh.capsule.center2),
+                                        sh.capsule.radius, c);
+                    break;
+                case ShapeType::polygon:
+                    dd.drawSolidPolygon(b.xf, sh.polygon.vertices, sh.polygon.count, sh.polygon.radius, c);
+                    break;
+                case ShapeType::segment:
+                    dd.drawSegment(transformPoint(b.xf, sh.segment.point1), transformPoint(b.xf, sh.segment.point2), c);
+                    break;
+            }
+        }
+    }
+    if (dd.drawJoints) {
+        for (int j = 0; j < w.joints.capacity(); ++j) {
+            const detail::DistanceJoint& jt = w.joints[j];
+            if (!jt.alive) continue;
+            Vec2 pA = transformPoint(w.bodies[jt.bodyA].xf, jt.def.localAnchorA);
+            Vec2 pB = transformPoint(w.bodies[jt.bodyB].xf, jt.def.localAnchorB);
+            dd.drawSegment(pA, pB, {0.3f, 0.8f, 0.8f, 1.0f});
+            dd.drawPoint(pA, 4.0f, {0.3f, 0.8f, 0.8f, 1.0f});
+            dd.drawPoint(pB, 4.0f, {0.3f, 0.8f, 0.8f, 1.0f});
+        }
+    }
+    if (dd.drawAABBs) {
+        for (int s = 0; s < w.shapes.capacity(); ++s) {
+            const detail::Shape& sh = w.shapes[s];
+            if (!sh.alive) continue;
+            const AABB& a = sh.fatAABB;
+            Color c{0.8f, 0.3f, 0.8f, 1.0f};
+            dd.drawSegment(a.lower, {a.upper.x, a.lower.y}, c);
+            dd.drawSegment({a.upper.x, a.lower.y}, a.upper, c);
+            dd.drawSegment(a.upper, {a.lower.x, a.upper.y}, c);
+            dd.drawSegment({a.lower.x, a.upper.y}, a.lower, c);
+        }
+    }
+    if (dd.drawContacts || dd.drawContactNormals) {
+        for (int c = 0; c < w.contacts.capacity(); ++c) {
+            const detail::Contact& ct = w.contacts[c];
+            if (!ct.alive || !ct.touching || ct.isSensor) continue;
+            for (int j = 0; j < ct.manifold.pointCount; ++j) {
+                const ManifoldPoint& mp = ct.manifold.points[j];
+                if (dd.drawContacts)
+                    dd.drawPoint(mp.point, 5.0f, mp.separation < 0.0f ? Color{0.9f, 0.2f, 0.2f, 1.0f} : Color{0.2f, 0.6f, 0.9f, 1.0f});
+                if (dd.drawContactNormals)
+                    dd.drawSegment(mp.point, mp.point + 0.3f * ct.manifold.normal, {0.9f, 0.9f, 0.3f, 1.0f});
+            }
+        }
+    }
+}
+
+}  // namespace i2d

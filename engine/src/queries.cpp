@@ -1,0 +1,125 @@
+// World queries: ray casts, box overlap and point tests over both trees.
+#include <algorithm>
+
+#include "impulse2d/world.hpp"
+#include "validation.hpp"
+#include "world_impl.hpp"
+
+namespace i2d {
+
+namespace {
+
+bool passes(const Filter& f, const QueryFilter& q) {
+    return (f.categoryBits & q.maskBits) != 0 && (f.maskBits & q.categoryBits) != 0;
+}
+
+std::optional<RayHit> castShape(const detail::Shape& sh, const Transform& xf, Vec2 origin, Vec2 translation, float maxFraction) {
+    RayCastInput in{invTransformPoint(xf, origin), invRotate(xf.q, translation), maxFraction};
+    std::optional<RayHit> hit;
+    switch (sh.type) {
+        case ShapeType::circle: hit = rayCast(in, sh.circle); break;
+        case ShapeType::capsule: hit = rayCast(in, sh.capsule); break;
+        case ShapeType::polygon: hit = rayCast(in, sh.polygon); break;
+        case ShapeType::segment: hit = rayCast(in, sh.segment); break;
+    }
+    if (hit) {
+        hit->point = transformPoint(xf, hit->point);
+        hit->normal = rotate(xf.q, hit->normal);
+    }
+    return hit;
+}
+
+void checkRay(Vec2 origin, Vec2 translation) {
+    detail::requireBounded(origin, "ray origin");
+    detail::requireBounded(translation, "ray translation");
+}
+
+}  // namespace
+
+std::optional<RayResult> World::rayCastClosest(Vec2 origin, Vec2 translation, const QueryFilter& filter) const {
+    checkRay(origin, translation);
+    const auto& w = *impl_;
+    std::optional<RayResult> best;
+    auto visit = [&](int s, float maxFraction) -> float {
+        const detail::Shape& sh = w.shapes[s];
+        if (sh.isSensor || !passes(sh.filter, filter)) return maxFraction;
+        auto hit = castShape(sh, w.bodies[sh.body].xf, origin, translation, maxFraction);
+        if (!hit || hit->fraction > maxFraction) return maxFraction;
+        // Ties resolved by the lower slot, so the answer does not depend on tree order.
+        if (best && hit->fraction == best->fraction && s > static_cast<int>(best->shape.index1) - 1) return maxFraction;
+        best = RayResult{w.shapeHandle(s), hit->point, hit->normal, hit->fraction};
+        return hit->fraction;
+    };
+    float maxFraction = 1.0f;
+    w.staticTree.rayCast(origin, translation, maxFraction, visit);
+    if (best) maxFraction = best->fraction;
+    w.movingTree.rayCast(origin, translation, maxFraction, visit);
+    return best;
+}
+
+std::vector<RayResult> World::rayCastAll(Vec2 origin, Vec2 translation, const QueryFilter& filter) const {
+    checkRay(origin, translation);
+    const auto& w = *impl_;
+    std::vector<RayResult> out;
+    auto visit = [&](int s, float maxFraction) -> float {
+        const detail::Shape& sh = w.shapes[s];
+        if (sh.isSensor || !passes(sh.filter, filter)) return maxFraction;
+        auto hit = castShape(sh, w.bodies[sh.body].xf, origin, translation, 1.0f);
+        if (hit) out.push_back({w.shapeHandle(s), hit->point, hit->normal, hit->fraction});
+        return maxFraction;
+    };
+    w.staticTree.rayCast(origin, translation, 1.0f, visit);
+    w.movingTree.rayCast(origin, translation, 1.0f, visit);
+    std::sort(out.begin(), out.end(), [](const RayResult& a, const RayResult& b) {
+        return a.fraction != b.fraction ? a.fraction < b.fraction : a.shape.index1 < b.shape.index1;
+    });
+    return out;
+}
+
+std::vector<ShapeId> World::overlapAABB(const AABB& box, const QueryFilter& filter) const {
+    detail::requireBounded(box.lower, "box lower");
+    detail::requireBounded(box.upper, "box upper");
+    const auto& w = *impl_;
+    std::vector<int> found;
+    auto visit = [&](int s) {
+        const detail::Shape& sh = w.shapes[s];
+        if (!passes(sh.filter, filter)) return true;
+        if (overlaps(w.computeShapeAABB(sh, w.bodies[sh.body].xf), box)) found.push_back(s);
+        return true;
+    };
+    w.staticTree.query(box, visit);
+    w.movingTree.query(box, visit);
+    std::sort(found.begin(), found.end());
+    std::vector<ShapeId> out;
+    for (int s : found) out.push_back(w.shapeHandle(s));
+    return out;
+}
+
+std::vector<ShapeId> World::queryPoint(Vec2 p, const QueryFilter& filter) const {
+    detail::requireBounded(p, "point");
+    const auto& w = *impl_;
+    std::vector<int> found;
+    AABB box{p, p};
+    auto visit = [&](int s) {
+        const detail::Shape& sh = w.shapes[s];
+        if (!passes(sh.filter, filter)) return true;
+        Vec2 local = invTransformPoint(w.bodies[sh.body].xf, p);
+        bool inside = false;
+        switch (sh.type) {
+            case ShapeType::circle: inside = containsPoint(sh.circle, local); break;
+            case ShapeType::capsule: inside = containsPoint(sh.capsule, local); break;
+            case ShapeType::polygon: inside = containsPoint(sh.polygon, local); break;
+            case ShapeType::segment: inside = false; break;
+        }
+        if (inside) found.push_back(s);
+        return true;
+    };
+    w.staticTree.query(box, visit);
+    w.movingTree.query(box, visit);
+    std::sort(found.begin(), found.end());
+    std::vector<ShapeId> out;
+    for (int s : found) out.push_back(w.shapeHandle(s));
+    return out;
+}
+
+}  // namespace i2d

@@ -1,0 +1,626 @@
+// The sequential-impulse solver (projected Gauss-Seidel, seed 001 §6-7).
+//
+// Each constraint row is solved on its own against the current velocities
+// and its accumulated impulse is clamped (normal ≥ 0, |friction| ≤ μ·normal):
+// seed 001 §7.2's algorithm without ever forming the matrix A = J M⁻¹ Jᵀ, since
+// a row's update λ += −(J v − v_target)/(J M⁻¹ Jᵀ) is the same computation.
+//
+// Position error is corrected by one of three schemes (WorldSettings):
+//  baumgarte  one step; the push velocity β·d/Δt (eq. 5.2.3, 5.3.1) is part of the
+//             velocity target, so it stays in the bodies afterwards;
+//  split      one step; seed 001 §8.1's single-frame push factor: the velocity
+//             system is solved without the push (f_c0), the push is solved on a
+//             separate pseudo-velocity (f_cv − f_c0) that moves positions for this
+//             step only and is then dropped: correction adds no kinetic energy;
+//  soft_step  `substeps` substeps, each: integrate velocities, warm start, solve
+//             with soft (spring-damped) push, integrate positions, relax (solve
+//             again without push). Then restitution, then store impulses.
+//
+// Loops (per step): bodies 2 + 2·substeps; constraints (1 + 2·substeps) for
+// soft_step, (1 + velocityIterations + positionIterations) otherwise.
+#include <algorithm>
+#include <cmath>
+
+#include "world_impl.hpp"
+
+namespace i2d::detail {
+
+namespace {
+
+constexpr float kPi = 3.14159265358979f;
+
+/// Soft constraint coefficients for a spring of frequency `hertz` and damping
+/// ratio ζ over a step h (implicit Euler of a spring-damper, in the
+/// mass-independent form of Catto's "Solver2D"/Box2D v3 soft step):
+///   ω = 2π·hertz, a1 = 2ζ + hω, a2 = hω·a1, a3 = 1/(1 + a2)
+///   biasRate = ω/a1, massScale = a2·a3, impulseScale = a3
+/// and a row's impulse is −massScale·m_eff·(Jv + biasRate·C) − impulseScale·λ_acc.
+struct Softness {
+    float biasRate = 0.0f;
+    float massScale = 1.0f;
+    float impulseScale = 0.0f;
+};
+
+Softness makeSoft(float hertz, float zeta, float h) {
+    if (hertz == 0.0f) return {0.0f, 1.0f, 0.0f};
+    float omega = 2.0f * kPi * hertz;
+    float a1 = 2.0f * zeta + h * omega;
+    float a2 = h * omega * a1;
+    float a3 = 1.0f / (1.0f + a2);
+    return {omega / a1, a2 * a3, a3};
+}
+
+Vec2 rotatedAnchor(const BodyState& s, Vec2 r) { return rotate(s.dq, r); }
+
+}  // namespace
+
+// ---------------------------------------------------------------------------
+// Contacts
+
+namespace {
+
+void prepareContacts(WorldImpl& w, float h, bool soft) {
+    const WorldSettings& set = w.settings;
+    w.constraints.clear();
+    const float rate = 1.0f / h;
+    const float hertz = std::min(set.contactHertz, 0.25f * rate);
+    const Softness dynamicSoft = makeSoft(hertz, set.contactDampingRatio, h);
+    // Against an immovable body only one side gives: stiffen (Solver2D doubles the hertz).
+    const Softness staticSoft = makeSoft(2.0f * hertz, set.contactDampingRatio, h);
+    const bool biasRestitution = set.impactModel == ImpactModel::velocity_bias && !soft;
+    const float fullDt = soft ? h * static_cast<float>(set.substeps) : h;
+
+    for (int c : w.activeContacts) {
+        const Contact& ct = w.contacts[c];
+        if (!ct.touching || ct.isSensor || ct.manifold.pointCount == 0) continue;
+        const Body& bA = w.bodies[ct.bodyA];
+        const Body& bB = w.bodies[ct.bodyB];
+        ContactConstraint cc;
+        cc.contact = c;
+        cc.a = bA.awake ? bA.solverIndex : kNullIndex;
+        cc.b = bB.awake ? bB.solverIndex : kNullIndex;
+        cc.invMassA = cc.a >= 0 ? w.states[static_cast<std::size_t>(cc.a)].invMass : 0.0f;
+        cc.invIA = cc.a >= 0 ? w.states[static_cast<std::size_t>(cc.a)].invInertia : 0.0f;
+        cc.invMassB = cc.b >= 0 ? w.states[static_cast<std::size_t>(cc.b)].invMass : 0.0f;
+        cc.invIB = cc.b >= 0 ? w.states[static_cast<std::size_t>(cc.b)].invInertia : 0.0f;
+        if (cc.invMassA == 0.0f && cc.invIA == 0.0f && cc.invMassB == 0.0f && cc.invIB == 0.0f) continue;
+        cc.normal = ct.manifold.normal;
+        cc.friction = ct.friction;
+        cc.restitution = ct.restitution;
+        const Softness& sf = (cc.invMassA == 0.0f || cc.invMassB == 0.0f) ? staticSoft : dynamicSoft;
+        cc.biasRate = sf.biasRate;
+        cc.massScale = sf.massScale;
+        cc.impulseScale = sf.impulseScale;
+        cc.pointCount = ct.manifold.pointCount;
+        const Vec2 n = cc.normal;
+        const Vec2 t = rightPerp(n);
+        const Vec2 vA = bA.v, vB = bB.v;
+        const float wA = bA.w, wB = bB.w;
+        for (int j = 0; j < cc.pointCount; ++j) {
+            const ManifoldPoint& mp = ct.manifold.points[j];
+            ContactPointConstraint& cp = cc.points[j];
+            cp.rA = mp.point - bA.center;
+            cp.rB = mp.point - bB.center;
+            cp.adjustedSeparation = mp.separation - dot(cp.rB - cp.rA, n);
+            // Effective mass of the normal row: 1 / (J M⁻¹ Jᵀ) with J of seed 001 §5.3.
+            float rnA = cross(cp.rA, n), rnB = cross(cp.rB, n);
+            float kn = cc.invMassA + cc.invMassB + cc.invIA * rnA * rnA + cc.invIB * rnB * rnB;
+            cp.normalMass = kn > 0.0f ? 1.0f / kn : 0.0f;
+            float rtA = cross(cp.rA, t), rtB = cross(cp.rB, t);
+            float kt = cc.invMassA + cc.invMassB + cc.invIA * rtA * rtA + cc.invIB * rtB * rtB;
+            cp.tangentMass = kt > 0.0f ? 1.0f / kt : 0.0f;
+            cp.normalImpulse = set.enableWarmStarting ? ct.normalImpulse[j] : 0.0f;
+            cp.tangentImpulse = set.enableWarmStarting ? ct.tangentImpulse[j] : 0.0f;
+            cp.maxNormalImpulse = 0.0f;
+            cp.biasImpulse = 0.0f;
+            Vec2 dv = (vB + cross(wB, cp.rB)) - (vA + cross(wA, cp.rA));
+            cp.relativeVelocity = dot(n, dv);
+            // Seed 001 eq. 8.2.1: bounce target −e·v_n for an approach faster than
+            // the threshold that closes the gap within this step.
+            cp.restitutionBias = 0.0f;
+            if (biasRestitution && cc.restitution > 0.0f && cp.relativeVelocity < -set.restitutionThreshold &&
+                mp.separation + cp.relativeVelocity * fullDt < 0.0f) {
+                cp.restitutionBias = -cc.restitution * cp.relativeVelocity;
+            }
+        }
+        w.constraints.push_back(cc);
+    }
+}
+
+void warmStartContacts(WorldImpl& w) {
+    BodyState dA, dB;  // stand-ins for immovable bodies: zero velocity, zero inverse mass
+    for (ContactConstraint& cc : w.constraints) {
+        BodyState& sA = cc.a >= 0 ? w.states[static_cast<std::size_t>(cc.a)] : (dA = BodyState{});
+        BodyState& sB = cc.b >= 0 ? w.states[static_cast<std::size_t>(cc.b)] : (dB = BodyState{});
+        const Vec2 n = cc.normal, t = rightPerp(n);
+        for (int j = 0; j < cc.pointCount; ++j) {
+            const ContactPointConstraint& cp = cc.points[j];
+            Vec2 P = cp.normalImpulse * n + cp.tangentImpulse * t;
+            sA.v = mulSub(sA.v, cc.invMassA, P);
+            sA.w -= cc.invIA * cross(cp.rA, P);
+            sB.v = mulAdd(sB.v, cc.invMassB, P);
+            sB.w += cc.invIB * cross(cp.rB, P);
+        }
+    }
+}
+
+/// One Gauss-Seidel sweep over the contacts. `mode` selects the normal target:
+///  soft (useBias or relax), or classic with/without the Baumgarte push.
+enum class Target { soft_bias, soft_relax, baumgarte, no_push };
+
+void solveContacts(WorldImpl& w, float h, Target target) {
+    const WorldSettings& set = w.settings;
+    const float invH = 1.0f / h;
+    const float slop = set.penetrationSlop;
+    const float maxPush = set.maxPushSpeed;
+    const float beta = set.pushFactor;
+    BodyState dA, dB;
+    for (ContactConstraint& cc : w.constraints) {
+        BodyState& sA = cc.a >= 0 ? w.states[static_cast<std::size_t>(cc.a)] : (dA = BodyState{});
+        BodyState& sB = cc.b >= 0 ? w.states[static_cast<std::size_t>(cc.b)] : (dB = BodyState{});
+        Vec2 vA = sA.v, vB = sB.v;
+        float wA = sA.w, wB = sB.w;
+        const float mA = cc.invMassA, iA = cc.invIA, mB = cc.invMassB, iB = cc.invIB;
+        const Vec2 n = cc.normal;
+        const Vec2 dp = sB.dp - sA.dp;
+
+        for (int j = 0; j < cc.pointCount; ++j) {
+            ContactPointConstraint& cp = cc.points[j];
+            // Current separation from the bodies' motion since the step began
+            // (anchors fixed in the bodies, rotated by their delta rotation).
+            Vec2 d = dp + (rotatedAnchor(sB, cp.rB) - rotatedAnchor(sA, cp.rA));
+            float s = dot(d, n) + cp.adjustedSeparation;
+
+            float bias = 0.0f, massScale = 1.0f, impulseScale = 0.0f;
+            if (s > 0.0f) {
+                // Speculative: allow exactly the approach that closes the gap this (sub)step.
+                bias = s * invH;
+            } else if (target == Target::soft_bias) {
+                bias = std::max(cc.biasRate * std::min(s + slop, 0.0f), -maxPush);
+                massScale = cc.massScale;
+                impulseScale = cc.impulseScale;
+            } else if (target == Target::baumgarte) {
+                // Seed 001 eq. 5.3.1 with slop: push β·d/Δt, capped.
+                bias = std::max(beta * invH * std::min(s + slop, 0.0f), -maxPush);
+            }
+            // Seed 001 §8.2: restitution target added to the push (classic modes).
+            bias = std::min(bias, -cp.restitutionBias);
+
+            Vec2 dv = (vB + cross(wB, cp.rB)) - (vA + cross(wA, cp.rA));
+            float vn = dot(dv, n);
+            float impulse = -cp.normalMass * massScale * (vn + bias) - impulseScale * cp.normalImpulse;
+            float newImpulse = std::max(cp.normalImpulse + impulse, 0.0f);
+            impulse = newImpulse - cp.normalImpulse;
+            cp.normalImpulse = newImpulse;
+            cp.maxNormalImpulse = std::max(cp.maxNormalImpulse, impulse);
+            Vec2 P = impulse * n;
+            vA = mulSub(vA, mA, P);
+            wA -= iA * cross(cp.rA, P);
+            vB = mulAdd(vB, mB, P);
+            wB += iB * cross(cp.rB, P);
+        }
+
+        // Coulomb friction bounded by μ times this point's own normal impulse
+        // (not seed 001 §5.4's μmg, which is wrong for stacks, as it says).
+        const Vec2 t = rightPerp(n);
+        for (int j = 0; j < cc.pointCount; ++j) {
+            ContactPointConstraint& cp = cc.points[j];
+            Vec2 dv = (vB + cross(wB, cp.rB)) - (vA + cross(wA, cp.rA));
+            float vt = dot(dv, t);
+            float impulse = -cp.tangentMass * vt;
+            float maxFriction = cc.friction * cp.normalImpulse;
+            float newImpulse = clamp(cp.tangentImpulse + impulse, -maxFriction, maxFriction);
+            impulse = newImpulse - cp.tangentImpulse;
+            cp.tangentImpulse = newImpulse;
+            Vec2 P = impulse * t;
+            vA = mulSub(vA, mA, P);
+            wA -= iA * cross(cp.rA, P);
+            vB = mulAdd(vB, mB, P);
+            wB += iB * cross(cp.rB, P);
+        }
+        sA.v = vA;
+        sA.w = wA;
+        sB.v = vB;
+        sB.w = wB;
+    }
+}
+
+/// Split mode (seed 001 §8.1): solve the push alone on pseudo-velocities.
+void solveContactPush(WorldImpl& w, float h) {
+    const WorldSettings& set = w.settings;
+    const float invH = 1.0f / h;
+    Vec2 zeroV{};
+    float zeroW = 0.0f;
+    for (ContactConstraint& cc : w.constraints) {
+        Vec2& vA = cc.a >= 0 ? w.biasV[static_cast<std::size_t>(cc.a)] : (zeroV = {});
+        float& wA = cc.a >= 0 ? w.biasW[static_cast<std::size_t>(cc.a)] : (zeroW = 0.0f);
+        Vec2 zeroV2{};
+        float zeroW2 = 0.0f;
+        Vec2& vB = cc.b >= 0 ? w.biasV[static_cast<std::size_t>(cc.b)] : zeroV2;
+        float& wB = cc.b >= 0 ? w.biasW[static_cast<std::size_t>(cc.b)] : zeroW2;
+        const Vec2 n = cc.normal;
+        for (int j = 0; j < cc.pointCount; ++j) {
+            ContactPointConstraint& cp = cc.points[j];
+            float s = cp.adjustedSeparation + dot(cp.rB - cp.rA, n);
+            float target = std::min(set.pushFactor * invH * std::max(-(s + set.penetrationSlop), 0.0f), set.maxPushSpeed);
+            if (target <= 0.0f && cp.biasImpulse == 0.0f) continue;
+            Vec2 dv = (vB + cross(wB, cp.rB)) - (vA + cross(wA, cp.rA));
+            float impulse = -cp.normalMass * (dot(dv, n) - target);
+            float newImpulse = std::max(cp.biasImpulse + impulse, 0.0f);
+            impulse = newImpulse - cp.biasImpulse;
+            cp.biasImpulse = newImpulse;
+            Vec2 P = impulse * n;
+            vA = mulSub(vA, cc.invMassA, P);
+            wA -= cc.invIA * cross(cp.rA, P);
+            vB = mulAdd(vB, cc.invMassB, P);
+            wB += cc.invIB * cross(cp.rB, P);
+        }
+    }
+}
+
+/// Soft step's restitution pass (velocity-bias impact model): after the
+/// substeps, drive each point that was hit faster than the threshold to
+/// separate at e times its approach speed.
+void applyRestitution(WorldImpl& w) {
+    const float threshold = w.settings.restitutionThreshold;
+    BodyState dA, dB;
+    for (ContactConstraint& cc : w.constraints) {
+        if (cc.restitution == 0.0f) continue;
+        BodyState& sA = cc.a >= 0 ? w.states[static_cast<std::size_t>(cc.a)] : (dA = BodyState{});
+        BodyState& sB = cc.b >= 0 ? w.states[static_cast<std::size_t>(cc.b)] : (dB = BodyState{});
+        const Vec2 n = cc.normal;
+        for (int j = 0; j < cc.pointCount; ++j) {
+            ContactPointConstraint& cp = cc.points[j];
+            if (cp.relativeVelocity > -threshold || cp.maxNormalImpulse == 0.0f) continue;
+            Vec2 dv = (sB.v + cross(sB.w, cp.rB)) - (sA.v + cross(sA.w, cp.rA));
+            float vn = dot(dv, n);
+            float impulse = -cp.normalMass * (vn + cc.restitution * cp.relativeVelocity);
+            float newImpulse = std::max(cp.normalImpulse + impulse, 0.0f);
+            impulse = newImpulse - cp.normalImpulse;
+            cp.normalImpulse = newImpulse;
+            Vec2 P = impulse * n;
+            sA.v = mulSub(sA.v, cc.invMassA, P);
+            sA.w -= cc.invIA * cross(cp.rA, P);
+            sB.v = mulAdd(sB.v, cc.invMassB, P);
+            sB.w += cc.invIB * cross(cp.rB, P);
+        }
+    }
+}
+
+void storeContactImpulses(WorldImpl& w) {
+    for (const ContactConstraint& cc : w.constraints) {
+        Contact& ct = w.contacts[cc.contact];
+        for (int j = 0; j < cc.pointCount; ++j) {
+            ct.normalImpulse[j] = cc.points[j].normalImpulse;
+            ct.tangentImpulse[j] = cc.points[j].tangentImpulse;
+        }
+    }
+}
+
+}  // namespace
+
+// ---------------------------------------------------------------------------
+// Distance joints (seed 001 §5.2). The constraint C = |p_b − p_a| − L has the
+// same Jacobian direction as the seed's ½(|p_ab|² − l²) (scaled by |p_ab|),
+// so the effective mass is taken along the unit axis.
+
+namespace {
+
+void prepareJoints(WorldImpl& w) {
+    w.activeJoints.clear();
+    for (int j = 0; j < w.joints.capacity(); ++j) {
+        DistanceJoint& jt = w.joints[j];
+        if (!jt.alive) continue;
+        const Body& bA = w.bodies[jt.bodyA];
+        const Body& bB = w.bodies[jt.bodyB];
+        if (!bA.awake && !bB.awake) continue;
+        jt.a = bA.awake ? bA.solverIndex : kNullIndex;
+        jt.b = bB.awake ? bB.solverIndex : kNullIndex;
+        jt.invMassA = jt.a >= 0 ? w.states[static_cast<std::size_t>(jt.a)].invMass : 0.0f;
+        jt.invIA = jt.a >= 0 ? w.states[static_cast<std::size_t>(jt.a)].invInertia : 0.0f;
+        jt.invMassB = jt.b >= 0 ? w.states[static_cast<std::size_t>(jt.b)].invMass : 0.0f;
+        jt.invIB = jt.b >= 0 ? w.states[static_cast<std::size_t>(jt.b)].invInertia : 0.0f;
+        jt.rA = rotate(bA.xf.q, jt.def.localAnchorA - bA.localCenter);
+        jt.rB = rotate(bB.xf.q, jt.def.localAnchorB - bB.localCenter);
+        jt.deltaCenter = bB.center - bA.center;
+        Vec2 axis = normalize(jt.deltaCenter + jt.rB - jt.rA);
+        float crA = cross(jt.rA, axis), crB = cross(jt.rB, axis);
+        float k = jt.invMassA + jt.invMassB + jt.invIA * crA * crA + jt.invIB * crB * crB;
+        jt.axialMass = k > 0.0f ? 1.0f / k : 0.0f;
+        jt.biasImpulse = 0.0f;
+        if (!w.settings.enableWarmStarting) jt.impulse = jt.lowerImpulse = jt.upperImpulse = 0.0f;
+        w.activeJoints.push_back(j);
+    }
+}
+
+struct JointFrame {
+    Vec2 rA, rB, axis;
+    float length;
+};
+
+JointFrame currentFrame(const DistanceJoint& jt, const BodyState& sA, const BodyState& sB) {
+    JointFrame f;
+    f.rA = rotate(sA.dq, jt.rA);
+    f.rB = rotate(sB.dq, jt.rB);
+    Vec2 d = (sB.dp - sA.dp) + jt.deltaCenter + f.rB - f.rA;
+    f.axis = normalize(d, f.length);
+    return f;
+}
+
+void applyAxial(const DistanceJoint& jt, const JointFrame& f, float impulse, BodyState& sA, BodyState& sB) {
+    Vec2 P = impulse * f.axis;
+    sA.v = mulSub(sA.v, jt.invMassA, P);
+    sA.w -= jt.invIA * cross(f.rA, P);
+    sB.v = mulAdd(sB.v, jt.invMassB, P);
+    sB.w += jt.invIB * cross(f.rB, P);
+}
+
+void warmStartJoints(WorldImpl& w) {
+    BodyState dA, dB;
+    for (int j : w.activeJoints) {
+        DistanceJoint& jt = w.joints[j];
+        BodyState& sA = jt.a >= 0 ? w.states[static_cast<std::size_t>(jt.a)] : (dA = BodyState{});
+        BodyState& sB = jt.b >= 0 ? w.states[static_cast<std::size_t>(jt.b)] : (dB = BodyState{});
+        JointFrame f = currentFrame(jt, sA, sB);
+        applyAxial(jt, f, jt.impulse + jt.lowerImpulse - jt.upperImpulse, sA, sB);
+    }
+}
+
+bool isRigid(const DistanceJoint& jt) {
+    return !(jt.def.enableSpring && (!jt.def.enableLimit || jt.def.minLength < jt.def.maxLength));
+}
+
+void solveJoints(WorldImpl& w, float h, Target target) {
+    const WorldSettings& set = w.settings;
+    const float invH = 1.0f / h;
+    const Softness jointSoft = makeSoft(std::min(set.jointHertz, 0.25f * invH), set.jointDampingRatio, h);
+    BodyState dA, dB;
+    for (int j : w.activeJoints) {
+        DistanceJoint& jt = w.joints[j];
+        BodyState& sA = jt.a >= 0 ? w.states[static_cast<std::size_t>(jt.a)] : (dA = BodyState{});
+        BodyState& sB = jt.b >= 0 ? w.states[static_cast<std::size_t>(jt.b)] : (dB = BodyState{});
+        JointFrame f = currentFrame(jt, sA, sB);
+        auto cdot = [&]() {
+            Vec2 dv = (sB.v + cross(sB.w, f.rB)) - (sA.v + cross(sA.w, f.rA));
+            return dot(dv, f.axis);
+        };
+        if (isRigid(jt)) {
+            float C = f.length - jt.def.length;
+            float bias = 0.0f, ms = 1.0f, is = 0.0f;
+            if (target == Target::soft_bias) {
+                bias = jointSoft.biasRate * C;
+                ms = jointSoft.massScale;
+                is = jointSoft.impulseScale;
+            } else if (target == Target::baumgarte) {
+                bias = set.pushFactor * invH * C;  // seed 001 eq. 5.2.3
+            }
+            float impulse = -ms * jt.axialMass * (cdot() + bias) - is * jt.impulse;
+            jt.impulse += impulse;
+            applyAxial(jt, f, impulse, sA, sB);
+        } else if (jt.def.hertz > 0.0f) {
+            // A spring: its softness is physical, so it applies in every pass.
+            Softness spring = makeSoft(jt.def.hertz, jt.def.dampingRatio, h);
+            float C = f.length - jt.def.length;
+            float impulse = -spring.massScale * jt.axialMass * (cdot() + spring.biasRate * C) - spring.impulseScale * jt.impulse;
+            jt.impulse += impulse;
+            applyAxial(jt, f, impulse, sA, sB);
+        }
+        if (jt.def.enableLimit && jt.def.minLength < jt.def.maxLength) {
+            // Lower limit: length ≥ minLength, a one-sided row (impulse ≥ 0 pushes apart).
+            {
+                float C = f.length - jt.def.minLength;
+                float bias = 0.0f, ms = 1.0f, is = 0.0f;
+                if (C > 0.0f) {
+                    bias = C * invH;
+                } else if (target == Target::soft_bias) {
+                    bias = jointSoft.biasRate * C;
+                    ms = jointSoft.massScale;
+                    is = jointSoft.impulseScale;
+                } else if (target == Target::baumgarte) {
+                    bias = set.pushFactor * invH * C;
+                }
+                float impulse = -ms * jt.axialMass * (cdot() + bias) - is * jt.lowerImpulse;
+                float newImpulse = std::max(0.0f, jt.lowerImpulse + impulse);
+                impulse = newImpulse - jt.lowerImpulse;
+                jt.lowerImpulse = newImpulse;
+                applyAxial(jt, f, impulse, sA, sB);
+            }
+            // Upper limit: length ≤ maxLength (a rope), impulse ≥ 0 pulls together.
+            {
+                float C = jt.def.maxLength - f.length;
+                float bias = 0.0f, ms = 1.0f, is = 0.0f;
+                if (C > 0.0f) {
+                    bias = C * invH;
+                } else if (target == Target::soft_bias) {
+                    bias = jointSoft.biasRate * C;
+                    ms = jointSoft.massScale;
+                    is = jointSoft.impulseScale;
+                } else if (target == Target::baumgarte) {
+                    bias = set.pushFactor * invH * C;
+                }
+                float impulse = -ms * jt.axialMass * (-cdot() + bias) - is * jt.upperImpulse;
+                float newImpulse = std::max(0.0f, jt.upperImpulse + impulse);
+                impulse = newImpulse - jt.upperImpulse;
+                jt.upperImpulse = newImpulse;
+                applyAxial(jt, f, -impulse, sA, sB);
+            }
+        }
+    }
+}
+
+/// Split mode: the joints' position error solved on the pseudo-velocities.
+void solveJointPush(WorldImpl& w, float h) {
+    const float invH = 1.0f / h;
+    for (int j : w.activeJoints) {
+        DistanceJoint& jt = w.joints[j];
+        BodyState sA = jt.a >= 0 ? w.states[static_cast<std::size_t>(jt.a)] : BodyState{};
+        BodyState sB = jt.b >= 0 ? w.states[static_cast<std::size_t>(jt.b)] : BodyState{};
+        JointFrame f = currentFrame(jt, sA, sB);
+        float C;
+        if (isRigid(jt)) {
+            C = f.length - jt.def.length;
+        } else if (jt.def.enableLimit && f.length < jt.def.minLength) {
+            C = f.length - jt.def.minLength;
+        } else if (jt.def.enableLimit && f.length > jt.def.maxLength) {
+            C = f.length - jt.def.maxLength;
+        } else {
+            continue;
+        }
+        // Pseudo-velocities of the two bodies, in and out of the bias arrays.
+        BodyState pA{}, pB{};
+        if (jt.a >= 0) {
+            pA.v = w.biasV[static_cast<std::size_t>(jt.a)];
+            pA.w = w.biasW[static_cast<std::size_t>(jt.a)];
+        }
+        if (jt.b >= 0) {
+            pB.v = w.biasV[static_cast<std::size_t>(jt.b)];
+            pB.w = w.biasW[static_cast<std::size_t>(jt.b)];
+        }
+        Vec2 dv = (pB.v + cross(pB.w, f.rB)) - (pA.v + cross(pA.w, f.rA));
+        float target = -w.settings.pushFactor * invH * C;
+        float impulse = -jt.axialMass * (dot(dv, f.axis) - target);
+        applyAxial(jt, f, impulse, pA, pB);
+        if (jt.a >= 0) {
+            w.biasV[static_cast<std::size_t>(jt.a)] = pA.v;
+            w.biasW[static_cast<std::size_t>(jt.a)] = pA.w;
+        }
+        if (jt.b >= 0) {
+            w.biasV[static_cast<std::size_t>(jt.b)] = pB.v;
+            w.biasW[static_cast<std::size_t>(jt.b)] = pB.w;
+        }
+    }
+}
+
+void storeJointImpulses(WorldImpl& w, float dt) {
+    for (int j : w.activeJoints) {
+        DistanceJoint& jt = w.joints[j];
+        jt.lastForce = std::abs(jt.impulse + jt.lowerImpulse - jt.upperImpulse) / dt;
+    }
+}
+
+}  // namespace
+
+// ---------------------------------------------------------------------------
+// Integration (seed 001 §3.2, semi-implicit Euler)
+
+namespace {
+
+void integrateVelocities(WorldImpl& w, float h) {
+    const Vec2 g = w.settings.gravity;
+    const float maxSpeed = w.settings.maxLinearSpeed;
+    for (std::size_t i = 0; i < w.states.size(); ++i) {
+        BodyState& s = w.states[i];
+        const Body& body = w.bodies[w.stateBodies[i]];
+        if (body.type != BodyType::dynamic_body) continue;
+        // Eq. 3.2.1-3.2.2 in velocities: v += Δt·(g·scale + F/m), ω += Δt·τ/I.
+        Vec2 v = s.v + h * (body.gravityScale * g + s.invMass * body.force);
+        float av = s.w + h * s.invInertia * body.torque;
+        // Damping as the exact-for-linear-drag factor's Padé form: v /= 1 + h·c.
+        v *= 1.0f / (1.0f + h * body.linearDamping);
+        av *= 1.0f / (1.0f + h * body.angularDamping);
+        float speed2 = lengthSquared(v);
+        if (speed2 > maxSpeed * maxSpeed) v *= maxSpeed / std::sqrt(speed2);
+        s.v = v;
+        s.w = av;
+    }
+}
+
+void integratePositions(WorldImpl& w, float h) {
+    for (BodyState& s : w.states) {
+        // Eq. 3.2.3-3.2.4 with the new velocities.
+        s.dp = mulAdd(s.dp, h, s.v);
+        s.dq = integrateRotation(s.dq, h * s.w);
+    }
+}
+
+}  // namespace
+
+// ---------------------------------------------------------------------------
+
+void WorldImpl::solve(float dt) {
+    const std::size_t n = awakeBodies.size();
+    states.resize(n);
+    stateBodies.resize(n);
+    for (std::size_t i = 0; i < n; ++i) {
+        int b = awakeBodies[i];
+        Body& body = bodies[b];
+        body.solverIndex = static_cast<int>(i);
+        stateBodies[i] = b;
+        BodyState& s = states[i];
+        s.v = body.v;
+        s.w = body.w;
+        s.invMass = body.invMass;
+        s.invInertia = body.invInertia;
+        s.dp = {};
+        s.dq = {};
+    }
+
+    const bool soft = settings.positionCorrection == PositionCorrection::soft_step;
+    const int substeps = soft ? settings.substeps : 1;
+    const float h = dt / static_cast<float>(substeps);
+
+    prepareContacts(*this, h, soft);
+    prepareJoints(*this);
+
+    if (soft) {
+        for (int i = 0; i < substeps; ++i) {
+            integrateVelocities(*this, h);
+            warmStartContacts(*this);
+            warmStartJoints(*this);
+            solveJoints(*this, h, Target::soft_bias);
+            solveContacts(*this, h, Target::soft_bias);
+            integratePositions(*this, h);
+            solveJoints(*this, h, Target::soft_relax);
+            solveContacts(*this, h, Target::soft_relax);
+        }
+        if (settings.impactModel == ImpactModel::velocity_bias) applyRestitution(*this);
+    } else {
+        const bool baumgarte = settings.positionCorrection == PositionCorrection::baumgarte;
+        const Target target = baumgarte ? Target::baumgarte : Target::no_push;
+        integrateVelocities(*this, dt);
+        warmStartContacts(*this);
+        warmStartJoints(*this);
+        for (int it = 0; it < settings.velocityIterations; ++it) {
+            solveJoints(*this, dt, target);
+            solveContacts(*this, dt, target);
+        }
+        if (!baumgarte) {
+            biasV.assign(n, Vec2{});
+            biasW.assign(n, 0.0f);
+            for (int it = 0; it < settings.positionIterations; ++it) {
+                solveJointPush(*this, dt);
+                solveContactPush(*this, dt);
+            }
+            // Move by v + v_push for this step only; v_push is then dropped.
+            for (std::size_t i = 0; i < n; ++i) {
+                BodyState& s = states[i];
+                s.dp = mulAdd(s.dp, dt, s.v + biasV[i]);
+                s.dq = integrateRotation(s.dq, dt * (s.w + biasW[i]));
+            }
+        } else {
+            integratePositions(*this, dt);
+        }
+    }
+
+    storeContactImpulses(*this);
+    storeJointImpulses(*this, dt);
+
+    // Write back: centre of mass, rotation, origin, velocities; clear forces.
+    for (std::size_t i = 0; i < n; ++i) {
+        Body& body = bodies[stateBodies[i]];
+        const BodyState& s = states[i];
+        body.v = s.v;
+        body.w = s.w;
+        body.center += s.dp;
+        Rot q = mulRot(s.dq, body.xf.q);
+        float mag = std::sqrt(q.c * q.c + q.s * q.s);
+        q = {q.c / mag, q.s / mag};
+        body.xf.q = q;
+        body.xf.p = body.center - rotate(q, body.localCenter);
+        body.force = {};
+        body.torque = 0.0f;
+        body.solverIndex = kNullIndex;
+    }
+}
+
+}  // namespace i2d::detail
