@@ -7,6 +7,8 @@
 #include <iostream>
 #include <stdexcept>
 
+#include <unistd.h>
+
 #include "render/gif_writer.hpp"
 #include "scene.hpp"
 #include "scene_build.hpp"
@@ -16,15 +18,34 @@ namespace tb {
 
 namespace {
 
-void progressBar(int done, int total) {
-    constexpr int kWidth = 40;
-    int filled = total > 0 ? done * kWidth / total : kWidth;
-    std::string bar(static_cast<std::size_t>(filled), '#');
-    bar.append(static_cast<std::size_t>(kWidth - filled), '.');
-    std::fprintf(stderr, "\r[%s] %d/%d steps", bar.c_str(), done, total);
-    if (done >= total) std::fputc('\n', stderr);
-    std::fflush(stderr);
-}
+/// A progress bar on standard error: redrawn in place on a terminal (only
+/// when it changes), one line per 10 % otherwise (logs, CI).
+class ProgressBar {
+public:
+    explicit ProgressBar(int total) : total_(std::max(1, total)), tty_(::isatty(2) != 0) {}
+    void update(int done) {
+        constexpr int kWidth = 40;
+        int percent = static_cast<int>(100LL * done / total_);
+        if (tty_) {
+            int filled = static_cast<int>(static_cast<long long>(done) * kWidth / total_);
+            if (percent == lastPercent_ && done != total_) return;
+            std::string bar(static_cast<std::size_t>(filled), '#');
+            bar.append(static_cast<std::size_t>(kWidth - filled), '.');
+            std::fprintf(stderr, "\r[%s] %3d%% %d/%d steps", bar.c_str(), percent, done, total_);
+            if (done >= total_) std::fputc('\n', stderr);
+        } else {
+            if (percent / 10 == lastPercent_ / 10 && done != total_) return;
+            std::fprintf(stderr, "render: %3d%% (%d/%d steps)\n", percent, done, total_);
+        }
+        lastPercent_ = percent;
+        std::fflush(stderr);
+    }
+
+private:
+    int total_;
+    bool tty_;
+    int lastPercent_ = -100;
+};
 
 std::string framePath(const std::filesystem::path& dir, int index) {
     char name[32];
@@ -81,6 +102,7 @@ RenderResult renderSceneFrames(Scene& scene, const RenderOptions& options) {
     std::vector<Image> thumbs;
     const int thumbWidth = 320;
 
+    ProgressBar progress(options.frames);
     for (int step = 0; step < options.frames; ++step) {
         if (step % options.every == 0) {
             Image frame = renderer.renderWorld(*scene.world, view, options.flags,
@@ -94,7 +116,7 @@ RenderResult renderSceneFrames(Scene& scene, const RenderOptions& options) {
             }
         }
         scene.world->step(scene.desc.dt);
-        if (options.progress) progressBar(step + 1, options.frames);
+        if (options.progress) progress.update(step + 1);
     }
 
     if (options.writeSheet && !thumbs.empty()) {
@@ -210,7 +232,8 @@ int runRenderCommand(const std::vector<std::string>& args) {
         if (assetsDir.empty()) assetsDir = defaultAssetsDir();
         SceneDesc desc = loadSceneDesc(sceneName, assetsDir);
         Scene scene = buildScene(desc);
-        options.outDir = outDir.empty() ? (std::filesystem::path("out") / scene.desc.name).string() : outDir;
+        std::string stem = !scene.desc.name.empty() ? scene.desc.name : std::filesystem::path(sceneName).stem().string();
+        options.outDir = outDir.empty() ? (std::filesystem::path("out") / stem).string() : outDir;
         RenderResult r = renderSceneFrames(scene, options);
         std::cerr << "wrote " << r.framePaths.size() << " frames to " << options.outDir << "\n";
         if (!r.sheetPath.empty()) std::cerr << "contact sheet: " << r.sheetPath << "\n";

@@ -50,4 +50,7 @@ int sheetColumns(int count, int frameWidth, int frameHeight);
 /// `testbed render ...`; args are the words after "render". Returns the exit code.
 int runRenderCommand(const std::vector<std::string>& args);
 
+/// `testbed view ...` (see viewer.hpp); args are the words after "view".
+int runViewCommand(const std::vector<std::string>& args);
+
 }  // namespace tb
