@@ -75,7 +75,13 @@ View2D sceneView(const Scene& scene, int pixelWidth, int pixelHeight) {
         return v;
     }
     i2d::AABB box{};
-    if (scene.world && worldFrameBounds(*scene.world, box)) return fitView(box, pixelWidth, pixelHeight);
+    if (scene.world && worldFrameBounds(*scene.world, box)) {
+        View2D v = fitView(box, pixelWidth, pixelHeight);
+        // Room at the top for the text lines: the scene sits a little lower.
+        v.height *= 1.08f;
+        v.center.y += 0.04f * v.height;
+        return v;
+    }
     View2D v;
     v.pixelWidth = std::max(1, pixelWidth);
     v.pixelHeight = std::max(1, pixelHeight);

@@ -35,34 +35,28 @@ const char* impactName(i2d::ImpactModel m) {
     return m == i2d::ImpactModel::closed_form ? "closed_form" : "velocity_bias";
 }
 
-/// The body being dragged and the grabbed point in its frame.
-struct Drag {
-    i2d::BodyId body{};
-    i2d::Vec2 localAnchor{};
-};
-
 /// A damped spring (5 Hz, damping ratio 0.7) pulling the grabbed point
 /// toward the pointer, on the effective mass at that point so that the
-/// spring stays stable for bodies grabbed far from their centre.
-void applyDragForce(i2d::World& world, const Drag& drag, i2d::Vec2 target) {
-    if (!world.isValid(drag.body)) return;
-    i2d::Vec2 anchor = i2d::transformPoint(world.transform(drag.body), drag.localAnchor);
-    float mass = world.mass(drag.body);
+/// spring stays stable for bodies grabbed far from their centre; it also
+/// carries the body's weight so the body hangs at the pointer.
+void applyDragForce(i2d::World& world, i2d::BodyId body, i2d::Vec2 localAnchor, i2d::Vec2 target) {
+    if (!world.isValid(body)) return;
+    i2d::Vec2 anchor = i2d::transformPoint(world.transform(body), localAnchor);
+    float mass = world.mass(body);
     if (mass <= 0.0f) return;
-    float inertia = world.rotationalInertia(drag.body);
-    i2d::Vec2 r = anchor - world.worldCenterOfMass(drag.body);
+    float inertia = world.rotationalInertia(body);
+    i2d::Vec2 r = anchor - world.worldCenterOfMass(body);
     float invMass = 1.0f / mass + (inertia > 0.0f ? i2d::lengthSquared(r) / inertia : 0.0f);
     float effMass = 1.0f / invMass;
     constexpr float omega = 2.0f * 3.14159265f * 5.0f;
     constexpr float zeta = 0.7f;
-    i2d::Vec2 v = world.velocityAtPoint(drag.body, anchor);
+    i2d::Vec2 v = world.velocityAtPoint(body, anchor);
     i2d::Vec2 force = effMass * (omega * omega * (target - anchor) - 2.0f * zeta * omega * v);
-    // Hold the body's weight too, so it hangs at the pointer instead of below it.
-    force -= mass * world.gravityScale(drag.body) * world.gravity();
+    force -= mass * world.gravityScale(body) * world.gravity();
     float maxForce = 2000.0f * mass;
     float len = i2d::length(force);
     if (len > maxForce) force *= maxForce / len;
-    world.applyForce(drag.body, force, anchor, true);
+    world.applyForce(body, force, anchor, true);
 }
 
 struct SdlSession {
@@ -75,41 +69,48 @@ struct SdlSession {
     }
 };
 
-class Viewer {
-public:
-    Viewer(const std::vector<ViewerScene>& scenes, int start, const ViewerOptions& options)
-        : scenes_(scenes), index_(start), options_(options), paused_(options.paused) {}
+void* sdlProc(const char* name) { return SDL_GL_GetProcAddress(name); }
 
-    int run();
+}  // namespace
 
-private:
-    bool load(int index, bool keepSettings);
-    void handleKey(SDL_Keycode key);
-    void changeSettings(const std::function<void(i2d::WorldSettings&)>& change);
-    void stepOnce();
-    void drawFrame(GlDraw& drawer, const GlApi& gl);
-    i2d::Vec2 mouseWorld(int x, int y) const;
-    void resize(int w, int h);
+std::optional<ViewerAction> actionForKey(int key) {
+    switch (key) {
+        case SDLK_SPACE: return ViewerAction::togglePause;
+        case SDLK_s:
+        case SDLK_RIGHT: return ViewerAction::singleStep;
+        case SDLK_r: return ViewerAction::restart;
+        case SDLK_n:
+        case SDLK_PAGEDOWN: return ViewerAction::nextScene;
+        case SDLK_p:
+        case SDLK_PAGEUP: return ViewerAction::previousScene;
+        case SDLK_m: return ViewerAction::cyclePositionCorrection;
+        case SDLK_i: return ViewerAction::toggleImpactModel;
+        case SDLK_z: return ViewerAction::toggleSleep;
+        case SDLK_PLUS:
+        case SDLK_EQUALS:
+        case SDLK_KP_PLUS: return ViewerAction::moreIterations;
+        case SDLK_MINUS:
+        case SDLK_KP_MINUS: return ViewerAction::fewerIterations;
+        case SDLK_PERIOD: return ViewerAction::moreSubsteps;
+        case SDLK_COMMA: return ViewerAction::fewerSubsteps;
+        case SDLK_c: return ViewerAction::toggleContacts;
+        case SDLK_a: return ViewerAction::toggleAabbs;
+        case SDLK_j: return ViewerAction::toggleJoints;
+        case SDLK_h: return ViewerAction::toggleHelp;
+        default: return std::nullopt;
+    }
+}
 
-    const std::vector<ViewerScene>& scenes_;
-    int index_;
-    ViewerOptions options_;
-    Scene scene_;
-    View2D view_;
-    std::optional<i2d::WorldSettings> userSettings_;
-    std::optional<Drag> drag_;
-    i2d::Vec2 mouse_{};
-    int windowW_ = 0, windowH_ = 0;  // window coordinates (mouse)
-    bool paused_;
-    bool singleStep_ = false;
-    bool showHelp_ = true;
-    WorldDrawFlags flags_{};
-    double stepMs_ = 0.0;
-    long long steps_ = 0;
-    std::string message_;
-};
+ViewerController::ViewerController(std::vector<ViewerScene> scenes, int start, int pixelWidth, int pixelHeight,
+                                   bool paused)
+    : scenes_(std::move(scenes)), paused_(paused) {
+    view_.pixelWidth = std::max(1, pixelWidth);
+    view_.pixelHeight = std::max(1, pixelHeight);
+    if (scenes_.empty()) throw std::runtime_error("no scenes to view");
+    if (!load(start, false)) throw std::runtime_error(message_);
+}
 
-bool Viewer::load(int index, bool keepSettings) {
+bool ViewerController::load(int index, bool keepSettings) {
     int n = static_cast<int>(scenes_.size());
     index = ((index % n) + n) % n;
     try {
@@ -122,9 +123,8 @@ bool Viewer::load(int index, bool keepSettings) {
         drag_.reset();
         steps_ = 0;
         stepMs_ = 0.0;
-        int pw = view_.pixelWidth > 0 ? view_.pixelWidth : options_.width;
-        int ph = view_.pixelHeight > 0 ? view_.pixelHeight : options_.height;
-        view_ = sceneView(scene_, pw, ph);
+        accumulator_ = 0.0;
+        view_ = sceneView(scene_, view_.pixelWidth, view_.pixelHeight);
         message_.clear();
         return true;
     } catch (const std::exception& e) {
@@ -134,7 +134,7 @@ bool Viewer::load(int index, bool keepSettings) {
     }
 }
 
-void Viewer::changeSettings(const std::function<void(i2d::WorldSettings&)>& change) {
+void ViewerController::changeSettings(const std::function<void(i2d::WorldSettings&)>& change) {
     i2d::WorldSettings s = scene_.world->settings();
     change(s);
     try {
@@ -145,67 +145,49 @@ void Viewer::changeSettings(const std::function<void(i2d::WorldSettings&)>& chan
     }
 }
 
-void Viewer::handleKey(SDL_Keycode key) {
-    switch (key) {
-        case SDLK_SPACE: paused_ = !paused_; break;
-        case SDLK_s:
-        case SDLK_RIGHT:
+void ViewerController::apply(ViewerAction action) {
+    using A = ViewerAction;
+    using PC = i2d::PositionCorrection;
+    switch (action) {
+        case A::togglePause: paused_ = !paused_; break;
+        case A::singleStep:
             paused_ = true;
-            singleStep_ = true;
+            pendingStep_ = true;
             break;
-        case SDLK_r: load(index_, true); break;
-        case SDLK_n:
-        case SDLK_PAGEDOWN: load(index_ + 1, false); break;
-        case SDLK_p:
-        case SDLK_PAGEUP: load(index_ - 1, false); break;
-        case SDLK_m:
+        case A::restart: load(index_, true); break;
+        case A::nextScene: load(index_ + 1, false); break;
+        case A::previousScene: load(index_ - 1, false); break;
+        case A::cyclePositionCorrection:
             changeSettings([](i2d::WorldSettings& s) {
-                s.positionCorrection = s.positionCorrection == i2d::PositionCorrection::baumgarte ? i2d::PositionCorrection::split
-                                       : s.positionCorrection == i2d::PositionCorrection::split
-                                           ? i2d::PositionCorrection::soft_step
-                                           : i2d::PositionCorrection::baumgarte;
+                s.positionCorrection = s.positionCorrection == PC::baumgarte ? PC::split
+                                       : s.positionCorrection == PC::split ? PC::soft_step
+                                                                            : PC::baumgarte;
             });
             break;
-        case SDLK_i:
+        case A::toggleImpactModel:
             changeSettings([](i2d::WorldSettings& s) {
                 s.impactModel = s.impactModel == i2d::ImpactModel::closed_form ? i2d::ImpactModel::velocity_bias
                                                                                : i2d::ImpactModel::closed_form;
             });
             break;
-        case SDLK_z: changeSettings([](i2d::WorldSettings& s) { s.enableSleep = !s.enableSleep; }); break;
-        case SDLK_PLUS:
-        case SDLK_EQUALS:
-        case SDLK_KP_PLUS:
+        case A::toggleSleep: changeSettings([](i2d::WorldSettings& s) { s.enableSleep = !s.enableSleep; }); break;
+        case A::moreIterations:
             changeSettings([](i2d::WorldSettings& s) { s.velocityIterations = std::min(s.velocityIterations + 1, 100); });
             break;
-        case SDLK_MINUS:
-        case SDLK_KP_MINUS:
+        case A::fewerIterations:
             changeSettings([](i2d::WorldSettings& s) { s.velocityIterations = std::max(s.velocityIterations - 1, 1); });
             break;
-        case SDLK_PERIOD: changeSettings([](i2d::WorldSettings& s) { s.substeps = std::min(s.substeps + 1, 64); }); break;
-        case SDLK_COMMA: changeSettings([](i2d::WorldSettings& s) { s.substeps = std::max(s.substeps - 1, 1); }); break;
-        case SDLK_c: flags_.contacts = !flags_.contacts; break;
-        case SDLK_a: flags_.aabbs = !flags_.aabbs; break;
-        case SDLK_j: flags_.joints = !flags_.joints; break;
-        case SDLK_h: showHelp_ = !showHelp_; break;
-        default: break;
+        case A::moreSubsteps: changeSettings([](i2d::WorldSettings& s) { s.substeps = std::min(s.substeps + 1, 64); }); break;
+        case A::fewerSubsteps: changeSettings([](i2d::WorldSettings& s) { s.substeps = std::max(s.substeps - 1, 1); }); break;
+        case A::toggleContacts: flags_.contacts = !flags_.contacts; break;
+        case A::toggleAabbs: flags_.aabbs = !flags_.aabbs; break;
+        case A::toggleJoints: flags_.joints = !flags_.joints; break;
+        case A::toggleHelp: showHelp_ = !showHelp_; break;
     }
 }
 
-i2d::Vec2 Viewer::mouseWorld(int x, int y) const {
-    // Window coordinates may differ from drawable pixels (high-DPI).
-    float sx = windowW_ > 0 ? static_cast<float>(view_.pixelWidth) / static_cast<float>(windowW_) : 1.0f;
-    float sy = windowH_ > 0 ? static_cast<float>(view_.pixelHeight) / static_cast<float>(windowH_) : 1.0f;
-    return view_.pixelToWorld({(static_cast<float>(x) + 0.5f) * sx, (static_cast<float>(y) + 0.5f) * sy});
-}
-
-void Viewer::resize(int w, int h) {
-    view_.pixelWidth = std::max(1, w);
-    view_.pixelHeight = std::max(1, h);
-}
-
-void Viewer::stepOnce() {
-    if (drag_) applyDragForce(*scene_.world, *drag_, mouse_);
+void ViewerController::stepOnce() {
+    if (drag_) applyDragForce(*scene_.world, drag_->body, drag_->localAnchor, mouse_);
     auto t0 = std::chrono::steady_clock::now();
     scene_.world->step(scene_.desc.dt);
     double ms = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - t0).count();
@@ -213,8 +195,54 @@ void Viewer::stepOnce() {
     ++steps_;
 }
 
-void Viewer::drawFrame(GlDraw& drawer, const GlApi& gl) {
-    drawer.beginFrame(view_, 1.0f);
+void ViewerController::advance(double elapsedSeconds) {
+    if (pendingStep_) {
+        pendingStep_ = false;
+        accumulator_ = 0.0;
+        stepOnce();
+        return;
+    }
+    if (paused_) return;
+    const double dt = scene_.desc.dt;
+    accumulator_ = std::min(accumulator_ + std::max(elapsedSeconds, 0.0), 4.0 * dt);
+    while (accumulator_ >= dt) {
+        stepOnce();
+        accumulator_ -= dt;
+    }
+}
+
+bool ViewerController::beginDrag(i2d::Vec2 p) {
+    mouse_ = p;
+    i2d::World& world = *scene_.world;
+    for (i2d::ShapeId shape : world.queryPoint(p)) {
+        i2d::BodyId body = world.shapeBody(shape);
+        if (world.bodyType(body) != i2d::BodyType::dynamic_body) continue;
+        drag_ = Drag{body, i2d::invTransformPoint(world.transform(body), p)};
+        world.setAwake(body, true);
+        return true;
+    }
+    return false;
+}
+
+std::string ViewerController::statusLine() const {
+    char line[256];
+    std::snprintf(line, sizeof line, "step %.2f ms | bodies %d (awake %d) | %s (%d/%d) step %lld%s", stepMs_,
+                  scene_.world->bodyCount(), scene_.world->awakeBodyCount(), scene_.desc.name.c_str(), index_ + 1,
+                  static_cast<int>(scenes_.size()), steps_, paused_ ? " | PAUSED" : "");
+    return line;
+}
+
+std::string ViewerController::settingsLine() const {
+    const i2d::WorldSettings& s = scene_.world->settings();
+    char line[256];
+    std::snprintf(line, sizeof line, "%s | %s | sleep %s | iters %d | substeps %d | contacts %s | aabbs %s",
+                  correctionName(s.positionCorrection), impactName(s.impactModel), s.enableSleep ? "on" : "off",
+                  s.velocityIterations, s.substeps, flags_.contacts ? "on" : "off", flags_.aabbs ? "on" : "off");
+    return line;
+}
+
+void ViewerController::draw(GlDraw& drawer) {
+    const GlApi& gl = drawer.gl();
     drawWorld(drawer, *scene_.world, flags_);
     if (drag_ && scene_.world->isValid(drag_->body)) {
         i2d::Vec2 anchor = i2d::transformPoint(scene_.world->transform(drag_->body), drag_->localAnchor);
@@ -222,47 +250,29 @@ void Viewer::drawFrame(GlDraw& drawer, const GlApi& gl) {
         drawer.drawPoint(anchor, 6.0f, {0.95f, 0.95f, 0.95f, 1.0f});
         drawer.drawPoint(mouse_, 6.0f, {0.3f, 0.9f, 0.3f, 1.0f});
     }
-    const i2d::WorldSettings& s = scene_.world->settings();
-    char line[320];
-    std::snprintf(line, sizeof line,
-                  "step %.2f ms | bodies %d (awake %d) | %s | %s | sleep %s | iters %d | substeps %d | contacts %s | "
-                  "aabbs %s%s",
-                  stepMs_, scene_.world->bodyCount(), scene_.world->awakeBodyCount(),
-                  correctionName(s.positionCorrection), impactName(s.impactModel), s.enableSleep ? "on" : "off",
-                  s.velocityIterations, s.substeps, flags_.contacts ? "on" : "off", flags_.aabbs ? "on" : "off",
-                  paused_ ? " | PAUSED" : "");
-    int scale = view_.pixelWidth >= 1000 ? 2 : 1;
-    i2d::Color white{0.92f, 0.92f, 0.92f, 1.0f};
+    const int w = view_.pixelWidth, h = view_.pixelHeight;
+    const int scale = w >= 1100 ? 2 : 1;
+    const int lineStep = textHeight(scale) + 6 * scale;
     int y = 6 * scale;
-    drawText(gl, view_.pixelWidth, view_.pixelHeight, 6 * scale, y, line, scale, white);
-    y += textHeight(scale) + 6 * scale;
-    char second[256];
-    std::snprintf(second, sizeof second, "%s (%d/%d)  step %lld", scene_.desc.name.c_str(), index_ + 1,
-                  static_cast<int>(scenes_.size()), steps_);
-    drawText(gl, view_.pixelWidth, view_.pixelHeight, 6 * scale, y, second, scale, {0.6f, 0.85f, 1.0f, 1.0f});
+    drawText(gl, w, h, 6 * scale, y, statusLine(), scale, {0.92f, 0.92f, 0.92f, 1.0f});
+    y += lineStep;
+    drawText(gl, w, h, 6 * scale, y, settingsLine(), scale, {0.6f, 0.85f, 1.0f, 1.0f});
+    if (!message_.empty()) {
+        y += lineStep;
+        drawText(gl, w, h, 6 * scale, y, message_, scale, {1.0f, 0.5f, 0.4f, 1.0f});
+    }
     if (showHelp_) {
         const char* help =
-            "space pause  s step  r restart  n/p scene  m correction  i impact  z sleep  +/- iters  ./, substeps  "
-            "c contacts  a aabbs  h help  drag: mouse";
-        int hy = view_.pixelHeight - textHeight(scale) - 6 * scale;
-        drawText(gl, view_.pixelWidth, view_.pixelHeight, 6 * scale, hy, help, scale, {0.75f, 0.75f, 0.75f, 1.0f});
-    }
-    if (!message_.empty()) {
-        y += textHeight(scale) + 6 * scale;
-        drawText(gl, view_.pixelWidth, view_.pixelHeight, 6 * scale, y, message_, scale, {1.0f, 0.5f, 0.4f, 1.0f});
+            "space pause | s step | r restart | n/p scene | m correction | i impact | z sleep | +/- iters | "
+            "./, substeps | c contacts | a aabbs | j joints | h help | drag bodies with the mouse";
+        drawText(gl, w, h, 6, h - textHeight(1) - 6, help, 1, {0.75f, 0.75f, 0.75f, 1.0f});
     }
     drawer.applyWorldProjection();
 }
 
-void* sdlProc(const char* name) { return SDL_GL_GetProcAddress(name); }
+namespace {
 
-int Viewer::run() {
-    if (scenes_.empty()) {
-        std::cerr << "testbed view: no scenes\n";
-        return 1;
-    }
-    if (!load(index_, false)) return 1;
-
+int runWindow(ViewerController& viewer, const ViewerOptions& options) {
     SdlSession sdl;
     if (SDL_Init(SDL_INIT_VIDEO) != 0) {
         std::cerr << "testbed view: SDL_Init failed: " << SDL_GetError() << "\n";
@@ -272,10 +282,11 @@ int Viewer::run() {
     SDL_GL_SetAttribute(SDL_GL_CONTEXT_MINOR_VERSION, 1);
     SDL_GL_SetAttribute(SDL_GL_DOUBLEBUFFER, 1);
     SDL_GL_SetAttribute(SDL_GL_DEPTH_SIZE, 0);
-    bool shooting = !options_.screenshot.empty();
-    Uint32 flags = SDL_WINDOW_OPENGL | (shooting ? 0u : static_cast<Uint32>(SDL_WINDOW_RESIZABLE | SDL_WINDOW_ALLOW_HIGHDPI));
-    sdl.window = SDL_CreateWindow(options_.title.c_str(), SDL_WINDOWPOS_CENTERED, SDL_WINDOWPOS_CENTERED, options_.width,
-                                  options_.height, flags);
+    const bool shooting = !options.screenshot.empty();
+    Uint32 flags = SDL_WINDOW_OPENGL;
+    if (!shooting) flags |= SDL_WINDOW_RESIZABLE | SDL_WINDOW_ALLOW_HIGHDPI;
+    sdl.window = SDL_CreateWindow(options.title.c_str(), SDL_WINDOWPOS_CENTERED, SDL_WINDOWPOS_CENTERED, options.width,
+                                  options.height, flags);
     if (!sdl.window) {
         std::cerr << "testbed view: cannot open a window: " << SDL_GetError() << "\n";
         return 1;
@@ -293,18 +304,26 @@ int Viewer::run() {
         return 1;
     }
     GlDraw drawer(gl);
-    int dw = 0, dh = 0;
-    SDL_GL_GetDrawableSize(sdl.window, &dw, &dh);
-    SDL_GetWindowSize(sdl.window, &windowW_, &windowH_);
-    i2d::Vec2 keepCenter = view_.center;
-    float keepHeight = view_.height;
-    resize(dw, dh);
-    view_.center = keepCenter;
-    view_.height = keepHeight;
+
+    int windowW = 0, windowH = 0;
+    auto syncSize = [&] {
+        int dw = 0, dh = 0;
+        SDL_GL_GetDrawableSize(sdl.window, &dw, &dh);
+        SDL_GetWindowSize(sdl.window, &windowW, &windowH);
+        viewer.view().pixelWidth = std::max(1, dw);
+        viewer.view().pixelHeight = std::max(1, dh);
+    };
+    // Window coordinates may differ from drawable pixels (high-DPI).
+    auto toWorld = [&](int x, int y) {
+        const View2D& v = viewer.view();
+        float sx = windowW > 0 ? static_cast<float>(v.pixelWidth) / static_cast<float>(windowW) : 1.0f;
+        float sy = windowH > 0 ? static_cast<float>(v.pixelHeight) / static_cast<float>(windowH) : 1.0f;
+        return v.pixelToWorld({(static_cast<float>(x) + 0.5f) * sx, (static_cast<float>(y) + 0.5f) * sy});
+    };
+    syncSize();
 
     using Clock = std::chrono::steady_clock;
     auto last = Clock::now();
-    double accumulator = 0.0;
     int framesDone = 0;
     bool running = true;
     while (running) {
@@ -313,42 +332,32 @@ int Viewer::run() {
             switch (e.type) {
                 case SDL_QUIT: running = false; break;
                 case SDL_KEYDOWN:
-                    if (e.key.keysym.sym == SDLK_ESCAPE || e.key.keysym.sym == SDLK_q)
+                    if (e.key.keysym.sym == SDLK_ESCAPE || e.key.keysym.sym == SDLK_q) {
                         running = false;
-                    else
-                        handleKey(e.key.keysym.sym);
+                    } else if (auto action = actionForKey(e.key.keysym.sym)) {
+                        int before = viewer.sceneIndex();
+                        viewer.apply(*action);
+                        if (viewer.sceneIndex() != before || *action == ViewerAction::restart) syncSize();
+                    }
                     break;
                 case SDL_WINDOWEVENT:
-                    if (e.window.event == SDL_WINDOWEVENT_SIZE_CHANGED) {
-                        SDL_GL_GetDrawableSize(sdl.window, &dw, &dh);
-                        SDL_GetWindowSize(sdl.window, &windowW_, &windowH_);
-                        resize(dw, dh);
-                    }
+                    if (e.window.event == SDL_WINDOWEVENT_SIZE_CHANGED) syncSize();
                     break;
                 case SDL_MOUSEBUTTONDOWN:
-                    if (e.button.button == SDL_BUTTON_LEFT) {
-                        mouse_ = mouseWorld(e.button.x, e.button.y);
-                        for (i2d::ShapeId shape : scene_.world->queryPoint(mouse_)) {
-                            i2d::BodyId body = scene_.world->shapeBody(shape);
-                            if (scene_.world->bodyType(body) != i2d::BodyType::dynamic_body) continue;
-                            drag_ = Drag{body, i2d::invTransformPoint(scene_.world->transform(body), mouse_)};
-                            scene_.world->setAwake(body, true);
-                            break;
-                        }
-                    }
+                    if (e.button.button == SDL_BUTTON_LEFT) viewer.beginDrag(toWorld(e.button.x, e.button.y));
                     break;
                 case SDL_MOUSEBUTTONUP:
-                    if (e.button.button == SDL_BUTTON_LEFT) drag_.reset();
+                    if (e.button.button == SDL_BUTTON_LEFT) viewer.endDrag();
                     break;
-                case SDL_MOUSEMOTION: mouse_ = mouseWorld(e.motion.x, e.motion.y); break;
+                case SDL_MOUSEMOTION: viewer.moveMouse(toWorld(e.motion.x, e.motion.y)); break;
                 case SDL_MOUSEWHEEL: {
                     // Zoom about the pointer.
                     float f = e.wheel.y > 0 ? 1.0f / 1.15f : (e.wheel.y < 0 ? 1.15f : 1.0f);
                     int mx = 0, my = 0;
                     SDL_GetMouseState(&mx, &my);
-                    i2d::Vec2 before = mouseWorld(mx, my);
-                    view_.height = std::clamp(view_.height * f, 0.05f, 1.0e5f);
-                    view_.center += before - mouseWorld(mx, my);
+                    i2d::Vec2 before = toWorld(mx, my);
+                    viewer.view().height = std::clamp(viewer.view().height * f, 0.05f, 1.0e5f);
+                    viewer.view().center += before - toWorld(mx, my);
                     break;
                 }
                 default: break;
@@ -358,35 +367,26 @@ int Viewer::run() {
         auto now = Clock::now();
         double elapsed = std::chrono::duration<double>(now - last).count();
         last = now;
-        if (shooting) {
-            stepOnce();  // exactly one step per frame: reproducible screenshots
-        } else if (singleStep_) {
-            stepOnce();
-            singleStep_ = false;
-            accumulator = 0.0;
-        } else if (!paused_) {
-            // Real time, at most 4 steps per frame when the machine falls behind.
-            accumulator = std::min(accumulator + elapsed, 4.0 * scene_.desc.dt);
-            while (accumulator >= scene_.desc.dt) {
-                stepOnce();
-                accumulator -= scene_.desc.dt;
-            }
-        }
+        if (shooting)
+            viewer.stepOnce();  // exactly one step per frame: reproducible screenshots
+        else
+            viewer.advance(elapsed);
 
-        drawFrame(drawer, gl);
-        if (shooting && ++framesDone >= options_.frames) {
-            Image shot(view_.pixelWidth, view_.pixelHeight);
+        drawer.beginFrame(viewer.view(), 1.0f);
+        viewer.draw(drawer);
+        if (shooting && ++framesDone >= options.frames) {
+            Image shot(viewer.view().pixelWidth, viewer.view().pixelHeight);
             gl.Finish();
             gl.ReadBuffer(GL_BACK);
             gl.PixelStorei(GL_PACK_ALIGNMENT, 1);
             gl.ReadPixels(0, 0, shot.width, shot.height, GL_RGBA, GL_UNSIGNED_BYTE, shot.rgba.data());
             flipVertical(shot);
             std::string error;
-            if (!writePng(options_.screenshot, shot, &error)) {
+            if (!writePng(options.screenshot, shot, &error)) {
                 std::cerr << "testbed view: " << error << "\n";
                 return 1;
             }
-            std::cerr << "screenshot " << options_.screenshot << " after " << steps_ << " steps\n";
+            std::cerr << "screenshot " << options.screenshot << " after " << viewer.steps() << " steps\n";
             running = false;
         }
         SDL_GL_SwapWindow(sdl.window);
@@ -414,8 +414,13 @@ int parseIntArg(const std::string& flag, const std::string& value) {
 }  // namespace
 
 int runViewer(const std::vector<ViewerScene>& scenes, int startIndex, const ViewerOptions& options) {
-    Viewer viewer(scenes, startIndex, options);
-    return viewer.run();
+    try {
+        ViewerController viewer(scenes, startIndex, options.width, options.height, options.paused);
+        return runWindow(viewer, options);
+    } catch (const std::exception& e) {
+        std::cerr << "testbed view: " << e.what() << "\n";
+        return 1;
+    }
 }
 
 int runViewCommand(const std::vector<std::string>& args) {

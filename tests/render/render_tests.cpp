@@ -19,6 +19,7 @@
 #include "render/png_io.hpp"
 #include "render/render_command.hpp"
 #include "render/text.hpp"
+#include "render/viewer.hpp"
 #include "test_scene.hpp"
 
 namespace fs = std::filesystem;
@@ -337,4 +338,119 @@ TEST(Viewer, TakesAScreenshotUnderXvfbAndQuits) {
     for (int y = 0; y < 30; ++y)
         for (int x = 0; x < 640; ++x) bright += img.pixel(x, y)[0] > 200 ? 1 : 0;
     EXPECT_GT(bright, 100);
+}
+
+namespace {
+
+std::vector<tb::ViewerScene> viewerScenes() {
+    return {{"first", [] { return tbtest::makeTestScene(); }},
+            {"second",
+             [] {
+                 tb::Scene s = tbtest::makeTestScene();
+                 s.desc.name = "second";
+                 return s;
+             }},
+            {"broken", []() -> tb::Scene { throw std::runtime_error("no such file"); }}};
+}
+
+i2d::Vec2 ballPosition(tb::ViewerController& v) { return v.scene().world->position(v.scene().bodies[2]); }
+
+}  // namespace
+
+TEST(ViewerControl, KeysMapToActions) {
+    // SDL key codes of printable keys are their characters.
+    EXPECT_EQ(tb::actionForKey(' '), tb::ViewerAction::togglePause);
+    EXPECT_EQ(tb::actionForKey('s'), tb::ViewerAction::singleStep);
+    EXPECT_EQ(tb::actionForKey('r'), tb::ViewerAction::restart);
+    EXPECT_EQ(tb::actionForKey('n'), tb::ViewerAction::nextScene);
+    EXPECT_EQ(tb::actionForKey('p'), tb::ViewerAction::previousScene);
+    EXPECT_EQ(tb::actionForKey('m'), tb::ViewerAction::cyclePositionCorrection);
+    EXPECT_EQ(tb::actionForKey('='), tb::ViewerAction::moreIterations);
+    EXPECT_EQ(tb::actionForKey('-'), tb::ViewerAction::fewerIterations);
+    EXPECT_EQ(tb::actionForKey('c'), tb::ViewerAction::toggleContacts);
+    EXPECT_FALSE(tb::actionForKey('q').has_value());  // quit is handled by the window loop
+}
+
+TEST(ViewerControl, SettingKeysChangeTheWorldAndTheStatusLines) {
+    tb::ViewerController v(viewerScenes(), 0, 640, 360);
+    const i2d::WorldSettings before = v.scene().world->settings();
+    v.apply(tb::ViewerAction::cyclePositionCorrection);
+    v.apply(tb::ViewerAction::toggleImpactModel);
+    v.apply(tb::ViewerAction::toggleSleep);
+    v.apply(tb::ViewerAction::moreIterations);
+    v.apply(tb::ViewerAction::fewerIterations);
+    v.apply(tb::ViewerAction::fewerIterations);
+    v.apply(tb::ViewerAction::toggleContacts);
+    const i2d::WorldSettings& s = v.scene().world->settings();
+    EXPECT_NE(s.positionCorrection, before.positionCorrection);
+    EXPECT_NE(s.impactModel, before.impactModel);
+    EXPECT_NE(s.enableSleep, before.enableSleep);
+    EXPECT_EQ(s.velocityIterations, before.velocityIterations - 1);
+    EXPECT_TRUE(v.flags().contacts);
+    const std::string line = v.settingsLine();
+    EXPECT_NE(line.find("iters " + std::to_string(before.velocityIterations - 1)), std::string::npos) << line;
+    EXPECT_NE(line.find(before.enableSleep ? "sleep off" : "sleep on"), std::string::npos) << line;
+    EXPECT_NE(line.find("contacts on"), std::string::npos) << line;
+    EXPECT_NE(v.statusLine().find("bodies 3"), std::string::npos) << v.statusLine();
+    // Three presses of m come back to the first mode.
+    v.apply(tb::ViewerAction::cyclePositionCorrection);
+    v.apply(tb::ViewerAction::cyclePositionCorrection);
+    EXPECT_EQ(v.scene().world->settings().positionCorrection, before.positionCorrection);
+}
+
+TEST(ViewerControl, RestartKeepsSettingsAndNextSceneDropsThem) {
+    tb::ViewerController v(viewerScenes(), 0, 640, 360);
+    const i2d::Vec2 start = ballPosition(v);
+    const int iterations = v.scene().world->settings().velocityIterations;
+    v.apply(tb::ViewerAction::moreIterations);
+    for (int i = 0; i < 20; ++i) v.stepOnce();
+    EXPECT_EQ(v.steps(), 20);
+    EXPECT_LT(ballPosition(v).y, start.y);
+    v.apply(tb::ViewerAction::restart);
+    EXPECT_EQ(v.steps(), 0);
+    EXPECT_EQ(ballPosition(v), start);
+    EXPECT_EQ(v.scene().world->settings().velocityIterations, iterations + 1);
+    v.apply(tb::ViewerAction::nextScene);
+    EXPECT_EQ(v.sceneIndex(), 1);
+    EXPECT_EQ(v.scene().desc.name, "second");
+    EXPECT_EQ(v.scene().world->settings().velocityIterations, iterations);
+    v.apply(tb::ViewerAction::previousScene);
+    v.apply(tb::ViewerAction::previousScene);  // wraps to the last scene, which fails to load
+    EXPECT_EQ(v.sceneIndex(), 0) << "a scene that fails to load leaves the current one";
+    EXPECT_NE(v.message().find("no such file"), std::string::npos) << v.message();
+}
+
+TEST(ViewerControl, PauseSingleStepAndRealTimeStepping) {
+    tb::ViewerController v(viewerScenes(), 0, 640, 360, /*paused=*/true);
+    const double dt = v.scene().desc.dt;
+    v.advance(1.0);
+    EXPECT_EQ(v.steps(), 0);
+    v.apply(tb::ViewerAction::singleStep);
+    v.advance(0.0);
+    EXPECT_EQ(v.steps(), 1);
+    EXPECT_TRUE(v.paused());
+    v.apply(tb::ViewerAction::togglePause);
+    v.advance(2.5 * dt);
+    EXPECT_EQ(v.steps(), 3);
+    v.advance(10.0);  // a long stall: at most 4 steps catch up
+    EXPECT_LE(v.steps(), 3 + 4);
+    EXPECT_GE(v.steps(), 3 + 3);
+}
+
+TEST(ViewerControl, MouseDragPullsTheGrabbedBody) {
+    tb::ViewerController v(viewerScenes(), 0, 640, 360);
+    EXPECT_FALSE(v.beginDrag({0.0f, 12.0f})) << "empty space";
+    EXPECT_FALSE(v.beginDrag({0.0f, -1.0f})) << "static ground";
+    const i2d::Vec2 start = ballPosition(v);
+    ASSERT_TRUE(v.beginDrag(start));
+    EXPECT_TRUE(v.dragging());
+    v.moveMouse(start + i2d::Vec2{2.0f, 3.0f});
+    for (int i = 0; i < 60; ++i) v.stepOnce();
+    const i2d::Vec2 pulled = ballPosition(v);
+    EXPECT_NEAR(pulled.x, start.x + 2.0f, 0.5f);
+    EXPECT_NEAR(pulled.y, start.y + 3.0f, 0.5f);
+    v.endDrag();
+    EXPECT_FALSE(v.dragging());
+    for (int i = 0; i < 30; ++i) v.stepOnce();
+    EXPECT_LT(ballPosition(v).y, pulled.y) << "falls again once released";
 }
