@@ -287,7 +287,6 @@ TEST(RenderScene, SameSceneGivesTheSameBytes) {
         o.height = 180;
         o.outDir = workDir(name).string();
         o.progress = false;
-        o.writeGif = false;
         return tb::renderSceneFrames(scene, o);
     };
     tb::RenderResult a = run("det_a"), b = run("det_b");
@@ -299,8 +298,32 @@ TEST(RenderScene, SameSceneGivesTheSameBytes) {
         EXPECT_EQ(x, fileBytes(b.framePaths[i])) << "frame " << i;
     }
     EXPECT_EQ(fileBytes(a.sheetPath), fileBytes(b.sheetPath));
+    if (!a.gifPath.empty()) {
+        EXPECT_EQ(fileBytes(a.gifPath), fileBytes(b.gifPath));
+    }
     // Frames of a falling scene differ from each other.
     EXPECT_NE(fileBytes(a.framePaths[0]), fileBytes(a.framePaths[2]));
+}
+
+TEST(RenderScene, MissingConvertIsReportedAndThePngsStillWritten) {
+    const char* oldPath = std::getenv("PATH");
+    std::string saved = oldPath ? oldPath : "";
+    fs::path empty = workDir("nopath");
+    setenv("PATH", empty.c_str(), 1);
+    tb::Scene scene = tbtest::makeTestScene();
+    tb::RenderOptions o;
+    o.frames = 2;
+    o.width = 64;
+    o.height = 36;
+    o.outDir = workDir("noconvert").string();
+    o.progress = false;
+    tb::RenderResult r = tb::renderSceneFrames(scene, o);
+    setenv("PATH", saved.c_str(), 1);
+    EXPECT_TRUE(r.gifPath.empty());
+    EXPECT_FALSE(fs::exists(fs::path(o.outDir) / "anim.gif"));
+    EXPECT_NE(r.gifMessage.find("'convert' not found"), std::string::npos) << r.gifMessage;
+    EXPECT_EQ(r.framePaths.size(), 2u);
+    EXPECT_TRUE(fs::exists(r.sheetPath));
 }
 
 TEST(RenderScene, RejectsBadOptions) {
