@@ -213,7 +213,7 @@ Hull computeHull(std::span<const Vec2> points) {
         for (int i = 0; i < m; ++i) {
             Vec2 a = out[(i + m - 1) % m];
             Vec2 b = out[(i + 1) % m];
-            if (rightDistance(a, b, out[i]) > -kLinearSlop) {
+            if (rightDistance(a, b, out[i]) < kLinearSlop) {
                 for (int j = i; j + 1 < m; ++j) out[j] = out[j + 1];
                 --m;
                 removed = true;

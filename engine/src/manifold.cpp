@@ -23,7 +23,8 @@
 //   is within ~10° of one segment's normal and the projections overlap, the
 //   other segment is clipped against that one (two points when nearly
 //   parallel, e.g. one lying on the other); otherwise (end-to-end, crossing
-//   at an angle with separated cores) one point at the closest points.
+//   at an angle with separated cores, or a clip that cut away the closest
+//   point) one point at the closest points.
 //   Crossing/intersecting cores: reference = A, normal = A's perpendicular
 //   on the side of B's midpoint (+left perpendicular when exactly centred).
 //   Parallel collinear segments overlapping end to end: two points.
@@ -214,21 +215,23 @@ Manifold collidePolygonsLocal(const Polygon& polyA, const Polygon& polyB, float 
     const bool flip = separationB > separationA + kReferenceTolerance;
     const float separation = flip ? separationB : std::fmax(separationA, separationB);
 
-    if (separation > kReferenceTolerance) {
-        // Cores apart: SAT gives a lower bound of their distance; it is the
-        // exact distance for a face contact (a vertex over a face) and an
-        // underestimate when the closest features are two vertices.
-        ClosestFeatures cf;
+    // Cores apart: SAT gives a lower bound of their distance; it is the exact
+    // distance for a face contact (a vertex over a face) and an underestimate
+    // when the closest features are two vertices.
+    const bool disjoint = separation > kReferenceTolerance;
+    ClosestFeatures cf;
+    float dist = 0.0f;
+    if (disjoint) {
         closestEdgeVertex(polyA, polyB, true, cf);
         closestEdgeVertex(polyB, polyA, false, cf);
-        float dist = std::sqrt(cf.distanceSquared);
+        dist = std::sqrt(cf.distanceSquared);
         if (dist > speculativeDistance + radius) return m;
-        if (dist > separation + kReferenceTolerance) {
-            Vec2 n = (1.0f / dist) * (cf.pB - cf.pA);
-            return singlePoint(cf.pA, cf.pB, n, dist, polyA.radius, polyB.radius,
-                               makeFeatureId(cf.vertexA, cf.vertexB));
-        }
     }
+    auto vertexContact = [&]() {
+        Vec2 n = (1.0f / dist) * (cf.pB - cf.pA);
+        return singlePoint(cf.pA, cf.pB, n, dist, polyA.radius, polyB.radius, makeFeatureId(cf.vertexA, cf.vertexB));
+    };
+    if (disjoint && dist > separation + kReferenceTolerance) return vertexContact();
 
     // Reference face and incident edge (the incident edge's normal is the
     // most anti-parallel to the reference normal).
@@ -251,6 +254,14 @@ Manifold collidePolygonsLocal(const Polygon& polyA, const Polygon& polyB, float 
     const int i2 = edgeInc + 1 < inc.count ? edgeInc + 1 : 0;
     clipSegments(ref.vertices[r1], ref.vertices[r2], n, ref.radius, r1, r2, inc.vertices[i1], inc.vertices[i2],
                  inc.radius, i1, i2, flip, true, speculativeDistance, m);
+    if (disjoint) {
+        // A vertex just past the end of the reference face (within the
+        // classification tolerance) can be clipped away, leaving points that
+        // overstate the gap; then the exact closest-vertex contact is better.
+        float minSep = FLT_MAX;
+        for (int i = 0; i < m.pointCount; ++i) minSep = std::fmin(minSep, m.points[i].separation);
+        if (m.pointCount == 0 || minSep > dist - radius + kReferenceTolerance) return vertexContact();
+    }
     return m;
 }
 
@@ -402,7 +413,13 @@ Manifold collideCapsulesLocal(Vec2 p1, Vec2 q1, float rA, Vec2 p2, Vec2 q2, floa
                 clipSegments(forward ? p2 : q2, forward ? q2 : p2, n, rB, forward ? 0 : 1, forward ? 1 : 0, p1, q1, rA, 0,
                              1, true, false, speculativeDistance, m);
             }
-            if (m.pointCount > 0) return m;
+            // Keep the clipped manifold only if its deepest point agrees with
+            // the exact closest-point gap; the clip can cut away the closest
+            // point when it lies just past the end of the reference segment.
+            float minSep = FLT_MAX;
+            for (int i = 0; i < m.pointCount; ++i) minSep = std::fmin(minSep, m.points[i].separation);
+            if (m.pointCount > 0 && minSep <= dist - rA - rB + kReferenceTolerance) return m;
+            m.pointCount = 0;
         }
     }
     return singlePoint(sd.closest1, sd.closest2, nClosest, dist, rA, rB, 0);

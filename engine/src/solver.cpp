@@ -146,7 +146,7 @@ void warmStartContacts(WorldImpl& w) {
 
 /// One Gauss-Seidel sweep over the contacts. `mode` selects the normal target:
 ///  soft (useBias or relax), or classic with/without the Baumgarte push.
-enum class Target { soft_bias, soft_relax, baumgarte, no_push };
+enum class Target { soft_bias, soft_relax, baumgarte, no_push, soft_relax_last };
 
 void solveContacts(WorldImpl& w, float h, Target target) {
     const WorldSettings& set = w.settings;
@@ -154,6 +154,12 @@ void solveContacts(WorldImpl& w, float h, Target target) {
     const float slop = set.penetrationSlop;
     const float maxPush = set.maxPushSpeed;
     const float beta = set.pushFactor;
+    // The last relax of a step limits the approach speed for the next step's
+    // first substep. With the closed-form impact model a fast approach belongs
+    // to the impact law at the start of that step: leave it alone here, or the
+    // solver would absorb it inelastically before the law ever sees it.
+    const bool leaveImpacts = target == Target::soft_relax_last && set.impactModel == ImpactModel::closed_form;
+    const float impactSpeed = set.impactThreshold;
     BodyState dA, dB;
     for (ContactConstraint& cc : w.constraints) {
         BodyState& sA = cc.a >= 0 ? w.states[static_cast<std::size_t>(cc.a)] : (dA = BodyState{});
@@ -171,12 +177,16 @@ void solveContacts(WorldImpl& w, float h, Target target) {
             Vec2 d = dp + (rotatedAnchor(sB, cp.rB) - rotatedAnchor(sA, cp.rA));
             float s = dot(d, n) + cp.adjustedSeparation;
 
+            Vec2 dv = (vB + cross(wB, cp.rB)) - (vA + cross(wA, cp.rA));
+            float vn = dot(dv, n);
+            if (leaveImpacts && s > 0.0f && vn < -impactSpeed) continue;
+
             float bias = 0.0f, massScale = 1.0f, impulseScale = 0.0f;
             if (s > 0.0f) {
                 // Speculative: allow exactly the approach that closes the gap this (sub)step.
                 bias = s * invH;
             } else if (target == Target::soft_bias) {
-                bias = std::max(cc.biasRate * std::min(s + slop, 0.0f), -maxPush);
+                bias = std::max(cc.biasRate * s, -maxPush);
                 massScale = cc.massScale;
                 impulseScale = cc.impulseScale;
             } else if (target == Target::baumgarte) {
@@ -184,10 +194,8 @@ void solveContacts(WorldImpl& w, float h, Target target) {
                 bias = std::max(beta * invH * std::min(s + slop, 0.0f), -maxPush);
             }
             // Seed 001 §8.2: restitution target added to the push (classic modes).
-            bias = std::min(bias, -cp.restitutionBias);
+            if (cp.restitutionBias > 0.0f) bias = std::min(bias, -cp.restitutionBias);
 
-            Vec2 dv = (vB + cross(wB, cp.rB)) - (vA + cross(wA, cp.rA));
-            float vn = dot(dv, n);
             float impulse = -cp.normalMass * massScale * (vn + bias) - impulseScale * cp.normalImpulse;
             float newImpulse = std::max(cp.normalImpulse + impulse, 0.0f);
             impulse = newImpulse - cp.normalImpulse;
@@ -571,7 +579,7 @@ void WorldImpl::solve(float dt) {
             solveContacts(*this, h, Target::soft_bias);
             integratePositions(*this, h);
             solveJoints(*this, h, Target::soft_relax);
-            solveContacts(*this, h, Target::soft_relax);
+            solveContacts(*this, h, i + 1 == substeps ? Target::soft_relax_last : Target::soft_relax);
         }
         if (settings.impactModel == ImpactModel::velocity_bias) applyRestitution(*this);
     } else {
