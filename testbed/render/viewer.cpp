@@ -1,0 +1,503 @@
+#include "render/viewer.hpp"
+
+#include <SDL.h>
+
+#include <algorithm>
+#include <chrono>
+#include <cstdio>
+#include <iostream>
+#include <optional>
+#include <stdexcept>
+
+#include "render/camera.hpp"
+#include "render/gl_draw.hpp"
+#include "render/offscreen.hpp"
+#include "render/png_io.hpp"
+#include "render/text.hpp"
+#include "scene.hpp"
+#include "scene_build.hpp"
+#include "scene_loader.hpp"
+
+namespace tb {
+
+namespace {
+
+const char* correctionName(i2d::PositionCorrection c) {
+    switch (c) {
+        case i2d::PositionCorrection::baumgarte: return "baumgarte";
+        case i2d::PositionCorrection::split: return "split";
+        case i2d::PositionCorrection::soft_step: return "soft_step";
+    }
+    return "?";
+}
+
+const char* impactName(i2d::ImpactModel m) {
+    return m == i2d::ImpactModel::closed_form ? "closed_form" : "velocity_bias";
+}
+
+/// A damped spring (5 Hz, damping ratio 0.7) pulling the grabbed point
+/// toward the pointer, on the effective mass at that point so that the
+/// spring stays stable for bodies grabbed far from their centre; it also
+/// carries the body's weight so the body hangs at the pointer.
+void applyDragForce(i2d::World& world, i2d::BodyId body, i2d::Vec2 localAnchor, i2d::Vec2 target) {
+    if (!world.isValid(body)) return;
+    i2d::Vec2 anchor = i2d::transformPoint(world.transform(body), localAnchor);
+    float mass = world.mass(body);
+    if (mass <= 0.0f) return;
+    float inertia = world.rotationalInertia(body);
+    i2d::Vec2 r = anchor - world.worldCenterOfMass(body);
+    float invMass = 1.0f / mass + (inertia > 0.0f ? i2d::lengthSquared(r) / inertia : 0.0f);
+    float effMass = 1.0f / invMass;
+    constexpr float omega = 2.0f * 3.14159265f * 5.0f;
+    constexpr float zeta = 0.7f;
+    i2d::Vec2 v = world.velocityAtPoint(body, anchor);
+    i2d::Vec2 force = effMass * (omega * omega * (target - anchor) - 2.0f * zeta * omega * v);
+    force -= mass * world.gravityScale(body) * world.gravity();
+    float maxForce = 2000.0f * mass;
+    float len = i2d::length(force);
+    if (len > maxForce) force *= maxForce / len;
+    world.applyForce(body, force, anchor, true);
+}
+
+struct SdlSession {
+    SDL_Window* window = nullptr;
+    SDL_GLContext context = nullptr;
+    ~SdlSession() {
+        if (context) SDL_GL_DeleteContext(context);
+        if (window) SDL_DestroyWindow(window);
+        SDL_Quit();
+    }
+};
+
+void* sdlProc(const char* name) { return SDL_GL_GetProcAddress(name); }
+
+}  // namespace
+
+std::optional<ViewerAction> actionForKey(int key) {
+    switch (key) {
+        case SDLK_SPACE: return ViewerAction::togglePause;
+        case SDLK_s:
+        case SDLK_RIGHT: return ViewerAction::singleStep;
+        case SDLK_r: return ViewerAction::restart;
+        case SDLK_n:
+        case SDLK_PAGEDOWN: return ViewerAction::nextScene;
+        case SDLK_p:
+        case SDLK_PAGEUP: return ViewerAction::previousScene;
+        case SDLK_m: return ViewerAction::cyclePositionCorrection;
+        case SDLK_i: return ViewerAction::toggleImpactModel;
+        case SDLK_z: return ViewerAction::toggleSleep;
+        case SDLK_PLUS:
+        case SDLK_EQUALS:
+        case SDLK_KP_PLUS: return ViewerAction::moreIterations;
+        case SDLK_MINUS:
+        case SDLK_KP_MINUS: return ViewerAction::fewerIterations;
+        case SDLK_PERIOD: return ViewerAction::moreSubsteps;
+        case SDLK_COMMA: return ViewerAction::fewerSubsteps;
+        case SDLK_c: return ViewerAction::toggleContacts;
+        case SDLK_a: return ViewerAction::toggleAabbs;
+        case SDLK_j: return ViewerAction::toggleJoints;
+        case SDLK_h: return ViewerAction::toggleHelp;
+        default: return std::nullopt;
+    }
+}
+
+ViewerController::ViewerController(std::vector<ViewerScene> scenes, int start, int pixelWidth, int pixelHeight,
+                                   bool paused)
+    : scenes_(std::move(scenes)), paused_(paused) {
+    view_.pixelWidth = std::max(1, pixelWidth);
+    view_.pixelHeight = std::max(1, pixelHeight);
+    if (scenes_.empty()) throw std::runtime_error("no scenes to view");
+    if (!load(start, false)) throw std::runtime_error(message_);
+}
+
+bool ViewerController::load(int index, bool keepSettings) {
+    int n = static_cast<int>(scenes_.size());
+    index = ((index % n) + n) % n;
+    try {
+        Scene s = scenes_[static_cast<std::size_t>(index)].build();
+        if (!s.world) throw std::runtime_error("scene has no world");
+        if (keepSettings && userSettings_) s.world->setSettings(*userSettings_);
+        if (!keepSettings) userSettings_.reset();
+        scene_ = std::move(s);
+        index_ = index;
+        drag_.reset();
+        steps_ = 0;
+        stepMs_ = 0.0;
+        accumulator_ = 0.0;
+        view_ = sceneView(scene_, view_.pixelWidth, view_.pixelHeight);
+        message_.clear();
+        return true;
+    } catch (const std::exception& e) {
+        message_ = "cannot load " + scenes_[static_cast<std::size_t>(index)].name + ": " + e.what();
+        std::cerr << "testbed view: " << message_ << "\n";
+        return false;
+    }
+}
+
+void ViewerController::changeSettings(const std::function<void(i2d::WorldSettings&)>& change) {
+    i2d::WorldSettings s = scene_.world->settings();
+    change(s);
+    try {
+        scene_.world->setSettings(s);
+        userSettings_ = s;
+    } catch (const std::exception& e) {
+        message_ = std::string("setting refused: ") + e.what();
+    }
+}
+
+void ViewerController::apply(ViewerAction action) {
+    using A = ViewerAction;
+    using PC = i2d::PositionCorrection;
+    switch (action) {
+        case A::togglePause: paused_ = !paused_; break;
+        case A::singleStep:
+            paused_ = true;
+            pendingStep_ = true;
+            break;
+        case A::restart: load(index_, true); break;
+        case A::nextScene: load(index_ + 1, false); break;
+        case A::previousScene: load(index_ - 1, false); break;
+        case A::cyclePositionCorrection:
+            changeSettings([](i2d::WorldSettings& s) {
+                s.positionCorrection = s.positionCorrection == PC::baumgarte ? PC::split
+                                       : s.positionCorrection == PC::split ? PC::soft_step
+                                                                            : PC::baumgarte;
+            });
+            break;
+        case A::toggleImpactModel:
+            changeSettings([](i2d::WorldSettings& s) {
+                s.impactModel = s.impactModel == i2d::ImpactModel::closed_form ? i2d::ImpactModel::velocity_bias
+                                                                               : i2d::ImpactModel::closed_form;
+            });
+            break;
+        case A::toggleSleep: changeSettings([](i2d::WorldSettings& s) { s.enableSleep = !s.enableSleep; }); break;
+        case A::moreIterations:
+            changeSettings([](i2d::WorldSettings& s) { s.velocityIterations = std::min(s.velocityIterations + 1, 100); });
+            break;
+        case A::fewerIterations:
+            changeSettings([](i2d::WorldSettings& s) { s.velocityIterations = std::max(s.velocityIterations - 1, 1); });
+            break;
+        case A::moreSubsteps: changeSettings([](i2d::WorldSettings& s) { s.substeps = std::min(s.substeps + 1, 64); }); break;
+        case A::fewerSubsteps: changeSettings([](i2d::WorldSettings& s) { s.substeps = std::max(s.substeps - 1, 1); }); break;
+        case A::toggleContacts: flags_.contacts = !flags_.contacts; break;
+        case A::toggleAabbs: flags_.aabbs = !flags_.aabbs; break;
+        case A::toggleJoints: flags_.joints = !flags_.joints; break;
+        case A::toggleHelp: showHelp_ = !showHelp_; break;
+    }
+}
+
+void ViewerController::stepOnce() {
+    if (drag_) applyDragForce(*scene_.world, drag_->body, drag_->localAnchor, mouse_);
+    auto t0 = std::chrono::steady_clock::now();
+    scene_.world->step(scene_.desc.dt);
+    double ms = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - t0).count();
+    stepMs_ = steps_ == 0 ? ms : 0.9 * stepMs_ + 0.1 * ms;  // smoothed for reading
+    ++steps_;
+}
+
+void ViewerController::advance(double elapsedSeconds) {
+    if (pendingStep_) {
+        pendingStep_ = false;
+        accumulator_ = 0.0;
+        stepOnce();
+        return;
+    }
+    if (paused_) return;
+    const double dt = scene_.desc.dt;
+    accumulator_ = std::min(accumulator_ + std::max(elapsedSeconds, 0.0), 4.0 * dt);
+    while (accumulator_ >= dt) {
+        stepOnce();
+        accumulator_ -= dt;
+    }
+}
+
+bool ViewerController::beginDrag(i2d::Vec2 p) {
+    mouse_ = p;
+    i2d::World& world = *scene_.world;
+    for (i2d::ShapeId shape : world.queryPoint(p)) {
+        i2d::BodyId body = world.shapeBody(shape);
+        if (world.bodyType(body) != i2d::BodyType::dynamic_body) continue;
+        drag_ = Drag{body, i2d::invTransformPoint(world.transform(body), p)};
+        world.setAwake(body, true);
+        return true;
+    }
+    return false;
+}
+
+std::string ViewerController::statusLine() const {
+    char line[256];
+    std::snprintf(line, sizeof line, "step %.2f ms | bodies %d (awake %d) | %s (%d/%d) step %lld%s", stepMs_,
+                  scene_.world->bodyCount(), scene_.world->awakeBodyCount(), scene_.desc.name.c_str(), index_ + 1,
+                  static_cast<int>(scenes_.size()), steps_, paused_ ? " | PAUSED" : "");
+    return line;
+}
+
+std::string ViewerController::settingsLine() const {
+    const i2d::WorldSettings& s = scene_.world->settings();
+    char line[256];
+    std::snprintf(line, sizeof line, "%s | %s | sleep %s | iters %d | substeps %d | contacts %s | aabbs %s",
+                  correctionName(s.positionCorrection), impactName(s.impactModel), s.enableSleep ? "on" : "off",
+                  s.velocityIterations, s.substeps, flags_.contacts ? "on" : "off", flags_.aabbs ? "on" : "off");
+    return line;
+}
+
+void ViewerController::draw(GlDraw& drawer) {
+    const GlApi& gl = drawer.gl();
+    drawWorld(drawer, *scene_.world, flags_);
+    if (drag_ && scene_.world->isValid(drag_->body)) {
+        i2d::Vec2 anchor = i2d::transformPoint(scene_.world->transform(drag_->body), drag_->localAnchor);
+        drawer.drawLine(anchor, mouse_, 1.5f, {0.95f, 0.95f, 0.95f, 1.0f});
+        drawer.drawPoint(anchor, 6.0f, {0.95f, 0.95f, 0.95f, 1.0f});
+        drawer.drawPoint(mouse_, 6.0f, {0.3f, 0.9f, 0.3f, 1.0f});
+    }
+    const int w = view_.pixelWidth, h = view_.pixelHeight;
+    const int scale = w >= 1100 ? 2 : 1;
+    const int lineStep = textHeight(scale) + 6 * scale;
+    int y = 6 * scale;
+    drawText(gl, w, h, 6 * scale, y, statusLine(), scale, {0.92f, 0.92f, 0.92f, 1.0f});
+    y += lineStep;
+    drawText(gl, w, h, 6 * scale, y, settingsLine(), scale, {0.6f, 0.85f, 1.0f, 1.0f});
+    if (!message_.empty()) {
+        y += lineStep;
+        drawText(gl, w, h, 6 * scale, y, message_, scale, {1.0f, 0.5f, 0.4f, 1.0f});
+    }
+    if (showHelp_) {
+        const char* help =
+            "space pause | s step | r restart | n/p scene | m correction | i impact | z sleep | +/- iters | "
+            "./, substeps | c contacts | a aabbs | j joints | h help | drag bodies with the mouse";
+        drawText(gl, w, h, 6, h - textHeight(1) - 6, help, 1, {0.75f, 0.75f, 0.75f, 1.0f});
+    }
+    drawer.applyWorldProjection();
+}
+
+namespace {
+
+int runWindow(ViewerController& viewer, const ViewerOptions& options) {
+    SdlSession sdl;
+    if (SDL_Init(SDL_INIT_VIDEO) != 0) {
+        std::cerr << "testbed view: SDL_Init failed: " << SDL_GetError() << "\n";
+        return 1;
+    }
+    SDL_GL_SetAttribute(SDL_GL_CONTEXT_MAJOR_VERSION, 2);
+    SDL_GL_SetAttribute(SDL_GL_CONTEXT_MINOR_VERSION, 1);
+    SDL_GL_SetAttribute(SDL_GL_DOUBLEBUFFER, 1);
+    SDL_GL_SetAttribute(SDL_GL_DEPTH_SIZE, 0);
+    const bool shooting = !options.screenshot.empty();
+    Uint32 flags = SDL_WINDOW_OPENGL;
+    if (!shooting) flags |= SDL_WINDOW_RESIZABLE | SDL_WINDOW_ALLOW_HIGHDPI;
+    sdl.window = SDL_CreateWindow(options.title.c_str(), SDL_WINDOWPOS_CENTERED, SDL_WINDOWPOS_CENTERED, options.width,
+                                  options.height, flags);
+    if (!sdl.window) {
+        std::cerr << "testbed view: cannot open a window: " << SDL_GetError() << "\n";
+        return 1;
+    }
+    sdl.context = SDL_GL_CreateContext(sdl.window);
+    if (!sdl.context) {
+        std::cerr << "testbed view: cannot create an OpenGL context: " << SDL_GetError() << "\n";
+        return 1;
+    }
+    SDL_GL_SetSwapInterval(shooting ? 0 : 1);
+    GlApi gl;
+    const char* missing = nullptr;
+    if (!gl.load(&sdlProc, &missing)) {
+        std::cerr << "testbed view: OpenGL lacks " << (missing ? missing : "a function") << "\n";
+        return 1;
+    }
+    GlDraw drawer(gl);
+
+    int windowW = 0, windowH = 0;
+    auto syncSize = [&] {
+        int dw = 0, dh = 0;
+        SDL_GL_GetDrawableSize(sdl.window, &dw, &dh);
+        SDL_GetWindowSize(sdl.window, &windowW, &windowH);
+        viewer.view().pixelWidth = std::max(1, dw);
+        viewer.view().pixelHeight = std::max(1, dh);
+    };
+    // Window coordinates may differ from drawable pixels (high-DPI).
+    auto toWorld = [&](int x, int y) {
+        const View2D& v = viewer.view();
+        float sx = windowW > 0 ? static_cast<float>(v.pixelWidth) / static_cast<float>(windowW) : 1.0f;
+        float sy = windowH > 0 ? static_cast<float>(v.pixelHeight) / static_cast<float>(windowH) : 1.0f;
+        return v.pixelToWorld({(static_cast<float>(x) + 0.5f) * sx, (static_cast<float>(y) + 0.5f) * sy});
+    };
+    syncSize();
+
+    using Clock = std::chrono::steady_clock;
+    auto last = Clock::now();
+    int framesDone = 0;
+    bool running = true;
+    while (running) {
+        SDL_Event e;
+        while (SDL_PollEvent(&e)) {
+            switch (e.type) {
+                case SDL_QUIT: running = false; break;
+                case SDL_KEYDOWN:
+                    if (e.key.keysym.sym == SDLK_ESCAPE || e.key.keysym.sym == SDLK_q) {
+                        running = false;
+                    } else if (auto action = actionForKey(e.key.keysym.sym)) {
+                        int before = viewer.sceneIndex();
+                        viewer.apply(*action);
+                        if (viewer.sceneIndex() != before || *action == ViewerAction::restart) syncSize();
+                    }
+                    break;
+                case SDL_WINDOWEVENT:
+                    if (e.window.event == SDL_WINDOWEVENT_SIZE_CHANGED) syncSize();
+                    break;
+                case SDL_MOUSEBUTTONDOWN:
+                    if (e.button.button == SDL_BUTTON_LEFT) viewer.beginDrag(toWorld(e.button.x, e.button.y));
+                    break;
+                case SDL_MOUSEBUTTONUP:
+                    if (e.button.button == SDL_BUTTON_LEFT) viewer.endDrag();
+                    break;
+                case SDL_MOUSEMOTION: viewer.moveMouse(toWorld(e.motion.x, e.motion.y)); break;
+                case SDL_MOUSEWHEEL: {
+                    // Zoom about the pointer.
+                    float f = e.wheel.y > 0 ? 1.0f / 1.15f : (e.wheel.y < 0 ? 1.15f : 1.0f);
+                    int mx = 0, my = 0;
+                    SDL_GetMouseState(&mx, &my);
+                    i2d::Vec2 before = toWorld(mx, my);
+                    viewer.view().height = std::clamp(viewer.view().height * f, 0.05f, 1.0e5f);
+                    viewer.view().center += before - toWorld(mx, my);
+                    break;
+                }
+                default: break;
+            }
+        }
+
+        auto now = Clock::now();
+        double elapsed = std::chrono::duration<double>(now - last).count();
+        last = now;
+        if (shooting)
+            viewer.stepOnce();  // exactly one step per frame: reproducible screenshots
+        else
+            viewer.advance(elapsed);
+
+        drawer.beginFrame(viewer.view(), 1.0f);
+        viewer.draw(drawer);
+        if (shooting && ++framesDone >= options.frames) {
+            Image shot(viewer.view().pixelWidth, viewer.view().pixelHeight);
+            gl.Finish();
+            gl.ReadBuffer(GL_BACK);
+            gl.PixelStorei(GL_PACK_ALIGNMENT, 1);
+            gl.ReadPixels(0, 0, shot.width, shot.height, GL_RGBA, GL_UNSIGNED_BYTE, shot.rgba.data());
+            flipVertical(shot);
+            std::string error;
+            if (!writePng(options.screenshot, shot, &error)) {
+                std::cerr << "testbed view: " << error << "\n";
+                return 1;
+            }
+            std::cerr << "screenshot " << options.screenshot << " after " << viewer.steps() << " steps\n";
+            running = false;
+        }
+        SDL_GL_SwapWindow(sdl.window);
+    }
+    return 0;
+}
+
+void printViewUsage(std::ostream& out) {
+    out << "usage: testbed view [SCENE] [--assets DIR] [--size WxH] [--paused] [--screenshot FILE --frames N]\n"
+           "keys: space pause, s/right step, r restart, n/p (page down/up) next/previous scene,\n"
+           "      m position correction, i impact model, z sleep, +/- velocity iterations, ./, substeps,\n"
+           "      c contacts, a AABBs, j joints, h help, q/escape quit; mouse: drag bodies, wheel zoom\n";
+}
+
+int parseIntArg(const std::string& flag, const std::string& value) {
+    try {
+        std::size_t used = 0;
+        int v = std::stoi(value, &used);
+        if (used == value.size()) return v;
+    } catch (const std::exception&) {
+    }
+    throw std::invalid_argument(flag + ": expected an integer, got '" + value + "'");
+}
+
+}  // namespace
+
+int runViewer(const std::vector<ViewerScene>& scenes, int startIndex, const ViewerOptions& options) {
+    try {
+        ViewerController viewer(scenes, startIndex, options.width, options.height, options.paused);
+        return runWindow(viewer, options);
+    } catch (const std::exception& e) {
+        std::cerr << "testbed view: " << e.what() << "\n";
+        return 1;
+    }
+}
+
+int runViewCommand(const std::vector<std::string>& args) {
+    ViewerOptions options;
+    std::string sceneName, assetsDir;
+    bool framesGiven = false;
+    try {
+        for (std::size_t i = 0; i < args.size(); ++i) {
+            const std::string& a = args[i];
+            auto value = [&]() -> const std::string& {
+                if (i + 1 >= args.size()) throw std::invalid_argument(a + ": missing value");
+                return args[++i];
+            };
+            if (a == "-h" || a == "--help") {
+                printViewUsage(std::cout);
+                return 0;
+            } else if (a == "--assets") {
+                assetsDir = value();
+            } else if (a == "--size") {
+                const std::string& v = value();
+                auto x = v.find('x');
+                if (x == std::string::npos) throw std::invalid_argument("--size: expected WxH, got '" + v + "'");
+                options.width = parseIntArg(a, v.substr(0, x));
+                options.height = parseIntArg(a, v.substr(x + 1));
+                if (options.width < 16 || options.height < 16) throw std::invalid_argument("--size: too small");
+            } else if (a == "--screenshot") {
+                options.screenshot = value();
+            } else if (a == "--frames") {
+                options.frames = parseIntArg(a, value());
+                if (options.frames < 1) throw std::invalid_argument("--frames: expected at least 1");
+                framesGiven = true;
+            } else if (a == "--paused") {
+                options.paused = true;
+            } else if (!a.empty() && a[0] == '-') {
+                throw std::invalid_argument("unknown option " + a);
+            } else if (sceneName.empty()) {
+                sceneName = a;
+            } else {
+                throw std::invalid_argument("more than one scene given");
+            }
+        }
+        if (framesGiven && options.screenshot.empty())
+            throw std::invalid_argument("--frames needs --screenshot FILE");
+    } catch (const std::invalid_argument& e) {
+        std::cerr << "testbed view: " << e.what() << "\n";
+        printViewUsage(std::cerr);
+        return 2;
+    }
+
+    try {
+        if (assetsDir.empty()) assetsDir = defaultAssetsDir();
+        std::vector<ViewerScene> scenes;
+        for (const auto& entry : listScenes(assetsDir)) {
+            std::string name = entry.first;
+            scenes.push_back({name, [name, assetsDir] { return buildScene(loadSceneDesc(name, assetsDir)); }});
+        }
+        int start = 0;
+        if (!sceneName.empty()) {
+            auto it = std::find_if(scenes.begin(), scenes.end(), [&](const ViewerScene& s) { return s.name == sceneName; });
+            if (it != scenes.end()) {
+                start = static_cast<int>(it - scenes.begin());
+            } else {
+                // A file path or a scene outside the list: first in the cycle.
+                loadSceneDesc(sceneName, assetsDir);  // report a bad name before opening a window
+                scenes.insert(scenes.begin(),
+                              {sceneName, [sceneName, assetsDir] { return buildScene(loadSceneDesc(sceneName, assetsDir)); }});
+            }
+        }
+        if (scenes.empty()) {
+            std::cerr << "testbed view: no scenes found in " << assetsDir << "\n";
+            return 1;
+        }
+        return runViewer(scenes, start, options);
+    } catch (const std::exception& e) {
+        std::cerr << "testbed view: " << e.what() << "\n";
+        return 1;
+    }
+}
+
+}  // namespace tb
