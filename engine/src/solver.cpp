@@ -381,7 +381,9 @@ bool isRigid(const DistanceJoint& jt) {
 void solveJoints(WorldImpl& w, float h, Target target) {
     const WorldSettings& set = w.settings;
     const float invH = 1.0f / h;
-    const Softness jointSoft = makeSoft(std::min(set.jointHertz, 0.25f * invH), set.jointDampingRatio, h);
+    // Joint stiffness capped at 1/8 of the substep rate (Solver2D's TGS_Soft
+    // choice): at 1/4, a 100:1 mass ratio chain (heavy_chain) diverged.
+    const Softness jointSoft = makeSoft(std::min(set.jointHertz, 0.125f * invH), set.jointDampingRatio, h);
     BodyState dA, dB;
     for (int j : w.activeJoints) {
         DistanceJoint& jt = w.joints[j];
