@@ -11,14 +11,8 @@
 
 #include "run_command.hpp"
 
-#if __has_include("render_command.hpp")
 #include "render_command.hpp"
-#define TB_HAVE_RENDER 1
-#endif
-#if __has_include("impact_command.hpp")
 #include "impact_command.hpp"
-#define TB_HAVE_IMPACT 1
-#endif
 
 namespace {
 
@@ -34,11 +28,6 @@ const char* const kHelp =
     "  help      this text\n"
     "\n"
     "`testbed COMMAND --help` describes each command.\n";
-
-int notBuilt(const char* what) {
-    std::cerr << "testbed: the '" << what << "' command is not part of this build\n";
-    return 2;
-}
 
 }  // namespace
 
@@ -60,21 +49,12 @@ int main(int argc, char** argv) {
         if (cmd == "list") return tb::runListCommand(rest, std::cout, std::cerr);
         if (cmd == "run") return tb::runRunCommand(rest, std::cout, std::cerr);
         if (cmd == "render") {
-#ifdef TB_HAVE_RENDER
             return runRenderCommand(rest);
-#else
-            return notBuilt("render");
-#endif
         }
         if (cmd == "view") {
-#ifdef TB_HAVE_RENDER
             return runViewCommand(rest);
-#else
-            return notBuilt("view");
-#endif
         }
         if (cmd == "impact") {
-#ifdef TB_HAVE_IMPACT
             for (const auto& a : rest)
                 if (a == "--help" || a == "-h") {
                     std::cout << "usage: testbed impact < INPUT\n\n"
@@ -83,9 +63,6 @@ int main(int argc, char** argv) {
                     return 0;
                 }
             return runImpactCommand(std::cin, std::cout, std::cerr);
-#else
-            return notBuilt("impact");
-#endif
         }
     } catch (const std::exception& e) {
         std::cerr << "testbed " << cmd << ": " << e.what() << "\n";
