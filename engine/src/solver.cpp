@@ -416,9 +416,9 @@ void solveJoints(WorldImpl& w, float h, Target target) {
             applyAxial(jt, f, impulse, sA, sB);
         }
         if (jt.def.enableLimit && jt.def.minLength < jt.def.maxLength) {
-            // Lower limit: length ≥ minLength, a one-sided row (impulse ≥ 0 pushes apart).
-            {
-                float C = f.length - jt.def.minLength;
+            // One-sided limit row along `sign`·axis: C ≥ 0 is allowed (speculative
+            // when positive), the accumulated impulse stays ≥ 0.
+            auto limitRow = [&](float C, float sign, float& accumulated) {
                 float bias = 0.0f, ms = 1.0f, is = 0.0f;
                 if (C > 0.0f) {
                     bias = C * invH;
@@ -429,31 +429,16 @@ void solveJoints(WorldImpl& w, float h, Target target) {
                 } else if (target == Target::baumgarte) {
                     bias = set.pushFactor * invH * C;
                 }
-                float impulse = -ms * jt.axialMass * (cdot() + bias) - is * jt.lowerImpulse;
-                float newImpulse = std::max(0.0f, jt.lowerImpulse + impulse);
-                impulse = newImpulse - jt.lowerImpulse;
-                jt.lowerImpulse = newImpulse;
-                applyAxial(jt, f, impulse, sA, sB);
-            }
-            // Upper limit: length ≤ maxLength (a rope), impulse ≥ 0 pulls together.
-            {
-                float C = jt.def.maxLength - f.length;
-                float bias = 0.0f, ms = 1.0f, is = 0.0f;
-                if (C > 0.0f) {
-                    bias = C * invH;
-                } else if (target == Target::soft_bias) {
-                    bias = jointSoft.biasRate * C;
-                    ms = jointSoft.massScale;
-                    is = jointSoft.impulseScale;
-                } else if (target == Target::baumgarte) {
-                    bias = set.pushFactor * invH * C;
-                }
-                float impulse = -ms * jt.axialMass * (-cdot() + bias) - is * jt.upperImpulse;
-                float newImpulse = std::max(0.0f, jt.upperImpulse + impulse);
-                impulse = newImpulse - jt.upperImpulse;
-                jt.upperImpulse = newImpulse;
-                applyAxial(jt, f, -impulse, sA, sB);
-            }
+                float impulse = -ms * jt.axialMass * (sign * cdot() + bias) - is * accumulated;
+                float newImpulse = std::max(0.0f, accumulated + impulse);
+                impulse = newImpulse - accumulated;
+                accumulated = newImpulse;
+                applyAxial(jt, f, sign * impulse, sA, sB);
+            };
+            // Lower limit: length ≥ minLength (pushes apart).
+            limitRow(f.length - jt.def.minLength, 1.0f, jt.lowerImpulse);
+            // Upper limit: length ≤ maxLength, a rope (pulls together).
+            limitRow(jt.def.maxLength - f.length, -1.0f, jt.upperImpulse);
         }
     }
 }
