@@ -6,44 +6,49 @@
 
 namespace tb {
 
-Energy computeEnergy(const i2d::World& world) {
+Energy computeEnergy(const Simulation& sim, i2d::Vec2 g) {
     Energy e;
-    const i2d::Vec2 g = world.gravity();
-    for (i2d::BodyId id : world.bodies()) {
-        if (world.bodyType(id) != i2d::BodyType::dynamic_body) continue;
+    for (int i = 0, n = sim.bodyCount(); i < n; ++i) {
+        const BodySample s = sim.sample(i);
+        if (!s.dynamic) continue;
         // Accumulate in double: large scenes sum tens of thousands of terms.
-        double m = world.mass(id);
-        double inertia = world.rotationalInertia(id);
-        i2d::Vec2 v = world.linearVelocity(id);
-        double w = world.angularVelocity(id);
-        i2d::Vec2 c = world.worldCenterOfMass(id);
-        double s = world.gravityScale(id);
-        e.kinetic += 0.5 * m * (double(v.x) * v.x + double(v.y) * v.y) + 0.5 * inertia * w * w;
-        e.potential -= m * s * (double(g.x) * c.x + double(g.y) * c.y);
+        const double m = s.mass;
+        e.kinetic += 0.5 * m * (double(s.vx) * s.vx + double(s.vy) * s.vy) + 0.5 * double(s.inertia) * s.w * s.w;
+        e.potential -= m * s.gravityScale * (double(g.x) * s.cx + double(g.y) * s.cy);
     }
     return e;
 }
 
-float maxPenetration(const i2d::World& world) {
-    float worst = 0.0f;
-    for (const i2d::ContactData& c : world.contacts())
-        for (int i = 0; i < c.manifold.pointCount; ++i) worst = std::max(worst, -c.manifold.points[i].separation);
-    return worst;
-}
-
-bool allFinite(const i2d::World& world) {
-    for (i2d::BodyId id : world.bodies()) {
-        if (!i2d::isFinite(world.position(id)) || !std::isfinite(world.angle(id)) ||
-            !i2d::isFinite(world.linearVelocity(id)) || !std::isfinite(world.angularVelocity(id)))
-            return false;
+bool allFinite(const Simulation& sim) {
+    for (int i = 0, n = sim.bodyCount(); i < n; ++i) {
+        const BodySample s = sim.sample(i);
+        for (float v : {s.x, s.y, s.angle, s.vx, s.vy, s.w})
+            if (!std::isfinite(v)) return false;
     }
     return true;
 }
 
-BodyState bodyState(const i2d::World& world, i2d::BodyId id) {
-    i2d::Vec2 p = world.position(id);
-    i2d::Vec2 v = world.linearVelocity(id);
-    return {p.x, p.y, world.angle(id), v.x, v.y, world.angularVelocity(id)};
+namespace {
+
+i2d::Vec2 worldPoint(const BodySample& s, i2d::Vec2 local) {
+    const float c = std::cos(s.angle), sn = std::sin(s.angle);
+    return {s.x + c * local.x - sn * local.y, s.y + sn * local.x + c * local.y};
+}
+
+}  // namespace
+
+float jointError(const DistanceJointDesc& j, const BodySample& a, const BodySample& b) {
+    const float d = i2d::distance(worldPoint(a, j.def.localAnchorA), worldPoint(b, j.def.localAnchorB));
+    if (!j.def.enableSpring) return std::abs(d - j.def.length);
+    if (!j.def.enableLimit) return 0.0f;
+    return std::max({0.0f, d - j.def.maxLength, j.def.minLength - d});
+}
+
+float maxJointError(const SceneDesc& desc, const Simulation& sim) {
+    float worst = 0.0f;
+    for (const DistanceJointDesc& j : desc.joints)
+        worst = std::max(worst, jointError(j, sim.sample(j.bodyA), sim.sample(j.bodyB)));
+    return worst;
 }
 
 }  // namespace tb

@@ -1,7 +1,10 @@
-// Testbed — measurements of a world's state used by `testbed run` and tests.
+// Testbed — measurements of a simulation's state, the same formulas for every
+// engine (they read tb::Simulation, never an engine directly).
 #pragma once
 
-#include <impulse2d/impulse2d.hpp>
+#include <vector>
+
+#include "simulation.hpp"
 
 namespace tb {
 
@@ -14,19 +17,17 @@ struct Energy {
     double potential = 0.0;
     double total() const { return kinetic + potential; }
 };
-Energy computeEnergy(const i2d::World& world);
-
-/// Largest penetration (−separation, m) over the points of the touching
-/// contacts, 0 when nothing overlaps.
-float maxPenetration(const i2d::World& world);
+Energy computeEnergy(const Simulation& sim, i2d::Vec2 gravity);
 
 /// True when every body's position, angle and velocities are finite.
-bool allFinite(const i2d::World& world);
+bool allFinite(const Simulation& sim);
 
-/// State of one body, as reported per named body by `testbed run`.
-struct BodyState {
-    float x = 0, y = 0, angle = 0, vx = 0, vy = 0, w = 0;
-};
-BodyState bodyState(const i2d::World& world, i2d::BodyId id);
+/// How far the scene's constraints are from what they ask: for a rigid
+/// distance joint |d − L|, for a length range the amount d lies outside
+/// [min, max]; springs without a range are not constraints and count 0.
+/// d is measured between the world anchors computed from the body samples.
+float jointError(const DistanceJointDesc& joint, const BodySample& a, const BodySample& b);
+/// Largest jointError over the scene's joints (0 when it has none).
+float maxJointError(const SceneDesc& desc, const Simulation& sim);
 
 }  // namespace tb

@@ -12,13 +12,13 @@
 #include <ostream>
 
 #include "metrics.hpp"
-#include "scene_build.hpp"
 #include "scene_loader.hpp"
 
 namespace tb {
 
 const char* const kRunHelp =
-    "usage: testbed run SCENE [--steps N | --seconds S] [--json] [--assets DIR] [settings options]\n"
+    "usage: testbed run SCENE [--steps N | --seconds S] [--json] [--engine impulse2d|box2d] [--assets DIR]\n"
+    "                  [settings options]\n"
     "\n"
     "Step a scene without rendering and report timing and measurements.\n"
     "SCENE is a shipped scene name (see `testbed list`) or a path to a .json scene file.\n"
@@ -27,7 +27,11 @@ const char* const kRunHelp =
     "  --seconds S     simulated time instead of --steps (steps = round(S / dt))\n"
     "  --json          print one JSON object: scene, steps, dt, ms_per_step {median,min,max},\n"
     "                  bodies, contacts, max_contacts, max_penetration, energy {initial,final,max},\n"
-    "                  nan, named {NAME: {x0,y0,angle0,x,y,angle,vx,vy,w}} (and a few extra fields)\n"
+    "                  nan, named {NAME: {x0,y0,angle0,x,y,angle,vx,vy,w,max_dx,min_y,max_y}},\n"
+    "                  engine, notes, settings, displaced, joint_error {max,final} (and a few more)\n"
+    "  --engine E      impulse2d (default) or box2d: the same scene in Box2D 2.4.1, same report;\n"
+    "                  --velocity-iterations / --position-iterations then set Box2D's counts\n"
+    "                  (default 8 and 3) and the other settings options do not apply\n"
     "  --assets DIR    assets directory holding scenes/ (default: next to the executable or the source tree)\n";
 
 const char* const kListHelp =
@@ -123,6 +127,11 @@ RunOptions parseRunOptions(const std::vector<std::string>& args) {
             r.seconds = parseDouble(a, value(args, i), 0.0, 1.0e6);
         } else if (a == "--json") {
             r.json = true;
+        } else if (a == "--engine") {
+            const std::string& v = value(args, i);
+            if (v == "impulse2d") r.engine = EngineKind::impulse2d;
+            else if (v == "box2d") r.engine = EngineKind::box2d;
+            else throw UsageError("--engine: expected impulse2d or box2d, got '" + v + "'");
         } else if (a == "--assets") {
             r.assetsDir = value(args, i);
         } else if (a.size() > 1 && a[0] == '-') {
@@ -138,45 +147,78 @@ RunOptions parseRunOptions(const std::vector<std::string>& args) {
     return r;
 }
 
-RunReport runScene(const SceneDesc& desc, long steps) {
-    Scene scene = buildScene(desc);
-    i2d::World& world = *scene.world;
+Box2DSettings RunOptions::box2dSettings() const {
+    Box2DSettings b;
+    if (overrides.velocityIterations) b.velocityIterations = *overrides.velocityIterations;
+    if (overrides.positionIterations) b.positionIterations = *overrides.positionIterations;
+    return b;
+}
+
+RunReport runScene(const SceneDesc& desc, long steps, EngineKind engine, const Box2DSettings& box2d) {
+    std::unique_ptr<Simulation> sim = makeSimulation(desc, engine, box2d);
     RunReport rep;
     rep.scene = desc.name;
+    rep.engine = engine;
+    rep.notes = sim->notes();
+    rep.settings = desc.settings;
+    rep.box2d = box2d;
     rep.steps = steps;
     rep.dt = desc.dt;
-    rep.bodies = world.bodyCount();
-    rep.joints = world.jointCount();
+    rep.bodies = sim->bodyCount();
+    rep.joints = sim->jointCount();
 
-    for (const auto& [name, id] : scene.named) {
-        BodyState s = bodyState(world, id);
-        rep.named.push_back({name, s.x, s.y, s.angle, 0, 0, 0, 0, 0, 0});
+    std::vector<std::pair<std::string, int>> named;
+    for (std::size_t i = 0; i < desc.bodies.size(); ++i)
+        if (!desc.bodies[i].name.empty()) named.emplace_back(desc.bodies[i].name, static_cast<int>(i));
+    std::sort(named.begin(), named.end());
+    for (const auto& [name, index] : named) {
+        BodySample s = sim->sample(index);
+        rep.named.push_back({name, s.x, s.y, s.angle, s.x, s.y, s.angle, s.vx, s.vy, s.w, 0.0f, s.y, s.y});
     }
-    Energy e0 = computeEnergy(world);
-    rep.energyInitial = rep.energyMax = rep.energyFinal = e0.total();
-    rep.nan = !allFinite(world);
+    std::vector<BodySample> start;
+    start.reserve(static_cast<std::size_t>(rep.bodies));
+    for (int i = 0; i < rep.bodies; ++i) start.push_back(sim->sample(i));
+
+    const i2d::Vec2 g = desc.settings.gravity;
+    rep.energyInitial = rep.energyMax = rep.energyFinal = computeEnergy(*sim, g).total();
+    rep.nan = !allFinite(*sim);
+    rep.jointErrorMax = rep.jointErrorFinal = maxJointError(desc, *sim);
 
     std::vector<double> ms;
     ms.reserve(static_cast<std::size_t>(steps));
     for (long i = 0; i < steps && !rep.nan; ++i) {
         auto t0 = std::chrono::steady_clock::now();
-        world.step(desc.dt);
+        sim->step(desc.dt);
         auto t1 = std::chrono::steady_clock::now();
         ms.push_back(std::chrono::duration<double, std::milli>(t1 - t0).count());
         ++rep.stepsCompleted;
 
-        rep.maxContacts = std::max(rep.maxContacts, world.contactCount());
-        rep.maxPenetration = std::max(rep.maxPenetration, maxPenetration(world));
-        if (!allFinite(world)) {
+        rep.maxContacts = std::max(rep.maxContacts, sim->touchingContactCount());
+        rep.maxPenetration = std::max(rep.maxPenetration, sim->maxPenetration());
+        if (!allFinite(*sim)) {
             rep.nan = true;
             break;
         }
-        double e = computeEnergy(world).total();
+        double e = computeEnergy(*sim, g).total();
         rep.energyMax = std::max(rep.energyMax, e);
         rep.energyFinal = e;
+        rep.jointErrorFinal = maxJointError(desc, *sim);
+        rep.jointErrorMax = std::max(rep.jointErrorMax, rep.jointErrorFinal);
+        for (std::size_t k = 0; k < named.size(); ++k) {
+            BodySample s = sim->sample(named[k].second);
+            RunReport::Named& nb = rep.named[k];
+            nb.maxDx = std::max(nb.maxDx, std::abs(s.x - nb.x0));
+            nb.minY = std::min(nb.minY, s.y);
+            nb.maxY = std::max(nb.maxY, s.y);
+        }
     }
-    rep.contacts = world.contactCount();
-    rep.awakeBodies = world.awakeBodyCount();
+    rep.contacts = sim->touchingContactCount();
+    for (int i = 0; i < rep.bodies; ++i) {
+        BodySample s = sim->sample(i);
+        if (s.awake && s.dynamic) ++rep.awakeBodies;
+        const BodySample& s0 = start[static_cast<std::size_t>(i)];
+        if (s.dynamic && std::hypot(s.x - s0.x, s.y - s0.y) > RunReport::kDisplacedDistance) ++rep.displaced;
+    }
     if (!ms.empty()) {
         std::vector<double> sorted = ms;
         std::sort(sorted.begin(), sorted.end());
@@ -185,8 +227,9 @@ RunReport runScene(const SceneDesc& desc, long steps) {
         rep.msMin = sorted.front();
         rep.msMax = sorted.back();
     }
-    for (auto& nb : rep.named) {
-        BodyState s = bodyState(world, scene.named.at(nb.name));
+    for (std::size_t k = 0; k < named.size(); ++k) {
+        BodySample s = sim->sample(named[k].second);
+        RunReport::Named& nb = rep.named[k];
         nb.x = s.x;
         nb.y = s.y;
         nb.angle = s.angle;
@@ -202,6 +245,7 @@ std::string reportToJson(const RunReport& r) {
     // nlohmann writes non-finite numbers as null; the "nan" field says why.
     json j;
     j["scene"] = r.scene;
+    j["engine"] = engineName(r.engine);
     j["steps"] = r.steps;
     j["steps_completed"] = r.stepsCompleted;
     j["dt"] = r.dt;
@@ -214,18 +258,37 @@ std::string reportToJson(const RunReport& r) {
     j["max_penetration"] = r.maxPenetration;
     j["energy"] = {{"initial", r.energyInitial}, {"final", r.energyFinal}, {"max", r.energyMax}};
     j["nan"] = r.nan;
+    j["displaced"] = r.displaced;
+    j["joint_error"] = {{"max", r.jointErrorMax}, {"final", r.jointErrorFinal}};
     json named = json::object();
     for (const auto& n : r.named)
-        named[n.name] = {{"x0", n.x0}, {"y0", n.y0}, {"angle0", n.angle0}, {"x", n.x},   {"y", n.y},
-                         {"angle", n.angle}, {"vx", n.vx}, {"vy", n.vy}, {"w", n.w}};
+        named[n.name] = {{"x0", n.x0},       {"y0", n.y0},     {"angle0", n.angle0}, {"x", n.x},
+                         {"y", n.y},         {"angle", n.angle}, {"vx", n.vx},       {"vy", n.vy},
+                         {"w", n.w},         {"max_dx", n.maxDx}, {"min_y", n.minY}, {"max_y", n.maxY}};
     j["named"] = named;
+    if (r.engine == EngineKind::box2d) {
+        j["settings"] = {{"velocity_iterations", r.box2d.velocityIterations},
+                         {"position_iterations", r.box2d.positionIterations},
+                         {"sleep", r.settings.enableSleep}};
+    } else {
+        static const char* const kCorrection[] = {"baumgarte", "split", "soft_step"};
+        static const char* const kImpact[] = {"closed_form", "velocity_bias"};
+        const i2d::WorldSettings& s = r.settings;
+        j["settings"] = {{"correction", kCorrection[static_cast<int>(s.positionCorrection)]},
+                         {"impact", kImpact[static_cast<int>(s.impactModel)]},
+                         {"velocity_iterations", s.velocityIterations},
+                         {"position_iterations", s.positionIterations},
+                         {"substeps", s.substeps},
+                         {"sleep", s.enableSleep}};
+    }
+    j["notes"] = r.notes;
     return j.dump();
 }
 
 namespace {
 
 void printText(const RunReport& r, std::ostream& out) {
-    out << "scene " << r.scene << ": " << r.stepsCompleted << "/" << r.steps << " steps of " << r.dt << " s, "
+    out << "scene " << r.scene << " (" << engineName(r.engine) << "): " << r.stepsCompleted << "/" << r.steps << " steps of " << r.dt << " s, "
         << r.bodies << " bodies, " << r.joints << " joints\n";
     out << std::fixed << std::setprecision(3);
     out << "  ms/step  median " << r.msMedian << "  min " << r.msMin << "  max " << r.msMax << "\n";
@@ -233,7 +296,10 @@ void printText(const RunReport& r, std::ostream& out) {
         << r.maxPenetration << " m, awake " << r.awakeBodies << "\n";
     out << std::setprecision(3) << "  energy   initial " << r.energyInitial << "  final " << r.energyFinal << "  max "
         << r.energyMax << " J\n";
+    out << "  displaced (> 0.5 m) " << r.displaced << ", joint error max " << std::setprecision(5) << r.jointErrorMax
+        << " m, final " << r.jointErrorFinal << " m\n" << std::setprecision(3);
     if (r.nan) out << "  NON-FINITE STATE after step " << r.stepsCompleted << "\n";
+    for (const auto& n : r.notes) out << "  note: " << n << "\n";
     for (const auto& n : r.named)
         out << "  " << n.name << ": (" << n.x0 << ", " << n.y0 << ", " << n.angle0 << ") -> (" << n.x << ", " << n.y
             << ", " << n.angle << "), v (" << n.vx << ", " << n.vy << "), w " << n.w << "\n";
@@ -261,7 +327,7 @@ int runRunCommand(const std::vector<std::string>& args, std::ostream& out, std::
         long steps = 600;
         if (opt.steps) steps = *opt.steps;
         if (opt.seconds) steps = std::lround(*opt.seconds / static_cast<double>(desc.dt));
-        RunReport rep = runScene(desc, steps);
+        RunReport rep = runScene(desc, steps, opt.engine, opt.box2dSettings());
         if (opt.json) {
             out << reportToJson(rep) << "\n";
         } else {

@@ -9,6 +9,7 @@
 #include <vector>
 
 #include "scene.hpp"
+#include "simulation.hpp"
 
 namespace tb {
 
@@ -45,7 +46,13 @@ struct RunOptions {
     std::optional<long> steps;
     std::optional<double> seconds;
     bool json = false;
+    EngineKind engine = EngineKind::impulse2d;
     SettingsOverrides overrides;
+
+    /// Box2D's iteration counts: --velocity-iterations / --position-iterations
+    /// when given, else Box2D's usual 8 and 3 (the scene's own iteration
+    /// counts are Impulse2D's, per substep, and do not carry over).
+    Box2DSettings box2dSettings() const;
 };
 
 /// Parse `run` arguments (after the word "run"). Throws UsageError.
@@ -54,6 +61,10 @@ RunOptions parseRunOptions(const std::vector<std::string>& args);
 /// Measurements of one run (see docs/scene-format.md, "testbed run --json").
 struct RunReport {
     std::string scene;
+    EngineKind engine = EngineKind::impulse2d;
+    std::vector<std::string> notes;  ///< what the engine could not express of the scene
+    i2d::WorldSettings settings;     ///< Impulse2D's settings of the run
+    Box2DSettings box2d;             ///< Box2D's iteration counts of the run
     long steps = 0;            ///< steps requested
     long stepsCompleted = 0;   ///< fewer when a state went non-finite
     float dt = 0.0f;
@@ -66,15 +77,24 @@ struct RunReport {
     float maxPenetration = 0.0f;
     double energyInitial = 0.0, energyFinal = 0.0, energyMax = 0.0;
     bool nan = false;
+    /// Dynamic bodies whose origin ends more than kDisplacedDistance from its start.
+    int displaced = 0;
+    static constexpr float kDisplacedDistance = 0.5f;
+    float jointErrorMax = 0.0f;    ///< largest tb::maxJointError over the run (m)
+    float jointErrorFinal = 0.0f;  ///< after the last step (m)
     struct Named {
         std::string name;
         float x0, y0, angle0, x, y, angle, vx, vy, w;
+        float maxDx = 0;           ///< largest |x − x0| over the run
+        float minY = 0, maxY = 0;  ///< lowest and highest y over the run (including the start)
     };
     std::vector<Named> named;  ///< sorted by name
 };
 
-/// Build and step a scene (with the overrides already in desc.settings).
-RunReport runScene(const SceneDesc& desc, long steps);
+/// Build and step a scene in the given engine (with the overrides already in
+/// desc.settings; `box2d` only matters for EngineKind::box2d).
+RunReport runScene(const SceneDesc& desc, long steps, EngineKind engine = EngineKind::impulse2d,
+                   const Box2DSettings& box2d = {});
 
 /// The report as one JSON object (field names are relied on by other tools).
 std::string reportToJson(const RunReport& report);

@@ -1,0 +1,262 @@
+// Testbed — a scene as a Box2D 2.4.1 world, behind the Simulation interface.
+//
+// Box2D is the reference the validation and benchmarks hold Impulse2D
+// against; it lives in the testbed, never in the engine. The mapping keeps
+// what both engines share (bodies, materials, circles, polygons, segments,
+// distance constraints, gravity, damping) identical, gives every dynamic body
+// the mass properties Impulse2D computes for it, and lists in notes() what
+// Box2D 2.4.1 has no equivalent for, so nothing is dropped silently.
+#include <box2d/box2d.h>
+
+#include <cmath>
+#include <set>
+
+#include "simulation.hpp"
+
+namespace tb {
+namespace {
+
+b2Vec2 toB2(i2d::Vec2 v) { return {v.x, v.y}; }
+
+b2BodyType toB2(i2d::BodyType t) {
+    switch (t) {
+        case i2d::BodyType::static_body: return b2_staticBody;
+        case i2d::BodyType::kinematic_body: return b2_kinematicBody;
+        case i2d::BodyType::dynamic_body: break;
+    }
+    return b2_dynamicBody;
+}
+
+class Box2DSimulation final : public Simulation {
+public:
+    Box2DSimulation(const SceneDesc& desc, const Box2DSettings& settings)
+        : world_(toB2(desc.settings.gravity)), settings_(settings) {
+        const i2d::WorldSettings& ws = desc.settings;
+        world_.SetAllowSleeping(ws.enableSleep);
+        world_.SetWarmStarting(ws.enableWarmStarting);
+        bodies_.reserve(desc.bodies.size());
+        for (const BodyDesc& b : desc.bodies) bodies_.push_back(createBody(b, ws));
+        for (std::size_t i = 0; i < desc.joints.size(); ++i) createJoint(desc, desc.joints[i], i);
+        describeDifferences(desc);
+    }
+
+    EngineKind engine() const override { return EngineKind::box2d; }
+    void step(float dt) override { world_.Step(dt, settings_.velocityIterations, settings_.positionIterations); }
+    int bodyCount() const override { return static_cast<int>(bodies_.size()); }
+    int jointCount() const override { return world_.GetJointCount(); }
+
+    int touchingContactCount() const override {
+        int n = 0;
+        for (const b2Contact* c = world_.GetContactList(); c; c = c->GetNext())
+            if (c->IsTouching()) ++n;
+        return n;
+    }
+
+    float maxPenetration() const override {
+        float worst = 0.0f;
+        for (const b2Contact* c = world_.GetContactList(); c; c = c->GetNext()) {
+            if (!c->IsTouching()) continue;
+            b2WorldManifold wm;
+            c->GetWorldManifold(&wm);
+            for (int i = 0; i < c->GetManifold()->pointCount; ++i) worst = std::max(worst, -wm.separations[i]);
+        }
+        return worst;
+    }
+
+    BodySample sample(int index) const override {
+        const b2Body* b = bodies_[static_cast<std::size_t>(index)];
+        BodySample s;
+        const b2Vec2 p = b->GetPosition(), v = b->GetLinearVelocity(), c = b->GetWorldCenter();
+        s.x = p.x;
+        s.y = p.y;
+        s.angle = b->GetAngle();
+        s.vx = v.x;
+        s.vy = v.y;
+        s.w = b->GetAngularVelocity();
+        s.cx = c.x;
+        s.cy = c.y;
+        s.dynamic = b->GetType() == b2_dynamicBody;
+        if (s.dynamic) {
+            s.mass = b->GetMass();
+            // Box2D reports inertia about the body origin; shift it to the centre of mass.
+            const b2Vec2 lc = b->GetLocalCenter();
+            s.inertia = b->GetInertia() - s.mass * b2Dot(lc, lc);
+        }
+        s.gravityScale = b->GetGravityScale();
+        s.awake = b->IsAwake();
+        return s;
+    }
+
+private:
+    void note(const std::string& what) {
+        if (noted_.insert(what).second) notes_.push_back(what);
+    }
+
+    b2Body* createBody(const BodyDesc& b, const i2d::WorldSettings& ws) {
+        b2BodyDef bd;
+        bd.type = toB2(b.def.type);
+        bd.position = toB2(b.def.position);
+        bd.angle = b.def.angle;
+        bd.linearVelocity = toB2(b.def.linearVelocity);
+        bd.angularVelocity = b.def.angularVelocity;
+        bd.linearDamping = b.def.linearDamping;
+        bd.angularDamping = b.def.angularDamping;
+        bd.gravityScale = b.def.gravityScale;
+        bd.fixedRotation = b.def.fixedRotation;
+        bd.awake = b.def.isAwake;
+        bd.allowSleep = b.def.enableSleep;
+        b2Body* body = world_.CreateBody(&bd);
+
+        // Mass properties as Impulse2D computes them (parallel-axis sum), so
+        // that the two engines move the same bodies even where a shape has to
+        // be built differently (capsules, rounded polygons).
+        double mass = 0, mx = 0, my = 0, inertiaOrigin = 0;
+        for (const ShapeDesc& s : b.shapes) {
+            i2d::MassData md{};
+            switch (s.type) {
+                case i2d::ShapeType::circle: md = i2d::computeMass(s.circle, s.def.density); break;
+                case i2d::ShapeType::capsule: md = i2d::computeMass(s.capsule, s.def.density); break;
+                case i2d::ShapeType::polygon: md = i2d::computeMass(s.polygon, s.def.density); break;
+                case i2d::ShapeType::segment: break;
+            }
+            mass += md.mass;
+            mx += double(md.mass) * md.center.x;
+            my += double(md.mass) * md.center.y;
+            inertiaOrigin += md.rotationalInertia + double(md.mass) * (double(md.center.x) * md.center.x +
+                                                                       double(md.center.y) * md.center.y);
+            addShape(body, s, ws);
+        }
+        if (bd.type == b2_dynamicBody && mass > 0) {
+            b2MassData md;
+            md.mass = static_cast<float>(mass);
+            md.center = {static_cast<float>(mx / mass), static_cast<float>(my / mass)};
+            md.I = static_cast<float>(inertiaOrigin);  // about the body origin, as b2MassData wants
+            body->SetMassData(&md);
+        }
+        return body;
+    }
+
+    void addShape(b2Body* body, const ShapeDesc& s, const i2d::WorldSettings& ws) {
+        b2FixtureDef fd;
+        fd.density = s.def.density;
+        fd.friction = s.def.friction;
+        fd.restitution = s.def.restitution;
+        fd.restitutionThreshold = ws.restitutionThreshold;
+        fd.isSensor = s.def.isSensor;
+        fd.filter.categoryBits = static_cast<uint16>(s.def.filter.categoryBits & 0xFFFFu);
+        fd.filter.maskBits = static_cast<uint16>(s.def.filter.maskBits & 0xFFFFu);
+        fd.filter.groupIndex = static_cast<int16>(s.def.filter.groupIndex);
+        if ((s.def.filter.categoryBits >> 16) != 0 || s.def.filter.groupIndex < INT16_MIN ||
+            s.def.filter.groupIndex > INT16_MAX)
+            note("collision filters: Box2D 2.4.1 has 16 category bits and 16-bit groups; higher bits were dropped");
+
+        switch (s.type) {
+            case i2d::ShapeType::circle: {
+                b2CircleShape c;
+                c.m_p = toB2(s.circle.center);
+                c.m_radius = s.circle.radius;
+                fd.shape = &c;
+                body->CreateFixture(&fd);
+                break;
+            }
+            case i2d::ShapeType::segment: {
+                b2EdgeShape e;
+                e.SetTwoSided(toB2(s.segment.point1), toB2(s.segment.point2));
+                fd.shape = &e;
+                body->CreateFixture(&fd);
+                break;
+            }
+            case i2d::ShapeType::polygon: {
+                b2Vec2 v[b2_maxPolygonVertices];
+                for (int i = 0; i < s.polygon.count; ++i) v[i] = toB2(s.polygon.vertices[i]);
+                b2PolygonShape p;
+                p.Set(v, s.polygon.count);
+                if (s.polygon.radius > p.m_radius) {
+                    p.m_radius = s.polygon.radius;
+                    note("rounded polygons: given to Box2D 2.4.1 as its polygon with that skin radius");
+                }
+                note("polygons: Box2D 2.4.1 adds a 1 cm skin (b2_polygonRadius) around every polygon, so its "
+                     "boxes collide 1 cm larger than their vertices");
+                fd.shape = &p;
+                body->CreateFixture(&fd);
+                break;
+            }
+            case i2d::ShapeType::capsule: {
+                // No capsule in 2.4.1: a box over the core segment and a
+                // circle at each end cover the same outline (the box is shrunk
+                // by Box2D's polygon skin).
+                note("capsules: Box2D 2.4.1 has none; each is a box plus two end circles with the capsule's mass");
+                const i2d::Vec2 c1 = s.capsule.center1, c2 = s.capsule.center2;
+                const float r = s.capsule.radius;
+                b2CircleShape end;
+                end.m_radius = r;
+                fd.shape = &end;
+                end.m_p = toB2(c1);
+                body->CreateFixture(&fd);
+                end.m_p = toB2(c2);
+                body->CreateFixture(&fd);
+                const i2d::Vec2 d = c2 - c1;
+                b2PolygonShape core;
+                core.SetAsBox(0.5f * i2d::length(d), std::max(r - b2_polygonRadius, b2_linearSlop),
+                              toB2(0.5f * (c1 + c2)), std::atan2(d.y, d.x));
+                fd.shape = &core;
+                body->CreateFixture(&fd);
+                break;
+            }
+        }
+    }
+
+    void createJoint(const SceneDesc& desc, const DistanceJointDesc& j, std::size_t index) {
+        if (j.bodyA < 0 || j.bodyB < 0 || j.bodyA >= bodyCount() || j.bodyB >= bodyCount())
+            throw SceneError((desc.file.empty() ? desc.name : desc.file) + ": joints[" + std::to_string(index) +
+                             "]: body index out of range");
+        b2DistanceJointDef jd;
+        jd.bodyA = bodies_[static_cast<std::size_t>(j.bodyA)];
+        jd.bodyB = bodies_[static_cast<std::size_t>(j.bodyB)];
+        jd.localAnchorA = toB2(j.def.localAnchorA);
+        jd.localAnchorB = toB2(j.def.localAnchorB);
+        jd.length = j.def.length;
+        jd.collideConnected = j.def.collideConnected;
+        // Box2D 2.4.1's distance joint is rigid when minLength == maxLength,
+        // otherwise a spring (stiffness > 0) and/or a length range.
+        if (!j.def.enableSpring) {
+            jd.minLength = jd.maxLength = j.def.length;
+        } else {
+            b2LinearStiffness(jd.stiffness, jd.damping, j.def.hertz, j.def.dampingRatio, jd.bodyA, jd.bodyB);
+            jd.minLength = j.def.enableLimit ? j.def.minLength : 0.0f;
+            jd.maxLength = j.def.enableLimit ? j.def.maxLength : b2_maxFloat;
+        }
+        world_.CreateJoint(&jd);
+    }
+
+    void describeDifferences(const SceneDesc& desc) {
+        const i2d::WorldSettings& ws = desc.settings;
+        bool restitution = false;
+        for (const BodyDesc& b : desc.bodies)
+            for (const ShapeDesc& s : b.shapes) restitution = restitution || s.def.restitution > 0;
+        if (ws.impactModel == i2d::ImpactModel::closed_form && restitution)
+            note("impacts: Box2D 2.4.1 applies restitution as a velocity bias in its contact solver; the "
+                 "closed-form impact law (Stronge restitution with friction) has no equivalent there");
+        // Box2D 2.4.1 clamps motion to b2_maxTranslation per step; say so when
+        // a body starts faster than that (e.g. bullets at 60 Hz above 120 m/s).
+        for (const BodyDesc& b : desc.bodies)
+            if (i2d::length(b.def.linearVelocity) * desc.dt > b2_maxTranslation)
+                note("speed limit: Box2D 2.4.1 moves a body at most b2_maxTranslation = 2 m per step, slower "
+                     "than some bodies of this scene start");
+    }
+
+    b2World world_;
+    Box2DSettings settings_;
+    std::vector<b2Body*> bodies_;
+    std::set<std::string> noted_;
+};
+
+}  // namespace
+
+bool box2dAvailable() { return true; }
+
+std::unique_ptr<Simulation> makeBox2DSimulation(const SceneDesc& desc, const Box2DSettings& settings) {
+    return std::make_unique<Box2DSimulation>(desc, settings);
+}
+
+}  // namespace tb

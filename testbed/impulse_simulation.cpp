@@ -1,0 +1,67 @@
+// Testbed — a scene as an Impulse2D world, behind the Simulation interface.
+#include <algorithm>
+
+#include "scene_build.hpp"
+#include "simulation.hpp"
+
+namespace tb {
+namespace {
+
+class ImpulseSimulation final : public Simulation {
+public:
+    explicit ImpulseSimulation(const SceneDesc& desc) : scene_(buildScene(desc)) {}
+
+    EngineKind engine() const override { return EngineKind::impulse2d; }
+    void step(float dt) override { scene_.world->step(dt); }
+    int bodyCount() const override { return static_cast<int>(scene_.bodies.size()); }
+    int jointCount() const override { return scene_.world->jointCount(); }
+    int touchingContactCount() const override { return scene_.world->contactCount(); }
+
+    BodySample sample(int index) const override {
+        const i2d::World& w = *scene_.world;
+        i2d::BodyId id = scene_.bodies[static_cast<std::size_t>(index)];
+        BodySample s;
+        i2d::Vec2 p = w.position(id), v = w.linearVelocity(id), c = w.worldCenterOfMass(id);
+        s.x = p.x;
+        s.y = p.y;
+        s.angle = w.angle(id);
+        s.vx = v.x;
+        s.vy = v.y;
+        s.w = w.angularVelocity(id);
+        s.cx = c.x;
+        s.cy = c.y;
+        s.dynamic = w.bodyType(id) == i2d::BodyType::dynamic_body;
+        s.mass = s.dynamic ? w.mass(id) : 0.0f;
+        s.inertia = s.dynamic ? w.rotationalInertia(id) : 0.0f;
+        s.gravityScale = w.gravityScale(id);
+        s.awake = w.isAwake(id);
+        return s;
+    }
+
+    float maxPenetration() const override {
+        float worst = 0.0f;
+        for (const i2d::ContactData& c : scene_.world->contacts())
+            for (int i = 0; i < c.manifold.pointCount; ++i) worst = std::max(worst, -c.manifold.points[i].separation);
+        return worst;
+    }
+
+private:
+    Scene scene_;
+};
+
+}  // namespace
+
+std::unique_ptr<Simulation> makeImpulseSimulation(const SceneDesc& desc) {
+    return std::make_unique<ImpulseSimulation>(desc);
+}
+
+const char* engineName(EngineKind kind) { return kind == EngineKind::box2d ? "box2d" : "impulse2d"; }
+
+std::unique_ptr<Simulation> makeSimulation(const SceneDesc& desc, EngineKind kind, const Box2DSettings& box2d) {
+    if (kind == EngineKind::impulse2d) return makeImpulseSimulation(desc);
+    if (!box2dAvailable())
+        throw SceneError("this testbed was built without the Box2D 2.4.1 backend (libbox2d-dev not found at configure time)");
+    return makeBox2DSimulation(desc, box2d);
+}
+
+}  // namespace tb
