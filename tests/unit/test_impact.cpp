@@ -339,9 +339,24 @@ TEST(ImpactInvalid, EveryKindThrows) {
     with([](ImpactInput& in) { in.restitution = 1.0 + 1e-9; });
     with([](ImpactInput& in) { in.friction = -1e-9; });
     // Singular K: A can only spin about its centre (zero inverse mass) and B is
-    // immovable, so K = (1/I_A)·r⊥r⊥ᵀ has rank 1 (an addition to the header's list).
+    // immovable, so K = (1/I_A)·r⊥r⊥ᵀ has rank 1.
     with([](ImpactInput& in) { in.a.invMass = 0.0; });
+    // Finite but overflowing: K has entries ~1e300·1e300 and the impulse is not
+    // representable in double precision.
+    with([](ImpactInput& in) {
+        in.a.invInertia = 1e300;
+        in.a.r = {1e300, -1e300};
+        in.a.v = {1e300, -1e300};
+    });
     for (std::size_t i = 0; i < bad.size(); ++i) EXPECT_THROW(i2d::resolveImpact(bad[i]), i2d::Error) << "case " << i;
+
+    // The overflow case above is refused as an overflow, not by another check.
+    try {
+        i2d::resolveImpact(bad.back());
+        ADD_FAILURE() << "overflow not refused";
+    } catch (const i2d::Error& e) {
+        EXPECT_NE(std::string(e.what()).find("overflow"), std::string::npos) << e.what();
+    }
 
     // A normal within the 1e-6 tolerance is accepted.
     ImpactInput nearlyUnit = good;
