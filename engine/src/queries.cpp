@@ -29,6 +29,25 @@ std::optional<RayHit> castShape(const detail::Shape& sh, const Transform& xf, Ve
     return hit;
 }
 
+// Shapes of both trees whose fat box overlaps `box`, that pass the filter and
+// the exact test `accept`, as handles in slot order (independent of tree shape).
+template <class Accept>
+std::vector<ShapeId> shapesInBox(const detail::WorldImpl& w, const AABB& box, const QueryFilter& filter, Accept accept) {
+    std::vector<int> found;
+    auto visit = [&](int s) {
+        const detail::Shape& sh = w.shapes[s];
+        if (passes(sh.filter, filter) && accept(sh)) found.push_back(s);
+        return true;
+    };
+    w.staticTree.query(box, visit);
+    w.movingTree.query(box, visit);
+    std::sort(found.begin(), found.end());
+    std::vector<ShapeId> out;
+    out.reserve(found.size());
+    for (int s : found) out.push_back(w.shapeHandle(s));
+    return out;
+}
+
 void checkRay(Vec2 origin, Vec2 translation) {
     detail::requireBounded(origin, "ray origin");
     detail::requireBounded(translation, "ray translation");
@@ -80,46 +99,24 @@ std::vector<ShapeId> World::overlapAABB(const AABB& box, const QueryFilter& filt
     detail::requireBounded(box.lower, "box lower");
     detail::requireBounded(box.upper, "box upper");
     const auto& w = *impl_;
-    std::vector<int> found;
-    auto visit = [&](int s) {
-        const detail::Shape& sh = w.shapes[s];
-        if (!passes(sh.filter, filter)) return true;
-        if (overlaps(w.computeShapeAABB(sh, w.bodies[sh.body].xf), box)) found.push_back(s);
-        return true;
-    };
-    w.staticTree.query(box, visit);
-    w.movingTree.query(box, visit);
-    std::sort(found.begin(), found.end());
-    std::vector<ShapeId> out;
-    for (int s : found) out.push_back(w.shapeHandle(s));
-    return out;
+    return shapesInBox(w, box, filter, [&](const detail::Shape& sh) {
+        return overlaps(w.computeShapeAABB(sh, w.bodies[sh.body].xf), box);
+    });
 }
 
 std::vector<ShapeId> World::queryPoint(Vec2 p, const QueryFilter& filter) const {
     detail::requireBounded(p, "point");
     const auto& w = *impl_;
-    std::vector<int> found;
-    AABB box{p, p};
-    auto visit = [&](int s) {
-        const detail::Shape& sh = w.shapes[s];
-        if (!passes(sh.filter, filter)) return true;
+    return shapesInBox(w, AABB{p, p}, filter, [&](const detail::Shape& sh) {
         Vec2 local = invTransformPoint(w.bodies[sh.body].xf, p);
-        bool inside = false;
         switch (sh.type) {
-            case ShapeType::circle: inside = containsPoint(sh.circle, local); break;
-            case ShapeType::capsule: inside = containsPoint(sh.capsule, local); break;
-            case ShapeType::polygon: inside = containsPoint(sh.polygon, local); break;
-            case ShapeType::segment: inside = false; break;
+            case ShapeType::circle: return containsPoint(sh.circle, local);
+            case ShapeType::capsule: return containsPoint(sh.capsule, local);
+            case ShapeType::polygon: return containsPoint(sh.polygon, local);
+            case ShapeType::segment: break;
         }
-        if (inside) found.push_back(s);
-        return true;
-    };
-    w.staticTree.query(box, visit);
-    w.movingTree.query(box, visit);
-    std::sort(found.begin(), found.end());
-    std::vector<ShapeId> out;
-    for (int s : found) out.push_back(w.shapeHandle(s));
-    return out;
+        return false;
+    });
 }
 
 }  // namespace i2d

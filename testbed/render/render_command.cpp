@@ -6,9 +6,11 @@
 #include <filesystem>
 #include <iostream>
 #include <stdexcept>
+#include <tuple>
 
 #include <unistd.h>
 
+#include "render/cli_args.hpp"
 #include "render/gif_writer.hpp"
 #include "scene.hpp"
 #include "scene_build.hpp"
@@ -158,16 +160,6 @@ void printRenderUsage(std::ostream& out) {
            "writes DIR/frame_0000.png..., DIR/sheet.png and DIR/anim.gif (needs ImageMagick convert)\n";
 }
 
-int parseInt(const std::string& flag, const std::string& value) {
-    try {
-        std::size_t used = 0;
-        int v = std::stoi(value, &used);
-        if (used == value.size()) return v;
-    } catch (const std::exception&) {
-    }
-    throw std::invalid_argument(flag + ": expected an integer, got '" + value + "'");
-}
-
 }  // namespace
 
 int runRenderCommand(const std::vector<std::string>& args) {
@@ -184,21 +176,17 @@ int runRenderCommand(const std::vector<std::string>& args) {
                 printRenderUsage(std::cout);
                 return 0;
             } else if (a == "--frames") {
-                options.frames = parseInt(a, value());
+                options.frames = parseIntArg(a, value());
             } else if (a == "--every") {
-                options.every = parseInt(a, value());
+                options.every = parseIntArg(a, value());
             } else if (a == "--out") {
                 outDir = value();
             } else if (a == "--size") {
-                const std::string& v = value();
-                auto x = v.find('x');
-                if (x == std::string::npos) throw std::invalid_argument("--size: expected WxH, got '" + v + "'");
-                options.width = parseInt(a, v.substr(0, x));
-                options.height = parseInt(a, v.substr(x + 1));
+                std::tie(options.width, options.height) = parseSizeArg(a, value(), 1);
             } else if (a == "--assets") {
                 assetsDir = value();
             } else if (a == "--ssaa") {
-                options.supersample = parseInt(a, value());
+                options.supersample = parseIntArg(a, value());
                 if (options.supersample < 1 || options.supersample > 4)
                     throw std::invalid_argument("--ssaa: expected 1 to 4");
             } else if (a == "--contacts") {

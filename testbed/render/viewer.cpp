@@ -8,8 +8,10 @@
 #include <iostream>
 #include <optional>
 #include <stdexcept>
+#include <tuple>
 
 #include "render/camera.hpp"
+#include "render/cli_args.hpp"
 #include "render/gl_draw.hpp"
 #include "render/offscreen.hpp"
 #include "render/png_io.hpp"
@@ -401,16 +403,6 @@ void printViewUsage(std::ostream& out) {
            "      c contacts, a AABBs, j joints, h help, q/escape quit; mouse: drag bodies, wheel zoom\n";
 }
 
-int parseIntArg(const std::string& flag, const std::string& value) {
-    try {
-        std::size_t used = 0;
-        int v = std::stoi(value, &used);
-        if (used == value.size()) return v;
-    } catch (const std::exception&) {
-    }
-    throw std::invalid_argument(flag + ": expected an integer, got '" + value + "'");
-}
-
 }  // namespace
 
 int runViewer(const std::vector<ViewerScene>& scenes, int startIndex, const ViewerOptions& options) {
@@ -440,12 +432,7 @@ int runViewCommand(const std::vector<std::string>& args) {
             } else if (a == "--assets") {
                 assetsDir = value();
             } else if (a == "--size") {
-                const std::string& v = value();
-                auto x = v.find('x');
-                if (x == std::string::npos) throw std::invalid_argument("--size: expected WxH, got '" + v + "'");
-                options.width = parseIntArg(a, v.substr(0, x));
-                options.height = parseIntArg(a, v.substr(x + 1));
-                if (options.width < 16 || options.height < 16) throw std::invalid_argument("--size: too small");
+                std::tie(options.width, options.height) = parseSizeArg(a, value(), 16);
             } else if (a == "--screenshot") {
                 options.screenshot = value();
             } else if (a == "--frames") {
