@@ -34,6 +34,7 @@ public:
         const i2d::WorldSettings& ws = desc.settings;
         world_.SetAllowSleeping(ws.enableSleep);
         world_.SetWarmStarting(ws.enableWarmStarting);
+        world_.SetContinuousPhysics(ws.enableContinuous);
         bodies_.reserve(desc.bodies.size());
         for (const BodyDesc& b : desc.bodies) bodies_.push_back(createBody(b, ws));
         for (std::size_t i = 0; i < desc.joints.size(); ++i) createJoint(desc, desc.joints[i], i);

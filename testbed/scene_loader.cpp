@@ -266,7 +266,7 @@ i2d::WorldSettings parseWorld(const json& j, const Loc& loc) {
                    "position_iterations", "substeps", "push_factor", "penetration_slop", "max_push_speed",
                    "contact_hertz", "contact_damping_ratio", "joint_hertz", "joint_damping_ratio",
                    "restitution_threshold", "impact_threshold", "speculative_distance", "aabb_margin",
-                   "max_linear_speed", "enable_warm_starting", "enable_sleep", "time_to_sleep",
+                   "max_linear_speed", "enable_warm_starting", "enable_continuous", "enable_sleep", "time_to_sleep",
                    "linear_sleep_tolerance", "angular_sleep_tolerance"});
     o.checkUnknown();
     o.str("comment", "");
@@ -294,6 +294,7 @@ i2d::WorldSettings parseWorld(const json& j, const Loc& loc) {
     s.aabbMargin = o.f("aabb_margin", s.aabbMargin, {0, 100});
     s.maxLinearSpeed = o.f("max_linear_speed", s.maxLinearSpeed, {0, kMaxSpeed, true});
     s.enableWarmStarting = o.boolean("enable_warm_starting", s.enableWarmStarting);
+    s.enableContinuous = o.boolean("enable_continuous", s.enableContinuous);
     s.enableSleep = o.boolean("enable_sleep", s.enableSleep);
     s.timeToSleep = o.f("time_to_sleep", s.timeToSleep, {0, kMaxRate});
     s.linearSleepTolerance = o.f("linear_sleep_tolerance", s.linearSleepTolerance, {0, kMaxSpeed});

@@ -2,7 +2,8 @@
 //
 //   broadphase pairs → narrowphase (manifolds, events) → impacts (closed-form
 //   law) → solve velocities / integrate / correct positions (solver.cpp) →
-//   refresh bounding boxes → sleep
+//   continuous collision of fast bodies against static shapes (continuous.cpp)
+//   → refresh bounding boxes → sleep
 #include <algorithm>
 #include <chrono>
 
@@ -44,8 +45,12 @@ void WorldImpl::step(float dt) {
 
     t = Clock::now();
     solve(dt);
-    for (int b : awakeBodies) synchronizeShapes(b);
     profile.solve = msSince(t);
+
+    t = Clock::now();
+    if (settings.enableContinuous) solveContinuous();
+    for (int b : awakeBodies) synchronizeShapes(b);
+    profile.continuous = msSince(t);
 
     t = Clock::now();
     updateSleep(dt);

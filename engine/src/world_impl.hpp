@@ -243,6 +243,9 @@ public:
     // --- solver (solver.cpp) ---
     void solve(float dt);
 
+    // --- continuous collision (continuous.cpp), after solve() ---
+    void solveContinuous();
+
     // --- sleep (sleep.cpp) ---
     void updateSleep(float dt);
 

@@ -82,6 +82,9 @@ struct WorldSettings {
     float maxLinearSpeed = 400.0f;
 
     bool enableWarmStarting = true;
+    /// Sweep bodies that move more than half their thickness in a step against
+    /// static shapes, so they cannot pass through thin walls (continuous.cpp).
+    bool enableContinuous = true;
     bool enableSleep = true;
     /// Seconds an island must rest before it sleeps.
     float timeToSleep = 0.5f;
@@ -209,6 +212,7 @@ struct Profile {
     float collide = 0.0f;
     float impacts = 0.0f;
     float solve = 0.0f;
+    float continuous = 0.0f;  ///< continuous collision and bounding-box refresh
     float sleep = 0.0f;
 };
 
