@@ -27,6 +27,24 @@ b2BodyType toB2(i2d::BodyType t) {
     return b2_dynamicBody;
 }
 
+/// Whether b2PolygonShape::Set (2.4.1) takes these points: it welds points
+/// closer than half of b2_linearSlop and needs 3 of them not on one line.
+bool box2dAcceptsPolygon(const b2Vec2* v, int count) {
+    b2Vec2 kept[b2_maxPolygonVertices];
+    int n = 0;
+    const float weld = 0.5f * b2_linearSlop;
+    for (int i = 0; i < count; ++i) {
+        bool unique = true;
+        for (int j = 0; j < n && unique; ++j) unique = b2DistanceSquared(v[i], kept[j]) >= weld * weld;
+        if (unique) kept[n++] = v[i];
+    }
+    if (n < 3) return false;
+    // Not all on one line: some point off the line through the first two.
+    for (int i = 2; i < n; ++i)
+        if (b2Cross(kept[1] - kept[0], kept[i] - kept[0]) != 0.0f) return true;
+    return false;
+}
+
 class Box2DSimulation final : public Simulation {
 public:
     Box2DSimulation(const SceneDesc& desc, const Box2DSettings& settings)
@@ -170,6 +188,22 @@ private:
             case i2d::ShapeType::polygon: {
                 b2Vec2 v[b2_maxPolygonVertices];
                 for (int i = 0; i < s.polygon.count; ++i) v[i] = toB2(s.polygon.vertices[i]);
+                if (!box2dAcceptsPolygon(v, s.polygon.count)) {
+                    // b2PolygonShape::Set would assert (or, without asserts,
+                    // substitute a 2 x 2 m box): keep the sliver's long axis
+                    // as an edge, whose 1 cm skin is the closest Box2D has.
+                    note("slivers: a polygon thinner than Box2D 2.4.1's 2.5 mm vertex welding is an edge (segment) "
+                         "between its two farthest vertices there, with Box2D's 1 cm skin");
+                    int a = 0, b = 1;
+                    for (int i = 0; i < s.polygon.count; ++i)
+                        for (int j = i + 1; j < s.polygon.count; ++j)
+                            if (b2DistanceSquared(v[i], v[j]) > b2DistanceSquared(v[a], v[b])) a = i, b = j;
+                    b2EdgeShape e;
+                    e.SetTwoSided(v[a], v[b]);
+                    fd.shape = &e;
+                    body->CreateFixture(&fd);
+                    break;
+                }
                 b2PolygonShape p;
                 p.Set(v, s.polygon.count);
                 if (s.polygon.radius > p.m_radius) {
@@ -240,10 +274,19 @@ private:
                  "closed-form impact law (Stronge restitution with friction) has no equivalent there");
         // Box2D 2.4.1 clamps motion to b2_maxTranslation per step; say so when
         // a body starts faster than that (e.g. bullets at 60 Hz above 120 m/s).
-        for (const BodyDesc& b : desc.bodies)
+        for (const BodyDesc& b : desc.bodies) {
             if (i2d::length(b.def.linearVelocity) * desc.dt > b2_maxTranslation)
                 note("speed limit: Box2D 2.4.1 moves a body at most b2_maxTranslation = 2 m per step, slower "
                      "than some bodies of this scene start");
+            if (std::abs(b.def.angularVelocity) * desc.dt > b2_maxRotation)
+                note("spin limit: Box2D 2.4.1 turns a body at most b2_maxRotation = 90 degrees per step, slower "
+                     "than some bodies of this scene start");
+        }
+        // Box2D 2.4.1's sleep thresholds are compile-time constants.
+        if (ws.enableSleep && (ws.timeToSleep != b2_timeToSleep || ws.linearSleepTolerance != b2_linearSleepTolerance ||
+                               ws.angularSleepTolerance != b2_angularSleepTolerance))
+            note("sleep: Box2D 2.4.1 puts bodies to sleep by its fixed thresholds (0.01 m/s, 2 degrees/s, 0.5 s), "
+                 "not the scene's");
     }
 
     b2World world_;
