@@ -50,6 +50,32 @@ TEST(SolverBehaviour, TenBoxStackStandsFor60s) {
     EXPECT_NEAR(top.y, 9.5f, 0.05f);
 }
 
+TEST(SolverBehaviour, PyramidSettlesWithoutSwaying) {
+    // A pyramid of base 50 (1275 boxes) settles by its contacts' compliance;
+    // the settling must be symmetric. Solving the contacts in creation order
+    // (left to right, bottom to top) carried each sweep's error one way and
+    // the top box swayed 9 cm within 5 s and ended 6 cm off centre; solved
+    // colour by colour it sways about 2 cm and ends within 2 mm.
+    World world({.enableSleep = false});
+    test::makeGround(world, 60.0f);
+    const int base = 50;
+    BodyId top;
+    for (int row = 0; row < base; ++row) {
+        const int n = base - row;
+        for (int i = 0; i < n; ++i) {
+            const float x = static_cast<float>(i) - 0.5f * static_cast<float>(n - 1);
+            top = test::makeBox(world, {x, 0.5f + static_cast<float>(row)});
+        }
+    }
+    float sway = 0.0f;
+    for (int i = 0; i < 5 * 60; ++i) {
+        world.step(kDt);
+        sway = std::max(sway, std::abs(world.position(top).x));
+    }
+    EXPECT_LT(sway, 0.04f);
+    EXPECT_LT(std::abs(world.position(top).x), 0.01f);
+}
+
 TEST(SolverBehaviour, SlidingBoxStopsAtTheAnalyticDistance) {
     // A box launched at v0 on flat ground with friction μ decelerates at μg and
     // stops after d = v0²/(2μg). Semi-implicit Euler shortens this by about
