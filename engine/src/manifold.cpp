@@ -202,6 +202,24 @@ void closestEdgeVertex(const Polygon& edges, const Polygon& verts, bool edgesAre
     }
 }
 
+// Smallest distance from a vertex of `verts` to face `edge` of `face` (its
+// segment, not its line): an upper bound of the distance between the cores.
+float faceDistanceBound(const Polygon& face, int edge, const Polygon& verts) {
+    const Vec2 n = face.normals[edge];
+    const Vec2 r1 = face.vertices[edge];
+    const Vec2 tangent = leftPerp(n);
+    const float length = dot(face.vertices[edge + 1 < face.count ? edge + 1 : 0] - r1, tangent);
+    float bound = FLT_MAX;
+    for (int j = 0; j < verts.count; ++j) {
+        const Vec2 d = verts.vertices[j] - r1;
+        const float u = dot(d, tangent);
+        const float over = u < 0.0f ? -u : (u > length ? u - length : 0.0f);
+        const float sn = dot(d, n);
+        bound = std::fmin(bound, over == 0.0f ? std::fabs(sn) : std::sqrt(sn * sn + over * over));
+    }
+    return bound;
+}
+
 // Polygon–polygon in A's shifted frame (localA, localB both expressed there).
 Manifold collidePolygonsLocal(const Polygon& polyA, const Polygon& polyB, float speculativeDistance) {
     Manifold m;
@@ -219,19 +237,6 @@ Manifold collidePolygonsLocal(const Polygon& polyA, const Polygon& polyB, float 
     // distance for a face contact (a vertex over a face) and an underestimate
     // when the closest features are two vertices.
     const bool disjoint = separation > kReferenceTolerance;
-    ClosestFeatures cf;
-    float dist = 0.0f;
-    if (disjoint) {
-        closestEdgeVertex(polyA, polyB, true, cf);
-        closestEdgeVertex(polyB, polyA, false, cf);
-        dist = std::sqrt(cf.distanceSquared);
-        if (dist > speculativeDistance + radius) return m;
-    }
-    auto vertexContact = [&]() {
-        Vec2 n = (1.0f / dist) * (cf.pB - cf.pA);
-        return singlePoint(cf.pA, cf.pB, n, dist, polyA.radius, polyB.radius, makeFeatureId(cf.vertexA, cf.vertexB));
-    };
-    if (disjoint && dist > separation + kReferenceTolerance) return vertexContact();
 
     // Reference face and incident edge (the incident edge's normal is the
     // most anti-parallel to the reference normal).
@@ -239,6 +244,39 @@ Manifold collidePolygonsLocal(const Polygon& polyA, const Polygon& polyB, float 
     const Polygon& inc = flip ? polyA : polyB;
     const int edgeRef = flip ? edgeB : edgeA;
     const Vec2 n = ref.normals[edgeRef];
+
+    ClosestFeatures cf;
+    bool haveClosest = false;
+    float dist = 0.0f;
+    if (disjoint) {
+        // Face contact test first: the distance of any vertex of one polygon
+        // to a face segment of the other is an upper bound of the core
+        // distance, SAT's separation a lower bound. When a vertex projects onto
+        // either polygon's best SAT face (a box on a box, boxes side by side)
+        // the two meet and the exact closest features are not needed: 2·4
+        // cheap tests for two boxes instead of the 2·4·4 edge–vertex pairs below.
+        const float upper = std::fmin(faceDistanceBound(polyA, edgeA, polyB), faceDistanceBound(polyB, edgeB, polyA));
+        // Within a millionth: equal for every use below (tolerances of 0.1 slop).
+        if (upper <= separation + 1.0e-6f * separation) {
+            dist = upper;
+        } else {
+            closestEdgeVertex(polyA, polyB, true, cf);
+            closestEdgeVertex(polyB, polyA, false, cf);
+            haveClosest = true;
+            dist = std::sqrt(cf.distanceSquared);
+        }
+        if (dist > speculativeDistance + radius) return m;
+    }
+    auto vertexContact = [&]() {
+        if (!haveClosest) {
+            closestEdgeVertex(polyA, polyB, true, cf);
+            closestEdgeVertex(polyB, polyA, false, cf);
+            dist = std::sqrt(cf.distanceSquared);
+        }
+        Vec2 nv = (1.0f / dist) * (cf.pB - cf.pA);
+        return singlePoint(cf.pA, cf.pB, nv, dist, polyA.radius, polyB.radius, makeFeatureId(cf.vertexA, cf.vertexB));
+    };
+    if (disjoint && dist > separation + kReferenceTolerance) return vertexContact();
     int edgeInc = 0;
     float minDot = FLT_MAX;
     for (int i = 0; i < inc.count; ++i) {

@@ -50,18 +50,77 @@ Softness makeSoft(float hertz, float zeta, float h) {
     return {omega / a1, a2 * a3, a3};
 }
 
-Vec2 rotatedAnchor(const BodyState& s, Vec2 r) { return rotate(s.dq, r); }
-
 }  // namespace
 
 // ---------------------------------------------------------------------------
 // Contacts
+//
+// Layout: one ContactConstraint per touching manifold in `w.constraints`,
+// streamed in order by every pass. A side that cannot move (static, sleeping,
+// or zero inverse mass) points at the zero state kept after the awake bodies
+// (`w.states.back()`), so the passes have no branch per side: with zero
+// inverse mass, impulses leave that state's zero velocity unchanged.
+//
+// Order: the constraints are graph-coloured each step (greedy, in slot order)
+// and solved colour by colour, as Box2D v3 does (constraint_graph.c). No two
+// constraints of a colour share a movable body, so a colour's updates do not
+// depend on each other and a Gauss-Seidel sweep over colours has no spatial
+// direction. Sweeping in creation order instead (left to right, bottom to top
+// in a pyramid) carries every sweep's friction error the same way: pyramid100's
+// top box then swayed 0.64 m during the initial settling against 0.09 m
+// coloured (docs/performance.md).
 
 namespace {
+
+constexpr int kColourCount = 24;  ///< colours tried before the overflow group
+
+bool movable(const BodyState& s) { return s.invMass != 0.0f || s.invInertia != 0.0f; }
+
+void colourContacts(WorldImpl& w) {
+    const std::size_t count = w.constraints.size();
+    const std::size_t bodyCount = w.stateBodies.size();
+    const std::size_t words = (bodyCount + 63) / 64;
+    w.colourBits.assign(words * kColourCount, 0u);
+    w.colourCounts.assign(kColourCount + 1, 0);
+    w.constraintColours.resize(count);
+    for (std::size_t i = 0; i < count; ++i) {
+        const ContactConstraint& cc = w.constraints[i];
+        const bool moveA = static_cast<std::size_t>(cc.a) < bodyCount && (cc.invMassA != 0.0f || cc.invIA != 0.0f);
+        const bool moveB = static_cast<std::size_t>(cc.b) < bodyCount && (cc.invMassB != 0.0f || cc.invIB != 0.0f);
+        const std::size_t wa = static_cast<std::size_t>(cc.a) / 64, wb = static_cast<std::size_t>(cc.b) / 64;
+        const std::uint64_t ma = moveA ? std::uint64_t{1} << (cc.a % 64) : 0u;
+        const std::uint64_t mb = moveB ? std::uint64_t{1} << (cc.b % 64) : 0u;
+        int colour = kColourCount;
+        for (int c = 0; c < kColourCount; ++c) {
+            std::uint64_t* bits = w.colourBits.data() + static_cast<std::size_t>(c) * words;
+            if ((moveA && (bits[wa] & ma)) || (moveB && (bits[wb] & mb))) continue;
+            if (moveA) bits[wa] |= ma;
+            if (moveB) bits[wb] |= mb;
+            colour = c;
+            break;
+        }
+        w.constraintColours[i] = static_cast<std::uint8_t>(colour);
+        ++w.colourCounts[static_cast<std::size_t>(colour)];
+    }
+    // Stable counting sort by colour (the overflow group last, in slot order).
+    int offset = 0;
+    for (int& n : w.colourCounts) {
+        int c = n;
+        n = offset;
+        offset += c;
+    }
+    w.constraintScratch.resize(count);
+    for (std::size_t i = 0; i < count; ++i) {
+        int& slot = w.colourCounts[w.constraintColours[i]];
+        w.constraintScratch[static_cast<std::size_t>(slot++)] = w.constraints[i];
+    }
+    w.constraints.swap(w.constraintScratch);
+}
 
 void prepareContacts(WorldImpl& w, float h, bool soft) {
     const WorldSettings& set = w.settings;
     w.constraints.clear();
+    const int zeroState = static_cast<int>(w.states.size()) - 1;
     const float rate = 1.0f / h;
     const float hertz = std::min(set.contactHertz, 0.25f * rate);
     const Softness dynamicSoft = makeSoft(hertz, set.contactDampingRatio, h);
@@ -69,21 +128,27 @@ void prepareContacts(WorldImpl& w, float h, bool soft) {
     const Softness staticSoft = makeSoft(2.0f * hertz, set.contactDampingRatio, h);
     const bool biasRestitution = set.impactModel == ImpactModel::velocity_bias && !soft;
     const float fullDt = soft ? h * static_cast<float>(set.substeps) : h;
+    const float warm = set.enableWarmStarting ? 1.0f : 0.0f;
 
     for (int c : w.activeContacts) {
         const Contact& ct = w.contacts[c];
         if (!ct.touching || ct.isSensor || ct.manifold.pointCount == 0) continue;
         const Body& bA = w.bodies[ct.bodyA];
         const Body& bB = w.bodies[ct.bodyB];
-        ContactConstraint cc;
+        // solverIndex is set for this step's awake bodies only (static and sleeping: none).
+        const int a = bA.solverIndex >= 0 ? bA.solverIndex : zeroState;
+        const int b = bB.solverIndex >= 0 ? bB.solverIndex : zeroState;
+        const BodyState& sA = w.states[static_cast<std::size_t>(a)];
+        const BodyState& sB = w.states[static_cast<std::size_t>(b)];
+        if (!movable(sA) && !movable(sB)) continue;
+        ContactConstraint& cc = w.constraints.emplace_back();
         cc.contact = c;
-        cc.a = bA.awake ? bA.solverIndex : kNullIndex;
-        cc.b = bB.awake ? bB.solverIndex : kNullIndex;
-        cc.invMassA = cc.a >= 0 ? w.states[static_cast<std::size_t>(cc.a)].invMass : 0.0f;
-        cc.invIA = cc.a >= 0 ? w.states[static_cast<std::size_t>(cc.a)].invInertia : 0.0f;
-        cc.invMassB = cc.b >= 0 ? w.states[static_cast<std::size_t>(cc.b)].invMass : 0.0f;
-        cc.invIB = cc.b >= 0 ? w.states[static_cast<std::size_t>(cc.b)].invInertia : 0.0f;
-        if (cc.invMassA == 0.0f && cc.invIA == 0.0f && cc.invMassB == 0.0f && cc.invIB == 0.0f) continue;
+        cc.a = a;
+        cc.b = b;
+        cc.invMassA = sA.invMass;
+        cc.invIA = sA.invInertia;
+        cc.invMassB = sB.invMass;
+        cc.invIB = sB.invInertia;
         cc.normal = ct.manifold.normal;
         cc.friction = ct.friction;
         cc.restitution = ct.restitution;
@@ -109,8 +174,8 @@ void prepareContacts(WorldImpl& w, float h, bool soft) {
             float rtA = cross(cp.rA, t), rtB = cross(cp.rB, t);
             float kt = cc.invMassA + cc.invMassB + cc.invIA * rtA * rtA + cc.invIB * rtB * rtB;
             cp.tangentMass = kt > 0.0f ? 1.0f / kt : 0.0f;
-            cp.normalImpulse = set.enableWarmStarting ? ct.normalImpulse[j] : 0.0f;
-            cp.tangentImpulse = set.enableWarmStarting ? ct.tangentImpulse[j] : 0.0f;
+            cp.normalImpulse = warm * ct.normalImpulse[j];
+            cp.tangentImpulse = warm * ct.tangentImpulse[j];
             cp.maxNormalImpulse = 0.0f;
             cp.biasImpulse = 0.0f;
             Vec2 dv = (vB + cross(wB, cp.rB)) - (vA + cross(wA, cp.rA));
@@ -123,24 +188,30 @@ void prepareContacts(WorldImpl& w, float h, bool soft) {
                 cp.restitutionBias = -cc.restitution * cp.relativeVelocity;
             }
         }
-        w.constraints.push_back(cc);
     }
+    colourContacts(w);
 }
 
 void warmStartContacts(WorldImpl& w) {
-    BodyState dA, dB;  // stand-ins for immovable bodies: zero velocity, zero inverse mass
+    BodyState* states = w.states.data();
     for (ContactConstraint& cc : w.constraints) {
-        BodyState& sA = cc.a >= 0 ? w.states[static_cast<std::size_t>(cc.a)] : (dA = BodyState{});
-        BodyState& sB = cc.b >= 0 ? w.states[static_cast<std::size_t>(cc.b)] : (dB = BodyState{});
+        BodyState& sA = states[cc.a];
+        BodyState& sB = states[cc.b];
+        Vec2 vA = sA.v, vB = sB.v;
+        float wA = sA.w, wB = sB.w;
         const Vec2 n = cc.normal, t = rightPerp(n);
         for (int j = 0; j < cc.pointCount; ++j) {
             const ContactPointConstraint& cp = cc.points[j];
             Vec2 P = cp.normalImpulse * n + cp.tangentImpulse * t;
-            sA.v = mulSub(sA.v, cc.invMassA, P);
-            sA.w -= cc.invIA * cross(cp.rA, P);
-            sB.v = mulAdd(sB.v, cc.invMassB, P);
-            sB.w += cc.invIB * cross(cp.rB, P);
+            vA = mulSub(vA, cc.invMassA, P);
+            wA -= cc.invIA * cross(cp.rA, P);
+            vB = mulAdd(vB, cc.invMassB, P);
+            wB += cc.invIB * cross(cp.rB, P);
         }
+        sA.v = vA;
+        sA.w = wA;
+        sB.v = vB;
+        sB.w = wB;
     }
 }
 
@@ -148,7 +219,9 @@ void warmStartContacts(WorldImpl& w) {
 ///  soft (useBias or relax), or classic with/without the Baumgarte push.
 enum class Target { soft_bias, soft_relax, baumgarte, no_push, soft_relax_last };
 
-void solveContacts(WorldImpl& w, float h, Target target) {
+/// The sweep, compiled once per target so the per-point branches on it fold away.
+template <Target target>
+void solveContactsFor(WorldImpl& w, float h) {
     const WorldSettings& set = w.settings;
     const float invH = 1.0f / h;
     const float slop = set.penetrationSlop;
@@ -160,12 +233,13 @@ void solveContacts(WorldImpl& w, float h, Target target) {
     // solver would absorb it inelastically before the law ever sees it.
     const bool leaveImpacts = target == Target::soft_relax_last && set.impactModel == ImpactModel::closed_form;
     const float impactSpeed = set.impactThreshold;
-    BodyState dA, dB;
+    BodyState* states = w.states.data();
     for (ContactConstraint& cc : w.constraints) {
-        BodyState& sA = cc.a >= 0 ? w.states[static_cast<std::size_t>(cc.a)] : (dA = BodyState{});
-        BodyState& sB = cc.b >= 0 ? w.states[static_cast<std::size_t>(cc.b)] : (dB = BodyState{});
+        BodyState& sA = states[cc.a];
+        BodyState& sB = states[cc.b];
         Vec2 vA = sA.v, vB = sB.v;
         float wA = sA.w, wB = sB.w;
+        const Rot qA = sA.dq, qB = sB.dq;
         const float mA = cc.invMassA, iA = cc.invIA, mB = cc.invMassB, iB = cc.invIB;
         const Vec2 n = cc.normal;
         const Vec2 dp = sB.dp - sA.dp;
@@ -174,7 +248,7 @@ void solveContacts(WorldImpl& w, float h, Target target) {
             ContactPointConstraint& cp = cc.points[j];
             // Current separation from the bodies' motion since the step began
             // (anchors fixed in the bodies, rotated by their delta rotation).
-            Vec2 d = dp + (rotatedAnchor(sB, cp.rB) - rotatedAnchor(sA, cp.rA));
+            Vec2 d = dp + (rotate(qB, cp.rB) - rotate(qA, cp.rA));
             float s = dot(d, n) + cp.adjustedSeparation;
 
             Vec2 dv = (vB + cross(wB, cp.rB)) - (vA + cross(wA, cp.rA));
@@ -185,16 +259,18 @@ void solveContacts(WorldImpl& w, float h, Target target) {
             if (s > 0.0f) {
                 // Speculative: allow exactly the approach that closes the gap this (sub)step.
                 bias = s * invH;
-            } else if (target == Target::soft_bias) {
+            } else if constexpr (target == Target::soft_bias) {
                 bias = std::max(cc.biasRate * s, -maxPush);
                 massScale = cc.massScale;
                 impulseScale = cc.impulseScale;
-            } else if (target == Target::baumgarte) {
+            } else if constexpr (target == Target::baumgarte) {
                 // Seed 001 eq. 5.3.1 with slop: push β·d/Δt, capped.
                 bias = std::max(beta * invH * std::min(s + slop, 0.0f), -maxPush);
             }
-            // Seed 001 §8.2: restitution target added to the push (classic modes).
-            if (cp.restitutionBias > 0.0f) bias = std::min(bias, -cp.restitutionBias);
+            if constexpr (target == Target::baumgarte || target == Target::no_push) {
+                // Seed 001 §8.2: restitution target added to the push (classic modes).
+                if (cp.restitutionBias > 0.0f) bias = std::min(bias, -cp.restitutionBias);
+            }
 
             float impulse = -cp.normalMass * massScale * (vn + bias) - impulseScale * cp.normalImpulse;
             float newImpulse = std::max(cp.normalImpulse + impulse, 0.0f);
@@ -233,19 +309,26 @@ void solveContacts(WorldImpl& w, float h, Target target) {
     }
 }
 
-/// Split mode (seed 001 §8.1): solve the push alone on pseudo-velocities.
+void solveContacts(WorldImpl& w, float h, Target target) {
+    switch (target) {
+        case Target::soft_bias: solveContactsFor<Target::soft_bias>(w, h); break;
+        case Target::soft_relax: solveContactsFor<Target::soft_relax>(w, h); break;
+        case Target::soft_relax_last: solveContactsFor<Target::soft_relax_last>(w, h); break;
+        case Target::baumgarte: solveContactsFor<Target::baumgarte>(w, h); break;
+        case Target::no_push: solveContactsFor<Target::no_push>(w, h); break;
+    }
+}
+
+/// Split mode (seed 001 §8.1): solve the push alone on pseudo-velocities
+/// (`biasV`/`biasW`, with the zero entry last like the states).
 void solveContactPush(WorldImpl& w, float h) {
     const WorldSettings& set = w.settings;
     const float invH = 1.0f / h;
-    Vec2 zeroV{};
-    float zeroW = 0.0f;
     for (ContactConstraint& cc : w.constraints) {
-        Vec2& vA = cc.a >= 0 ? w.biasV[static_cast<std::size_t>(cc.a)] : (zeroV = {});
-        float& wA = cc.a >= 0 ? w.biasW[static_cast<std::size_t>(cc.a)] : (zeroW = 0.0f);
-        Vec2 zeroV2{};
-        float zeroW2 = 0.0f;
-        Vec2& vB = cc.b >= 0 ? w.biasV[static_cast<std::size_t>(cc.b)] : zeroV2;
-        float& wB = cc.b >= 0 ? w.biasW[static_cast<std::size_t>(cc.b)] : zeroW2;
+        Vec2& vA = w.biasV[static_cast<std::size_t>(cc.a)];
+        float& wA = w.biasW[static_cast<std::size_t>(cc.a)];
+        Vec2& vB = w.biasV[static_cast<std::size_t>(cc.b)];
+        float& wB = w.biasW[static_cast<std::size_t>(cc.b)];
         const Vec2 n = cc.normal;
         for (int j = 0; j < cc.pointCount; ++j) {
             ContactPointConstraint& cp = cc.points[j];
@@ -271,11 +354,11 @@ void solveContactPush(WorldImpl& w, float h) {
 /// separate at e times its approach speed.
 void applyRestitution(WorldImpl& w) {
     const float threshold = w.settings.restitutionThreshold;
-    BodyState dA, dB;
+    BodyState* states = w.states.data();
     for (ContactConstraint& cc : w.constraints) {
         if (cc.restitution == 0.0f) continue;
-        BodyState& sA = cc.a >= 0 ? w.states[static_cast<std::size_t>(cc.a)] : (dA = BodyState{});
-        BodyState& sB = cc.b >= 0 ? w.states[static_cast<std::size_t>(cc.b)] : (dB = BodyState{});
+        BodyState& sA = states[cc.a];
+        BodyState& sB = states[cc.b];
         const Vec2 n = cc.normal;
         for (int j = 0; j < cc.pointCount; ++j) {
             ContactPointConstraint& cp = cc.points[j];
@@ -374,6 +457,15 @@ void warmStartJoints(WorldImpl& w) {
     }
 }
 
+/// Joint sweeps in each substep's solve stage (soft_step). A chain carrying a
+/// heavy body (heavy_chain: 100 kg on 1 kg links) is a stiff, badly
+/// conditioned system: one Gauss-Seidel sweep per substep left most of each
+/// link's share of the load unresolved, so the soft rows stretched far beyond
+/// their spring compliance and, at jointHertz 60, grew unstable. A second sweep
+/// costs little (joints are few next to contacts) and holds the chain: total
+/// stretch after 5 s 3.09 m → 1.01 m (docs/performance.md).
+constexpr int kJointSolvePasses = 2;
+
 bool isRigid(const DistanceJoint& jt) {
     return !(jt.def.enableSpring && (!jt.def.enableLimit || jt.def.minLength < jt.def.maxLength));
 }
@@ -381,9 +473,12 @@ bool isRigid(const DistanceJoint& jt) {
 void solveJoints(WorldImpl& w, float h, Target target) {
     const WorldSettings& set = w.settings;
     const float invH = 1.0f / h;
-    // Joint stiffness capped at 1/8 of the substep rate (Solver2D's TGS_Soft
-    // choice): at 1/4, a 100:1 mass ratio chain (heavy_chain) diverged.
-    const Softness jointSoft = makeSoft(std::min(set.jointHertz, 0.125f * invH), set.jointDampingRatio, h);
+    // Joint stiffness capped at 1/4 of the substep rate, so jointHertz 60 holds
+    // at 4 substeps as in Box2D v3 (twice its contact hertz). This needs the two
+    // joint passes of the solve stage (see kJointSolvePasses): with one pass,
+    // a 100:1 chain (heavy_chain) diverged at this stiffness, and at the former
+    // cap of 1/8 it stretched by 3.1 m.
+    const Softness jointSoft = makeSoft(std::min(set.jointHertz, 0.25f * invH), set.jointDampingRatio, h);
     BodyState dA, dB;
     for (int j : w.activeJoints) {
         DistanceJoint& jt = w.joints[j];
@@ -503,7 +598,7 @@ namespace {
 void integrateVelocities(WorldImpl& w, float h) {
     const Vec2 g = w.settings.gravity;
     const float maxSpeed = w.settings.maxLinearSpeed;
-    for (std::size_t i = 0; i < w.states.size(); ++i) {
+    for (std::size_t i = 0; i < w.stateBodies.size(); ++i) {
         BodyState& s = w.states[i];
         const Body& body = w.bodies[w.stateBodies[i]];
         if (body.type != BodyType::dynamic_body) continue;
@@ -521,7 +616,8 @@ void integrateVelocities(WorldImpl& w, float h) {
 }
 
 void integratePositions(WorldImpl& w, float h) {
-    for (BodyState& s : w.states) {
+    for (std::size_t i = 0; i < w.stateBodies.size(); ++i) {
+        BodyState& s = w.states[i];
         // Eq. 3.2.3-3.2.4 with the new velocities.
         s.dp = mulAdd(s.dp, h, s.v);
         s.dq = integrateRotation(s.dq, h * s.w);
@@ -534,7 +630,8 @@ void integratePositions(WorldImpl& w, float h) {
 
 void WorldImpl::solve(float dt) {
     const std::size_t n = awakeBodies.size();
-    states.resize(n);
+    states.resize(n + 1);
+    states[n] = BodyState{};  // the zero state for immovable sides of contacts
     stateBodies.resize(n);
     for (std::size_t i = 0; i < n; ++i) {
         int b = awakeBodies[i];
@@ -562,7 +659,7 @@ void WorldImpl::solve(float dt) {
             integrateVelocities(*this, h);
             warmStartContacts(*this);
             warmStartJoints(*this);
-            solveJoints(*this, h, Target::soft_bias);
+            for (int pass = 0; pass < kJointSolvePasses; ++pass) solveJoints(*this, h, Target::soft_bias);
             solveContacts(*this, h, Target::soft_bias);
             integratePositions(*this, h);
             solveJoints(*this, h, Target::soft_relax);
@@ -580,8 +677,8 @@ void WorldImpl::solve(float dt) {
             solveContacts(*this, dt, target);
         }
         if (!baumgarte) {
-            biasV.assign(n, Vec2{});
-            biasW.assign(n, 0.0f);
+            biasV.assign(n + 1, Vec2{});
+            biasW.assign(n + 1, 0.0f);
             for (int it = 0; it < settings.positionIterations; ++it) {
                 solveJointPush(*this, dt);
                 solveContactPush(*this, dt);

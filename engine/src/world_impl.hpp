@@ -158,7 +158,7 @@ struct ContactPointConstraint {
 
 struct ContactConstraint {
     int contact = kNullIndex;
-    int a = kNullIndex, b = kNullIndex;  ///< solver body indices; kNullIndex = immovable
+    int a = kNullIndex, b = kNullIndex;  ///< state indices; an immovable side uses the zero state
     Vec2 normal{};
     float friction = 0, restitution = 0;
     float invMassA = 0, invIA = 0, invMassB = 0, invIB = 0;
@@ -194,11 +194,15 @@ public:
     // Per-step scratch, kept to avoid allocation in steady state.
     std::vector<int> activeContacts;
     std::vector<int> scratch;
-    std::vector<BodyState> states;
-    std::vector<int> stateBodies;  ///< body index of each state
+    std::vector<BodyState> states;  ///< awake bodies, then one zero state for immovable sides
+    std::vector<int> stateBodies;   ///< body index of each state (awake bodies only)
     std::vector<Vec2> biasV;       ///< split mode pseudo-velocities
     std::vector<float> biasW;
-    std::vector<ContactConstraint> constraints;
+    std::vector<ContactConstraint> constraints;        ///< in colour order (solver.cpp)
+    std::vector<ContactConstraint> constraintScratch;  ///< the colour sort's other buffer
+    std::vector<std::uint64_t> colourBits;             ///< per colour, one bit per state
+    std::vector<int> colourCounts;
+    std::vector<std::uint8_t> constraintColours;
     std::vector<int> activeJoints;
     std::vector<int> unionParent;
     std::vector<std::uint32_t> impactChanged;
