@@ -158,7 +158,9 @@ void WorldImpl::updateMass(int b) {
         weighted += md.mass * md.center;
         inertiaAtOrigin += md.rotationalInertia + md.mass * dot(md.center, md.center);
     }
-    if (body.mass > 0.0f) {
+    // A positive mass too small to invert (denormal densities) counts as no
+    // mass: 1/m would be infinite and the centre of mass 0·∞ = NaN.
+    if (body.mass > 0.0f && isFinite(1.0f / body.mass)) {
         body.invMass = 1.0f / body.mass;
         body.localCenter = body.invMass * weighted;
         body.inertia = inertiaAtOrigin - body.mass * dot(body.localCenter, body.localCenter);
@@ -166,8 +168,9 @@ void WorldImpl::updateMass(int b) {
         // A dynamic body without mass still needs one to move: 1 kg, no rotation.
         body.mass = 1.0f;
         body.invMass = 1.0f;
+        body.inertia = 0.0f;
     }
-    if (body.inertia > 0.0f && !body.fixedRotation) {
+    if (body.inertia > 0.0f && isFinite(1.0f / body.inertia) && !body.fixedRotation) {
         body.invInertia = 1.0f / body.inertia;
     } else {
         body.invInertia = 0.0f;

@@ -172,6 +172,26 @@ TEST(ValidationWorld, MassAndDensity) {
     EXPECT_EQ(w.rotationalInertia(massless), 0.0f);
 }
 
+// Found by fuzz_world: a shape whose density is the smallest positive float
+// gave its body a positive mass with an infinite inverse, a NaN centre of
+// mass, and NaN velocities once a second shape was added.
+TEST(ValidationWorld, DenormalDensityCountsAsNoMass) {
+    World world;
+    BodyId b = world.createBody({.type = BodyType::dynamic_body, .position = {0.0f, 10.0f}});
+    world.createCircleShape(b, {.density = std::numeric_limits<float>::denorm_min()}, {{0.3f, 0.0f}, 0.5f});
+    EXPECT_EQ(world.mass(b), 1.0f);  // the documented massless fallback
+    EXPECT_TRUE(isFinite(world.worldCenterOfMass(b)));
+    world.createCircleShape(b, {.density = 1.0f}, {{0.0f, 0.0f}, 0.5f});
+    world.step(1.0f / 60.0f);
+    EXPECT_TRUE(isFinite(world.position(b)));
+    EXPECT_TRUE(isFinite(world.linearVelocity(b)));
+    ShapeId s = world.bodyShapes(b)[1];
+    world.setDensity(s, std::numeric_limits<float>::denorm_min());
+    world.step(1.0f / 60.0f);
+    EXPECT_TRUE(isFinite(world.position(b)));
+    EXPECT_EQ(world.mass(b), 1.0f);
+}
+
 TEST(ValidationWorld, DegenerateGeometry) {
     Scene s;
     World& w = s.world;
