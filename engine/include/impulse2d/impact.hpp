@@ -56,7 +56,11 @@ struct ImpactResult {
 
 /// Resolve one impact. Throws i2d::Error on invalid input: non-finite values,
 /// negative inverse mass or inertia, both bodies immovable, a normal whose
-/// length differs from 1 by more than 1e-6, e outside [0, 1], μ < 0.
+/// length differs from 1 by more than 1e-6, e outside [0, 1], μ < 0, or a
+/// singular collision matrix K (only possible when both inverse masses are 0:
+/// bodies that can only spin and cannot move the contact point along every
+/// direction). An immovable body's velocity is that of a kinematic pusher:
+/// the law conserves or loses energy in the frame of an immovable body at rest.
 ImpactResult resolveImpact(const ImpactInput& input);
 
 /// Stable lower-case name of a case, as printed by `testbed impact`.
