@@ -7,6 +7,7 @@
 #include <cmath>
 #include <cstddef>
 #include <cstdint>
+#include <cstdio>
 #include <vector>
 
 #include "byte_reader.hpp"
@@ -45,7 +46,15 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
         Vec2 a = hull.points[i];
         Vec2 b = hull.points[(i + 1) % hull.count];
         Vec2 e = normalize(b - a);
-        for (Vec2 p : points) I2D_FUZZ_CHECK(cross(e, p - a) >= -tol);
+        for (Vec2 p : points) {
+            if (cross(e, p - a) < -tol) {
+                std::fprintf(stderr, "point (%.9g, %.9g) is %.9g outside edge (%.9g, %.9g)-(%.9g, %.9g); tol %.9g\n", p.x, p.y,
+                             -cross(e, p - a), a.x, a.y, b.x, b.y, tol);
+                for (Vec2 q : points) std::fprintf(stderr, "  input (%.9g, %.9g)\n", q.x, q.y);
+                for (int k = 0; k < hull.count; ++k) std::fprintf(stderr, "  hull (%.9g, %.9g)\n", hull.points[k].x, hull.points[k].y);
+            }
+            I2D_FUZZ_CHECK(cross(e, p - a) >= -tol);
+        }
     }
     auto poly = makePolygon(hull);
     I2D_FUZZ_CHECK(poly.has_value());

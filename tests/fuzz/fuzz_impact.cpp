@@ -39,9 +39,11 @@ ImpactBody body(fuzz::ByteReader& in, bool raw) {
     b.r = {in.real(-10.0, 10.0), in.real(-10.0, 10.0)};
     b.v = {in.real(-100.0, 100.0), in.real(-100.0, 100.0)};
     b.w = in.real(-100.0, 100.0);
-    // An immovable body is at rest here: a moving one (kinematic) may
-    // rightly give energy to the other, and the energy check would not hold.
-    if (b.invMass == 0.0 && b.invInertia == 0.0) b.v = {}, b.w = 0.0;
+    // Infinite mass does not move and infinite inertia does not turn here:
+    // such a body moving anyway (a kinematic pusher) holds unbounded energy
+    // and may rightly give some to the other, which the energy check forbids.
+    if (b.invMass == 0.0) b.v = {};
+    if (b.invInertia == 0.0) b.w = 0.0;
     return b;
 }
 
