@@ -5,6 +5,7 @@
 // amount after warm-up.
 //
 // Usage: soak [--seconds S (3600)] [--sleep on|off] [--assets DIR] SCENE...
+#include <algorithm>
 #include <cmath>
 #include <cstdio>
 #include <cstdlib>
@@ -67,17 +68,17 @@ int main(int argc, char** argv) {
         if (sleepOff) desc.settings.enableSleep = false;
         tb::Scene scene = tb::buildScene(desc);
         const long steps = std::lround(seconds / desc.dt);
-        const long warmup = steps / 10;
+        const long warmup = std::max(1L, steps / 10);
         long warmKiB = 0;
         long peakKiB = 0;
         long startKiB = residentKiB();
         bool finite = true;
         for (long s = 1; s <= steps && finite; ++s) {
             scene.world->step(desc.dt);
-            if (s % 600 == 0 || s == steps) {
+            if (s % 600 == 0 || s == steps || s == warmup) {
                 finite = finiteWorld(*scene.world);
                 long rss = residentKiB();
-                if (s <= warmup) warmKiB = rss;
+                if (s == warmup) warmKiB = rss;
                 peakKiB = std::max(peakKiB, rss);
             }
             if (s % (steps / 10 > 0 ? steps / 10 : 1) == 0)
