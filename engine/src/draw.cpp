@@ -15,6 +15,16 @@ Color bodyColor(const detail::Body& b) {
 }  // namespace
 
 void World::draw(DebugDraw& dd) const {
+    // A drawer that calls back into the world to create or destroy things
+    // would edit the arrays iterated here: such calls are refused.
+    bool& locked = impl_->locked;
+    const bool wasLocked = locked;
+    locked = true;
+    struct Restore {
+        bool& flag;
+        bool value;
+        ~Restore() { flag = value; }
+    } restore{locked, wasLocked};
     const auto& w = *impl_;
     if (dd.drawShapes) {
         for (int s = 0; s < w.shapes.capacity(); ++s) {

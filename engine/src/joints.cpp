@@ -20,8 +20,8 @@ JointId World::createDistanceJoint(const DistanceJointDef& def) {
     detail::requireBounded(def.localAnchorB, "localAnchorB");
     detail::requireBounded(def.length, "joint length");
     if (!(def.length > 0.0f)) fail("joint length must be > 0");
-    detail::requireNonNegative(def.hertz, "joint hertz");
-    detail::requireNonNegative(def.dampingRatio, "joint damping ratio");
+    detail::requireInRange(def.hertz, 0.0f, detail::kMaxRate, "joint hertz");
+    detail::requireInRange(def.dampingRatio, 0.0f, detail::kMaxRate, "joint damping ratio");
     detail::requireNonNegative(def.minLength, "joint minLength");
     if (!(def.maxLength >= 0.0f) || std::isnan(def.maxLength)) fail("joint maxLength must be >= 0");
     if (def.enableLimit && def.minLength > def.maxLength) fail("joint minLength must be <= maxLength");
@@ -68,9 +68,9 @@ void World::destroyJoint(JointId id) {
 }
 
 bool World::isValid(JointId id) const {
-    if (id.isNull()) return false;
+    if (id.isNull() || id.index1 > static_cast<std::uint32_t>(impl_->joints.capacity())) return false;
     int i = static_cast<int>(id.index1) - 1;
-    return i < impl_->joints.capacity() && impl_->joints[i].alive && impl_->joints[i].generation == id.generation;
+    return impl_->joints[i].alive && impl_->joints[i].generation == id.generation;
 }
 
 BodyId World::jointBodyA(JointId id) const { return impl_->bodyHandle(impl_->joints[impl_->jointIndex(id)].bodyA); }

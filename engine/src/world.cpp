@@ -12,6 +12,7 @@ namespace i2d {
 using detail::fail;
 using detail::requireBounded;
 using detail::requireFinite;
+using detail::requireInRange;
 using detail::requireNonNegative;
 using detail::requireUnitInterval;
 
@@ -25,10 +26,10 @@ void validateSettings(const WorldSettings& s) {
     requireUnitInterval(s.pushFactor, "pushFactor");
     requireNonNegative(s.penetrationSlop, "penetrationSlop");
     requireNonNegative(s.maxPushSpeed, "maxPushSpeed");
-    requireNonNegative(s.contactHertz, "contactHertz");
-    requireNonNegative(s.contactDampingRatio, "contactDampingRatio");
-    requireNonNegative(s.jointHertz, "jointHertz");
-    requireNonNegative(s.jointDampingRatio, "jointDampingRatio");
+    requireInRange(s.contactHertz, 0.0f, detail::kMaxRate, "contactHertz");
+    requireInRange(s.contactDampingRatio, 0.0f, detail::kMaxRate, "contactDampingRatio");
+    requireInRange(s.jointHertz, 0.0f, detail::kMaxRate, "jointHertz");
+    requireInRange(s.jointDampingRatio, 0.0f, detail::kMaxRate, "jointDampingRatio");
     requireNonNegative(s.restitutionThreshold, "restitutionThreshold");
     requireNonNegative(s.impactThreshold, "impactThreshold");
     requireNonNegative(s.speculativeDistance, "speculativeDistance");
@@ -36,7 +37,7 @@ void validateSettings(const WorldSettings& s) {
     requireNonNegative(s.timeToSleep, "timeToSleep");
     requireNonNegative(s.linearSleepTolerance, "linearSleepTolerance");
     requireNonNegative(s.angularSleepTolerance, "angularSleepTolerance");
-    requireFinite(s.maxLinearSpeed, "maxLinearSpeed");
+    requireBounded(s.maxLinearSpeed, "maxLinearSpeed");
     if (s.maxLinearSpeed <= 0.0f) fail("maxLinearSpeed must be > 0");
     if (s.penetrationSlop > 1.0f || s.speculativeDistance > 10.0f || s.aabbMargin > 10.0f)
         fail("penetrationSlop, speculativeDistance or aabbMargin is unreasonably large");
@@ -45,9 +46,8 @@ void validateSettings(const WorldSettings& s) {
 }
 
 void validateShapeDef(const ShapeDef& d) {
-    requireNonNegative(d.density, "shape density");
-    if (d.density > 1.0e9f) fail("shape density is out of range (> 1e9)");
-    requireNonNegative(d.friction, "shape friction");
+    requireInRange(d.density, 0.0f, detail::kMaxDensity, "shape density");
+    requireInRange(d.friction, 0.0f, detail::kMaxFriction, "shape friction");
     requireUnitInterval(d.restitution, "shape restitution");
 }
 
@@ -59,29 +59,35 @@ void validateShapeDef(const ShapeDef& d) {
 namespace detail {
 
 void WorldImpl::checkUnlocked() const {
-    if (locked) fail("the world cannot be changed while it is stepping");
+    if (locked) fail("the world cannot be changed while it is stepping or drawing");
 }
 
 int WorldImpl::bodyIndex(BodyId id) const {
     if (id.isNull()) fail("null body handle");
+    // Compared unsigned: a forged index beyond INT_MAX must not wrap negative.
+    if (id.index1 > static_cast<std::uint32_t>(bodies.capacity())) fail("stale or invalid body handle");
     int i = static_cast<int>(id.index1) - 1;
-    if (i >= bodies.capacity() || !bodies[i].alive || bodies[i].generation != id.generation)
+    if (!bodies[i].alive || bodies[i].generation != id.generation)
         fail("stale or invalid body handle");
     return i;
 }
 
 int WorldImpl::shapeIndex(ShapeId id) const {
     if (id.isNull()) fail("null shape handle");
+    // Compared unsigned: a forged index beyond INT_MAX must not wrap negative.
+    if (id.index1 > static_cast<std::uint32_t>(shapes.capacity())) fail("stale or invalid shape handle");
     int i = static_cast<int>(id.index1) - 1;
-    if (i >= shapes.capacity() || !shapes[i].alive || shapes[i].generation != id.generation)
+    if (!shapes[i].alive || shapes[i].generation != id.generation)
         fail("stale or invalid shape handle");
     return i;
 }
 
 int WorldImpl::jointIndex(JointId id) const {
     if (id.isNull()) fail("null joint handle");
+    // Compared unsigned: a forged index beyond INT_MAX must not wrap negative.
+    if (id.index1 > static_cast<std::uint32_t>(joints.capacity())) fail("stale or invalid joint handle");
     int i = static_cast<int>(id.index1) - 1;
-    if (i >= joints.capacity() || !joints[i].alive || joints[i].generation != id.generation)
+    if (!joints[i].alive || joints[i].generation != id.generation)
         fail("stale or invalid joint handle");
     return i;
 }
@@ -152,7 +158,9 @@ void WorldImpl::updateMass(int b) {
         weighted += md.mass * md.center;
         inertiaAtOrigin += md.rotationalInertia + md.mass * dot(md.center, md.center);
     }
-    if (body.mass > 0.0f) {
+    // A positive mass too small to invert (denormal densities) counts as no
+    // mass: 1/m would be infinite and the centre of mass 0·∞ = NaN.
+    if (body.mass > 0.0f && isFinite(1.0f / body.mass)) {
         body.invMass = 1.0f / body.mass;
         body.localCenter = body.invMass * weighted;
         body.inertia = inertiaAtOrigin - body.mass * dot(body.localCenter, body.localCenter);
@@ -160,8 +168,9 @@ void WorldImpl::updateMass(int b) {
         // A dynamic body without mass still needs one to move: 1 kg, no rotation.
         body.mass = 1.0f;
         body.invMass = 1.0f;
+        body.inertia = 0.0f;
     }
-    if (body.inertia > 0.0f && !body.fixedRotation) {
+    if (body.inertia > 0.0f && isFinite(1.0f / body.inertia) && !body.fixedRotation) {
         body.invInertia = 1.0f / body.inertia;
     } else {
         body.invInertia = 0.0f;
@@ -344,9 +353,9 @@ void World::destroyBody(BodyId id) {
 }
 
 bool World::isValid(BodyId id) const {
-    if (id.isNull()) return false;
+    if (id.isNull() || id.index1 > static_cast<std::uint32_t>(impl_->bodies.capacity())) return false;
     int i = static_cast<int>(id.index1) - 1;
-    return i < impl_->bodies.capacity() && impl_->bodies[i].alive && impl_->bodies[i].generation == id.generation;
+    return impl_->bodies[i].alive && impl_->bodies[i].generation == id.generation;
 }
 
 BodyType World::bodyType(BodyId id) const { return impl_->bodies[impl_->bodyIndex(id)].type; }
@@ -523,7 +532,10 @@ void World::setMassData(BodyId id, const MassData& md) {
     detail::Body& body = impl_->bodies[b];
     if (body.type != BodyType::dynamic_body) fail("only dynamic bodies have mass");
     if (!(md.mass > 0.0f)) fail("mass must be > 0");
+    if (!isFinite(1.0f / md.mass)) fail("mass is too small (its inverse is not finite)");
     if (md.rotationalInertia < 0.0f) fail("rotational inertia must be >= 0");
+    if (md.rotationalInertia > 0.0f && !isFinite(1.0f / md.rotationalInertia))
+        fail("rotational inertia is too small (its inverse is not finite)");
     body.mass = md.mass;
     body.invMass = 1.0f / md.mass;
     body.inertia = md.rotationalInertia;
@@ -632,7 +644,7 @@ ShapeId addShape(detail::WorldImpl& w, BodyId bodyId, const ShapeDef& def, Shape
 ShapeId World::createCircleShape(BodyId body, const ShapeDef& def, const Circle& c) {
     requireBounded(c.center, "circle centre");
     requireFinite(c.radius, "circle radius");
-    if (!(c.radius > 0.0f) || c.radius > 1.0e5f) fail("circle radius must be in (0, 1e5]");
+    if (!(c.radius > 0.0f) || c.radius > detail::kMaxRadius) fail("circle radius must be in (0, 1e5]");
     return addShape(*impl_, body, def, ShapeType::circle, [&](detail::Shape& s) { s.circle = c; });
 }
 
@@ -640,7 +652,7 @@ ShapeId World::createCapsuleShape(BodyId body, const ShapeDef& def, const Capsul
     requireBounded(c.center1, "capsule centre1");
     requireBounded(c.center2, "capsule centre2");
     requireFinite(c.radius, "capsule radius");
-    if (!(c.radius > 0.0f) || c.radius > 1.0e5f) fail("capsule radius must be in (0, 1e5]");
+    if (!(c.radius > 0.0f) || c.radius > detail::kMaxRadius) fail("capsule radius must be in (0, 1e5]");
     if (distanceSquared(c.center1, c.center2) <= kLinearSlop * kLinearSlop)
         fail("capsule centres must be further apart than the linear slop (use a circle)");
     return addShape(*impl_, body, def, ShapeType::capsule, [&](detail::Shape& s) { s.capsule = c; });
@@ -648,11 +660,21 @@ ShapeId World::createCapsuleShape(BodyId body, const ShapeDef& def, const Capsul
 
 ShapeId World::createPolygonShape(BodyId body, const ShapeDef& def, const Polygon& p) {
     if (p.count < 3 || p.count > kMaxPolygonVertices) fail("polygon must have 3 to 8 vertices (build it with makePolygon)");
-    requireNonNegative(p.radius, "polygon radius");
+    requireInRange(p.radius, 0.0f, detail::kMaxRadius, "polygon radius");
     for (int i = 0; i < p.count; ++i) {
         requireBounded(p.vertices[i], "polygon vertex");
         requireFinite(p.normals[i], "polygon normal");
         if (std::abs(lengthSquared(p.normals[i]) - 1.0f) > 1.0e-3f) fail("polygon normals must be unit length (build it with makePolygon)");
+    }
+    requireBounded(p.centroid, "polygon centroid");
+    // Each edge at least kMinPolygonFeature long, with its outward normal:
+    // the clockwise perpendicular of the edge.
+    for (int i = 0; i < p.count; ++i) {
+        Vec2 e = p.vertices[i + 1 < p.count ? i + 1 : 0] - p.vertices[i];
+        float len = length(e);
+        if (!(len >= detail::kMinPolygonFeature)) fail("polygon edge shorter than 0.0005 m");
+        if (dot(p.normals[i], rightPerp(e)) < (1.0f - 1.0e-3f) * len)
+            fail("polygon normal does not belong to its edge (build it with makePolygon)");
     }
     // Convex and counter-clockwise: every vertex lies behind every edge.
     for (int i = 0; i < p.count; ++i) {
@@ -661,6 +683,15 @@ ShapeId World::createPolygonShape(BodyId body, const ShapeDef& def, const Polygo
                 fail("polygon is not convex and counter-clockwise (build it with makePolygon)");
         }
     }
+    // Not collinear: some vertex lies at least kMinPolygonFeature behind each edge.
+    for (int i = 0; i < p.count; ++i) {
+        float deepest = 0.0f;
+        for (int j = 0; j < p.count; ++j) deepest = std::min(deepest, dot(p.normals[i], p.vertices[j] - p.vertices[i]));
+        if (deepest > -detail::kMinPolygonFeature) fail("polygon is degenerate: thinner than 0.0005 m (collinear vertices)");
+    }
+    Polygon core = p;
+    core.radius = 0.0f;
+    if (!containsPoint(core, p.centroid)) fail("polygon centroid lies outside the polygon");
     return addShape(*impl_, body, def, ShapeType::polygon, [&](detail::Shape& s) { s.polygon = p; });
 }
 
@@ -683,9 +714,9 @@ void World::destroyShape(ShapeId id, bool updateBodyMass) {
 }
 
 bool World::isValid(ShapeId id) const {
-    if (id.isNull()) return false;
+    if (id.isNull() || id.index1 > static_cast<std::uint32_t>(impl_->shapes.capacity())) return false;
     int i = static_cast<int>(id.index1) - 1;
-    return i < impl_->shapes.capacity() && impl_->shapes[i].alive && impl_->shapes[i].generation == id.generation;
+    return impl_->shapes[i].alive && impl_->shapes[i].generation == id.generation;
 }
 
 ShapeType World::shapeType(ShapeId id) const { return impl_->shapes[impl_->shapeIndex(id)].type; }
@@ -708,14 +739,14 @@ float World::density(ShapeId id) const { return impl_->shapes[impl_->shapeIndex(
 void World::setDensity(ShapeId id, float density, bool updateBodyMass) {
     impl_->checkUnlocked();
     int s = impl_->shapeIndex(id);
-    requireNonNegative(density, "density");
+    requireInRange(density, 0.0f, detail::kMaxDensity, "density");
     impl_->shapes[s].density = density;
     if (updateBodyMass) impl_->updateMass(impl_->shapes[s].body);
 }
 float World::friction(ShapeId id) const { return impl_->shapes[impl_->shapeIndex(id)].friction; }
 void World::setFriction(ShapeId id, float f) {
     int s = impl_->shapeIndex(id);
-    requireNonNegative(f, "friction");
+    requireInRange(f, 0.0f, detail::kMaxFriction, "friction");
     impl_->shapes[s].friction = f;
 }
 float World::restitution(ShapeId id) const { return impl_->shapes[impl_->shapeIndex(id)].restitution; }

@@ -209,7 +209,7 @@ public:
 
     Profile profile{};
     std::uint32_t stepStamp = 0;
-    bool locked = false;  ///< true while stepping
+    bool locked = false;  ///< true while stepping or drawing (see checkUnlocked)
 
     // --- helpers (world.cpp) ---
     BodyId bodyHandle(int i) const { return {static_cast<std::uint32_t>(i + 1), bodies[i].generation}; }

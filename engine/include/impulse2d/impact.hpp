@@ -57,10 +57,12 @@ struct ImpactResult {
 /// Resolve one impact. Throws i2d::Error on invalid input: non-finite values,
 /// negative inverse mass or inertia, both bodies immovable, a normal whose
 /// length differs from 1 by more than 1e-6, e outside [0, 1], μ < 0, a
-/// singular collision matrix K (the bodies cannot move the contact point in
-/// every direction, e.g. a body with zero inverse mass but non-zero inverse
-/// inertia against an immovable one: seed 000 §3.2 needs K positive definite),
-/// and finite inputs so large that the result overflows double precision.
+/// singular collision matrix K (only possible when both inverse masses are 0:
+/// bodies that can only spin and cannot move the contact point along every
+/// direction; seed 000 §3.2 needs K positive definite), and finite inputs so
+/// large that the result overflows double precision. An immovable body's
+/// velocity is that of a kinematic pusher: the law conserves or loses energy
+/// in the frame of an immovable body at rest.
 ImpactResult resolveImpact(const ImpactInput& input);
 
 /// Stable lower-case name of a case, as printed by `testbed impact`.

@@ -1,0 +1,291 @@
+// Hard cases that must not explode (docs/robustness.md, "Hard cases"). Each
+// test measures a figure, prints it, and asserts a bound whose reason is
+// given next to it. Default settings throughout: soft step, 4 substeps,
+// 60 Hz, closed-form impacts, sleep on.
+#include <gtest/gtest.h>
+
+#include <algorithm>
+#include <cmath>
+#include <cstdio>
+#include <vector>
+
+#include <impulse2d/impulse2d.hpp>
+
+#include "unit/world_fixtures.hpp"
+
+namespace i2d {
+namespace {
+
+constexpr float kDt = 1.0f / 60.0f;
+
+float maxSpeed(const World& world, const std::vector<BodyId>& bodies) {
+    float v = 0.0f;
+    for (BodyId b : bodies) v = std::max(v, length(world.linearVelocity(b)));
+    return v;
+}
+
+bool allFinite(const World& world) {
+    for (BodyId b : world.bodies())
+        if (!isFinite(world.position(b)) || !isFinite(world.linearVelocity(b)) || !std::isfinite(world.angularVelocity(b)))
+            return false;
+    return true;
+}
+
+// 100 unit boxes created at one point. Measured at the default settings
+// (soft step) and with the single-frame push factor (split), where the push
+// is solved on pseudo-velocities that are dropped after the step.
+struct PileResult {
+    float peakSpeed = 0.0f;  ///< m/s, over the whole run
+    float restTime = -1.0f;  ///< s until everything sleeps, −1 if never within 60 s
+    float minDistance = 0.0f;
+    bool finite = false;
+};
+
+PileResult pileOfHundred(PositionCorrection mode) {
+    World world(WorldSettings{.positionCorrection = mode});
+    test::makeGround(world, 100.0f);
+    std::vector<BodyId> boxes;
+    for (int i = 0; i < 100; ++i) boxes.push_back(test::makeBox(world, {0.0f, 5.0f}));
+    PileResult r;
+    for (int step = 0; step < 60 * 60; ++step) {
+        world.step(kDt);
+        r.peakSpeed = std::max(r.peakSpeed, maxSpeed(world, boxes));
+        if (world.awakeBodyCount() == 0) {
+            r.restTime = (step + 1) * kDt;
+            break;
+        }
+    }
+    r.finite = allFinite(world);
+    r.minDistance = 1e9f;
+    for (std::size_t i = 0; i < boxes.size(); ++i)
+        for (std::size_t j = i + 1; j < boxes.size(); ++j)
+            r.minDistance = std::min(r.minDistance, distance(world.position(boxes[i]), world.position(boxes[j])));
+    return r;
+}
+
+TEST(HardCases, HundredBoxesAtOnePointSeparateAndRestWithSplitImpulses) {
+    PileResult r = pileOfHundred(PositionCorrection::split);
+    std::printf("[figure] 100 boxes at one point, split: peak speed %.2f m/s, asleep after %.2f s, closest centres %.3f m\n",
+                r.peakSpeed, r.restTime, r.minDistance);
+    ASSERT_TRUE(r.finite);
+    // 20 m/s: the speed of a free fall from 20 m, four times the height at
+    // which the boxes are created; faster would be energy from the solver,
+    // not from gravity (measured 13.3 m/s).
+    EXPECT_LT(r.peakSpeed, 20.0f);
+    // At rest (everything asleep) within 20 s of simulated time (measured 9.4 s).
+    EXPECT_GE(r.restTime, 0.0f);
+    EXPECT_LT(r.restTime, 20.0f);
+    // Separated: unit boxes at rest overlap by at most the slop, so centres
+    // are ~1 m apart; 0.9 m allows for a box resting rotated against another.
+    EXPECT_GT(r.minDistance, 0.9f);
+}
+
+// Known failure, documented in docs/robustness.md: with the default soft
+// step the soft contacts of 99 coincident boxes add up and launch boxes at
+// 40–60 m/s in the first steps; some leave the 200 m ground and never rest.
+// Enable once the solver bounds the push of many coincident contacts.
+TEST(HardCases, DISABLED_HundredBoxesAtOnePointSeparateAndRestWithSoftStep) {
+    PileResult r = pileOfHundred(PositionCorrection::soft_step);
+    std::printf("[figure] 100 boxes at one point, soft step: peak speed %.2f m/s, asleep after %.2f s\n", r.peakSpeed,
+                r.restTime);
+    EXPECT_LT(r.peakSpeed, 20.0f);  // as with split impulses
+    EXPECT_GE(r.restTime, 0.0f);
+}
+
+TEST(HardCases, HundredBoxesAtOnePointWithSoftStepStayFinite) {
+    PileResult r = pileOfHundred(PositionCorrection::soft_step);
+    std::printf("[figure] 100 boxes at one point, soft step (known failure): peak speed %.2f m/s, asleep after %.2f s\n",
+                r.peakSpeed, r.restTime);
+    // What holds today: state stays finite and the speed limit (400 m/s) holds.
+    EXPECT_TRUE(r.finite);
+    EXPECT_LE(r.peakSpeed, 400.0f * 1.01f);
+}
+
+// A box created with 90% of its height inside the ground is pushed out at
+// the limited push speed and ends resting on top, without being launched.
+TEST(HardCases, BodyDeepInsideTheGroundIsPushedOutNotLaunched) {
+    World world;
+    test::makeGround(world);
+    BodyId box = test::makeBox(world, {0.0f, -0.4f});  // bottom at −0.9 m, top at 0.1 m
+    float topY = -1e9f;
+    float peakUp = 0.0f;
+    for (int step = 0; step < 5 * 60; ++step) {
+        world.step(kDt);
+        topY = std::max(topY, world.position(box).y);
+        peakUp = std::max(peakUp, world.linearVelocity(box).y);
+    }
+    ASSERT_TRUE(allFinite(world));
+    const float finalY = world.position(box).y;
+    std::printf("[figure] box 0.9 m deep in the ground: peak upward speed %.3f m/s, highest centre %.4f m, final %.4f m\n",
+                peakUp, topY, finalY);
+    // Resting on top: centre at the half-extent 0.5 m, within 1 cm (slop 5 mm plus soft-contact sag).
+    EXPECT_NEAR(finalY, 0.5f, 0.01f);
+    // Not launched: never more than 5 cm above its resting height, and never
+    // faster upward than the push-out speed limit (maxPushSpeed, 3 m/s) plus 10%.
+    EXPECT_LT(topY, 0.55f);
+    EXPECT_LT(peakUp, 1.1f * world.settings().maxPushSpeed);
+}
+
+// A stack of 20 unit boxes with the top one 100 times heavier than each box
+// below (a 1:100 mass ratio). Known failure, documented in
+// docs/robustness.md: it collapses in about a third of a second in every
+// position-correction mode. The test measures when the top box has dropped
+// by half a box and asserts the collapse stays finite and bounded.
+struct StackResult {
+    float fallTime = -1.0f;  ///< s until the top box is 0.5 m below its start, −1 if never
+    float topY = 0.0f;
+    float peakSpeed = 0.0f;
+    bool finite = false;
+};
+
+StackResult heavyTopStack() {
+    World world;
+    test::makeGround(world);
+    std::vector<BodyId> boxes;
+    for (int i = 0; i < 20; ++i)
+        boxes.push_back(test::makeBox(world, {0.0f, 0.5f + static_cast<float>(i)}, 0.5f, i == 19 ? 100.0f : 1.0f));
+    StackResult r;
+    for (int step = 0; step < 10 * 60; ++step) {
+        world.step(kDt);
+        r.peakSpeed = std::max(r.peakSpeed, maxSpeed(world, boxes));
+        if (r.fallTime < 0.0f && world.position(boxes.back()).y < 19.0f) r.fallTime = (step + 1) * kDt;
+    }
+    r.topY = world.position(boxes.back()).y;
+    r.finite = allFinite(world);
+    return r;
+}
+
+TEST(HardCases, StackOfTwentyWithHeavyTopCollapsesBoundedly) {
+    StackResult r = heavyTopStack();
+    std::printf("[figure] stack 20, top 100x heavier: top dropped 0.5 m after %.2f s, top at y %.3f after 10 s, peak speed %.2f m/s\n",
+                r.fallTime, r.topY, r.peakSpeed);
+    ASSERT_TRUE(r.finite);
+    // Free fall from the top box's height gives √(2·10·19.5) = 19.7 m/s; a
+    // collapse may reach it (measured 20.4 m/s: the heavy box lands on
+    // tumbling boxes), an explosion goes far beyond 1.5 times it.
+    EXPECT_LT(r.peakSpeed, 30.0f);
+}
+
+// The target; enable once the solver holds a 1:100 ratio.
+TEST(HardCases, DISABLED_StackOfTwentyWithHeavyTopStands) {
+    StackResult r = heavyTopStack();
+    EXPECT_LT(r.fallTime, 0.0f);            // never drops by half a box
+    EXPECT_NEAR(r.topY, 19.5f, 0.05f);      // 20 contacts compress by a few mm each
+}
+
+// A 10-link chain (distance joints, 1 kg links) hanging from a static anchor
+// and holding a body 1000 times heavier than a link; given a sideways kick
+// it swings and must stay connected, its stretch measured.
+TEST(HardCases, ChainHoldsABodyAThousandTimesHeavier) {
+    World world;
+    BodyId anchor = world.createBody({.position = {0.0f, 20.0f}});
+    const float linkLength = 0.5f;
+    std::vector<BodyId> links;
+    std::vector<JointId> joints;
+    BodyId previous = anchor;
+    for (int i = 0; i < 10; ++i) {
+        BodyId link = world.createBody({.type = BodyType::dynamic_body, .position = {0.0f, 20.0f - linkLength * (i + 1)}});
+        // 1 kg: capsule area 2·r·L + π r² with r = 0.05, L = 0.4 is 0.0479 m².
+        world.createCapsuleShape(link, {.density = 1.0f / 0.0478540f}, {{0.0f, -0.2f}, {0.0f, 0.2f}, 0.05f});
+        joints.push_back(world.createDistanceJoint({.bodyA = previous, .bodyB = link, .length = linkLength}));
+        links.push_back(link);
+        previous = link;
+    }
+    BodyId heavy = world.createBody({.type = BodyType::dynamic_body, .position = {0.0f, 20.0f - linkLength * 11}});
+    world.createCircleShape(heavy, {.density = 1.0f}, {{0.0f, 0.0f}, 0.5f});
+    world.setMassData(heavy, {.mass = 1000.0f, .center = {}, .rotationalInertia = 125.0f});  // 1000 kg, a solid disc of r 0.5
+    joints.push_back(world.createDistanceJoint({.bodyA = previous, .bodyB = heavy, .length = linkLength}));
+    world.applyLinearImpulseToCenter(heavy, {5000.0f, 0.0f});  // 5 m/s sideways
+
+    float worstStretch = 0.0f;   // largest relative length error of one joint
+    float worstTotal = 0.0f;     // largest relative error of the anchor–heavy distance
+    for (int step = 0; step < 10 * 60; ++step) {
+        world.step(kDt);
+        float total = 0.0f;
+        for (JointId j : joints) {
+            float len = world.distanceJointCurrentLength(j);
+            total += len;
+            worstStretch = std::max(worstStretch, std::abs(len - linkLength) / linkLength);
+        }
+        worstTotal = std::max(worstTotal, std::abs(total - 11 * linkLength) / (11 * linkLength));
+    }
+    ASSERT_TRUE(allFinite(world));
+    std::printf("[figure] chain of 10 x 1 kg holding 1000 kg, 10 s swinging: worst joint stretch %.2f%%, worst chain length error %.2f%%\n",
+                100.0f * worstStretch, 100.0f * worstTotal);
+    // Known weakness, documented in docs/robustness.md: at 4 substeps the
+    // chain stretches to about three times its length (joint 214%, chain
+    // 194% measured) and then holds there; at 8 or more substeps ~50%.
+    // Bounded: no joint beyond 3.5 times its length at any time (a chain
+    // that let go would stretch without bound as the body fell away).
+    EXPECT_LT(worstStretch, 2.5f);
+    // The joints stay finite and present.
+    EXPECT_EQ(world.jointCount(), 11);
+}
+
+// A small fast circle against a thin static wall, no gravity. Without
+// continuous collision the circle tunnels once one step carries it past the
+// wall before a contact exists. The speed where that begins is measured; the
+// test asserts that nothing slower tunnels.
+bool tunnels(float speed) {
+    World world(WorldSettings{.gravity = {0.0f, 0.0f}});
+    BodyId wall = world.createBody({.position = {5.0f, 0.0f}});
+    world.createPolygonShape(wall, {}, makeBox(0.05f, 2.0f));  // 10 cm thick
+    BodyId ball = world.createBody({.type = BodyType::dynamic_body, .position = {0.0f, 0.0f}, .linearVelocity = {speed, 0.0f}});
+    world.createCircleShape(ball, {}, {{0.0f, 0.0f}, 0.05f});  // 10 cm across
+    for (int step = 0; step < 120; ++step) {
+        world.step(kDt);
+        if (world.position(ball).x > 5.0f) return true;
+    }
+    return false;
+}
+
+TEST(HardCases, ThinWallTunnellingSpeedIsMeasured) {
+    // Speeds from 1 m/s up in steps of 1 m/s to the world's speed limit.
+    float firstTunnel = -1.0f;
+    for (float v = 1.0f; v <= 400.0f; v += 1.0f) {
+        if (tunnels(v)) {
+            firstTunnel = v;
+            break;
+        }
+    }
+    std::printf("[figure] 10 cm ball vs 10 cm wall at 60 Hz: first tunnels at %.0f m/s (%.3f m per step)\n", firstTunnel,
+                firstTunnel / 60.0f);
+    // Documented in docs/robustness.md: no continuous collision yet. The
+    // measured threshold must not drop below what the speculative contacts
+    // and fattened boxes guarantee: a step shorter than the wall plus the
+    // ball (0.2 m, i.e. 12 m/s) can never skip the wall.
+    ASSERT_GT(firstTunnel, 0.0f) << "never tunnels up to 400 m/s: update docs/robustness.md";
+    EXPECT_GT(firstTunnel, 12.0f);
+}
+
+// The same pyramid at the origin and 10 km away settles the same way: the
+// solver works in positions relative to each step's start, so only the
+// float spacing at 1e4 m (~1 mm) separates the two.
+TEST(HardCases, WorldFarFromTheOriginBehavesLikeAtTheOrigin) {
+    auto settle = [](Vec2 offset) {
+        World world;
+        BodyId ground = world.createBody({.position = offset});
+        world.createPolygonShape(ground, {}, makeOffsetBox(20.0f, 1.0f, {0.0f, -1.0f}, 0.0f));
+        std::vector<BodyId> boxes;
+        const int base = 10;
+        for (int row = 0; row < base; ++row)
+            for (int i = 0; i < base - row; ++i)
+                boxes.push_back(test::makeBox(
+                    world, offset + Vec2{(i - 0.5f * (base - row - 1)) * 1.05f, 0.5f + row * 1.0f}));
+        for (int step = 0; step < 5 * 60; ++step) world.step(kDt);
+        std::vector<Vec2> relative;
+        for (BodyId b : boxes) relative.push_back(world.position(b) - offset);
+        return relative;
+    };
+    const std::vector<Vec2> near = settle({0.0f, 0.0f});
+    const std::vector<Vec2> far = settle({1.0e4f, 0.0f});
+    float worst = 0.0f;
+    for (std::size_t i = 0; i < near.size(); ++i) worst = std::max(worst, distance(near[i], far[i]));
+    std::printf("[figure] pyramid of 55 boxes at x = 0 and x = 1e4 m after 5 s: largest position difference %.4f m\n", worst);
+    // 1 cm: ten times the float spacing at 1e4 m (0.98 mm), the resolution
+    // with which the far world can even place a box.
+    EXPECT_LT(worst, 0.01f);
+}
+
+}  // namespace
+}  // namespace i2d
