@@ -224,10 +224,10 @@ TEST(HardCases, ChainHoldsABodyAThousandTimesHeavier) {
 
 // A small fast circle against a thin static wall, no gravity. Without
 // continuous collision the circle tunnels once one step carries it past the
-// wall before a contact exists. The speed where that begins is measured; the
-// test asserts that nothing slower tunnels.
-bool tunnels(float speed) {
-    World world(WorldSettings{.gravity = {0.0f, 0.0f}});
+// wall before a contact exists; with it (the default) it must not tunnel at
+// any speed up to the world's speed limit.
+bool tunnels(float speed, bool continuous) {
+    World world(WorldSettings{.gravity = {0.0f, 0.0f}, .enableContinuous = continuous});
     BodyId wall = world.createBody({.position = {5.0f, 0.0f}});
     world.createPolygonShape(wall, {}, makeBox(0.05f, 2.0f));  // 10 cm thick
     BodyId ball = world.createBody({.type = BodyType::dynamic_body, .position = {0.0f, 0.0f}, .linearVelocity = {speed, 0.0f}});
@@ -241,20 +241,20 @@ bool tunnels(float speed) {
 
 TEST(HardCases, ThinWallTunnellingSpeedIsMeasured) {
     // Speeds from 1 m/s up in steps of 1 m/s to the world's speed limit.
-    float firstTunnel = -1.0f;
+    float firstTunnel = -1.0f, firstTunnelContinuous = -1.0f;
     for (float v = 1.0f; v <= 400.0f; v += 1.0f) {
-        if (tunnels(v)) {
-            firstTunnel = v;
-            break;
-        }
+        if (firstTunnel < 0.0f && tunnels(v, false)) firstTunnel = v;
+        if (firstTunnelContinuous < 0.0f && tunnels(v, true)) firstTunnelContinuous = v;
     }
-    std::printf("[figure] 10 cm ball vs 10 cm wall at 60 Hz: first tunnels at %.0f m/s (%.3f m per step)\n", firstTunnel,
-                firstTunnel / 60.0f);
-    // Documented in docs/robustness.md: no continuous collision yet. The
-    // measured threshold must not drop below what the speculative contacts
-    // and fattened boxes guarantee: a step shorter than the wall plus the
-    // ball (0.2 m, i.e. 12 m/s) can never skip the wall.
-    ASSERT_GT(firstTunnel, 0.0f) << "never tunnels up to 400 m/s: update docs/robustness.md";
+    std::printf("[figure] 10 cm ball vs 10 cm wall at 60 Hz: continuous off first tunnels at %.0f m/s (%.3f m per "
+                "step); continuous on: %s\n",
+                firstTunnel, firstTunnel / 60.0f, firstTunnelContinuous < 0.0f ? "never up to 400 m/s" : "TUNNELS");
+    // Continuous collision (the default) stops it at every speed up to the limit.
+    EXPECT_LT(firstTunnelContinuous, 0.0f) << "tunnels at " << firstTunnelContinuous << " m/s";
+    // Without it the threshold must not drop below what the speculative
+    // contacts and fattened boxes guarantee: a step shorter than the wall plus
+    // the ball (0.2 m, i.e. 12 m/s) can never skip the wall.
+    ASSERT_GT(firstTunnel, 0.0f) << "never tunnels without continuous collision: update docs/robustness.md";
     EXPECT_GT(firstTunnel, 12.0f);
 }
 
