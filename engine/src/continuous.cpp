@@ -135,8 +135,10 @@ void WorldImpl::solveContinuous() {
                 reach = std::max(reach, length(core.points[k] - body.localCenter));
         }
         const float bound = length(s.dp) + std::abs(dAngle) * reach;
-        // Moving less than half its thickness, a body cannot skip a surface.
-        if (thinnest > 1.0e29f || bound <= 0.5f * std::max(thinnest, kLinearSlop)) continue;
+        // A body moving less than the speculative distance always meets a
+        // surface through a contact made at the step's start. Beyond it, it
+        // could end the step deep inside (or past) a static shape: swept.
+        if (thinnest > 1.0e29f || bound <= settings.speculativeDistance) continue;
 
         Sweep sweep;
         sweep.localCenter = body.localCenter;
