@@ -1,16 +1,18 @@
 // Continuous collision of fast bodies against static shapes.
 //
-// A body that moves further in one step than about half its own thickness can
-// pass through a thin static wall between two steps: no contact exists at the
-// step's start (the wall is beyond the speculative distance) and none at its
-// end (the body is already through). After the solver has moved the bodies,
-// each fast body's motion over the step is swept against the static shapes
+// A body that moves further in one step than the speculative distance can end
+// the step deep inside a static shape, or pass through a thin one: no contact
+// exists at the step's start (the surface is beyond the speculative distance)
+// and none at its end (the body is already through). After the solver has
+// moved the bodies, each fast body's motion over the step is swept against the static shapes
 // near its path; if it would touch one, the body is put back to the first
 // time of impact along its sweep and keeps its velocity. The contact then
 // exists at the next step's start, closer than the speculative distance, and
 // the impact law and the solver stop the body at the surface. This is the
-// dynamic-versus-static scheme of Box2D v3; dynamic-versus-dynamic pairs are
-// not swept (two fast bodies can still pass through each other).
+// dynamic-versus-static scheme of Box2D v3 (which sweeps only from half the
+// body's thickness on; sweeping from the speculative distance also makes fast
+// impacts happen at the surface); dynamic-versus-dynamic pairs are not swept
+// (two fast bodies can still pass through each other).
 //
 // Time of impact by conservative advancement: with d(t) the distance between
 // the two surfaces at time t ∈ [0, 1] of the step and B a bound on how fast
@@ -62,24 +64,6 @@ Core coreOf(const Shape& s) {
     return c;
 }
 
-// Half the thickness of a shape about its centre: how far it can move in a
-// step before it might skip a contact. A polygon's is the smallest distance
-// from its centroid to an edge; a segment has no thickness.
-float minExtent(const Shape& s) {
-    switch (s.type) {
-        case ShapeType::circle: return s.circle.radius;
-        case ShapeType::capsule: return s.capsule.radius;
-        case ShapeType::segment: return 0.0f;
-        case ShapeType::polygon: {
-            float e = 1.0e30f;
-            for (int i = 0; i < s.polygon.count; ++i)
-                e = std::min(e, dot(s.polygon.normals[i], s.polygon.vertices[i] - s.polygon.centroid));
-            return e + s.polygon.radius;
-        }
-    }
-    return 0.0f;
-}
-
 // Pose of a body at time t ∈ [0, 1] of its sweep from (c0, angle0) by (dc, dAngle).
 struct Sweep {
     Vec2 localCenter, c0, dc;
@@ -117,28 +101,29 @@ float timeOfImpact(const Core& moving, const Sweep& sweep, float bound, const Co
 
 }  // namespace
 
+float WorldImpl::solidReach(const Body& body) const {
+    float reach = -1.0f;
+    for (int sh : body.shapes) {
+        const Shape& shape = shapes[sh];
+        if (shape.isSensor) continue;
+        const Core core = coreOf(shape);
+        for (int k = 0; k < core.count; ++k) reach = std::max(reach, length(core.points[k] - body.localCenter));
+    }
+    return reach;
+}
+
 void WorldImpl::solveContinuous() {
     const float target = kLinearSlop;
     for (std::size_t i = 0; i < stateBodies.size(); ++i) {
         Body& body = bodies[stateBodies[i]];
-        if (body.type != BodyType::dynamic_body || body.shapes.empty()) continue;
+        if (body.type != BodyType::dynamic_body || body.reach < 0.0f) continue;
         const BodyState& s = states[i];
         const float dAngle = angleOf(s.dq);
-
-        float thinnest = 1.0e30f, reach = 0.0f;
-        for (int sh : body.shapes) {
-            const Shape& shape = shapes[sh];
-            if (shape.isSensor) continue;
-            thinnest = std::min(thinnest, minExtent(shape));
-            const Core core = coreOf(shape);
-            for (int k = 0; k < core.count; ++k)
-                reach = std::max(reach, length(core.points[k] - body.localCenter));
-        }
-        const float bound = length(s.dp) + std::abs(dAngle) * reach;
+        const float bound = length(s.dp) + std::abs(dAngle) * body.reach;
         // A body moving less than the speculative distance always meets a
         // surface through a contact made at the step's start. Beyond it, it
         // could end the step deep inside (or past) a static shape: swept.
-        if (thinnest > 1.0e29f || bound <= settings.speculativeDistance) continue;
+        if (bound <= settings.speculativeDistance) continue;
 
         Sweep sweep;
         sweep.localCenter = body.localCenter;

@@ -170,6 +170,7 @@ void WorldImpl::updateMass(int b) {
         body.invMass = 1.0f;
         body.inertia = 0.0f;
     }
+    body.reach = solidReach(body);
     if (body.inertia > 0.0f && isFinite(1.0f / body.inertia) && !body.fixedRotation) {
         body.invInertia = 1.0f / body.inertia;
     } else {

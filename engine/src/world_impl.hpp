@@ -29,6 +29,10 @@ struct Body {
     float linearDamping = 0.0f, angularDamping = 0.0f;
     float gravityScale = 1.0f;
     float sleepTime = 0.0f;
+    /// Farthest core point of a solid shape from the centre of mass (m); −1
+    /// when the body has no solid shape. Bounds how far a turn moves its
+    /// surface (continuous.cpp). Set by updateMass.
+    float reach = -1.0f;
     bool fixedRotation = false;
     bool awake = true;
     bool enableSleep = true;
@@ -249,6 +253,7 @@ public:
 
     // --- continuous collision (continuous.cpp), after solve() ---
     void solveContinuous();
+    float solidReach(const Body& body) const;  ///< Body::reach from its shapes
 
     // --- sleep (sleep.cpp) ---
     void updateSleep(float dt);
