@@ -571,7 +571,35 @@ std::string machineLine() {
 /// Why a scene's front is not at or below Box2D's, where the data say so;
 /// filled from what the sweep showed (see docs/performance.md).
 const std::map<std::string, std::string>& shortfallNotes() {
-    static const std::map<std::string, std::string> notes = {};
+    static const std::map<std::string, std::string> notes = {
+        {"rain1000",
+         "Why: Impulse2D's largest penetration hardly moves with any setting (about 0.3 m, the distance a circle from "
+         "the top rows, falling at about 20 m/s, covers in one step), so it is made by first impacts, before any "
+         "contact exists, not by the solver; Box2D 2.4.1 stops dynamic bodies at static shapes with its continuous "
+         "collision and pushes the rest out with its position iterations, which is why its figure falls with them. "
+         "What it would take: speculative contact points out to the distance a pair can close in one step instead of "
+         "the fixed 2 cm, or continuous collision against static shapes."},
+        {"joint_grid",
+         "Why: soft_step caps the joint stiffness at an eighth of the substep rate (7.5 Hz at 1 substep, 15 at 2, 30 "
+         "at 4; the 60 Hz asked for only from 8 substeps on), so at few substeps its joints are softer than Box2D's "
+         "rigid rows with position iterations, and its cheapest step (1 substep) still costs more than Box2D at 2/1 "
+         "here. From 8 substeps on Impulse2D's stretch is below Box2D's best. What it would take: a joint that stays "
+         "stiff at few substeps (a position pass for joints, or a higher cap with the relax pass keeping it stable), "
+         "and a cheaper joint row."},
+        {"bounce",
+         "Why: Impulse2D's rebound falls short by the impact speed times one substep (10 m/s × 1/60 s = 0.167 m at 1 "
+         "substep, 0.042 m at 4, 0.021 m at 8, whatever the other settings): in the substep of the impact the ball "
+         "stops at the surface instead of travelling back up for the rest of the substep. Box2D 2.4.1 misses by "
+         "0.6 mm at every iteration count. What it would take: advancing the rebounding body by its post-impact "
+         "velocity over the remainder of the substep (time-of-impact), or more substeps."},
+        {"pyramid100",
+         "Why: the pyramid's error at Impulse2D's default stiffness is mostly sinking by the soft contacts' "
+         "compliance (30 Hz), which more substeps do not remove; the stiffer settings (x2, x4 Hz) remove it at a "
+         "higher cost. What it would take: a cheaper substep, or a stiffer default with the substeps it needs."},
+        {"tall_stack50",
+         "Why: both engines let this stack (0.1 m gaps, ±1 cm offsets, friction 0.3) fall at every setting swept, so "
+         "the figure compares how far the debris spreads, not whether it stands."},
+    };
     return notes;
 }
 
