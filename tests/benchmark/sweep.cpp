@@ -202,8 +202,8 @@ std::vector<ScenePlan> plans(bool quick) {
                 P("card_house", 5.0, 1, 0, cardNote),
                 P("bounce", 3.0, 1, 0),
                 P("pendulum_wave", 10.0, 1, 0)};
-    return {P("pyramid100", 5.0, 3, 2),
-            P("many_pyramids", 2.0, 2, 1),
+    return {P("pyramid100", 3.0, 2, 2),
+            P("many_pyramids", 1.5, 2, 1),
             P("many_pyramids_small", 4.0, 3, 2),
             P("tall_stack20", 10.0, 3, 2),
             P("tall_stack50", 10.0, 3, 2),
