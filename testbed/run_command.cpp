@@ -28,7 +28,8 @@ const char* const kRunHelp =
     "  --json          print one JSON object: scene, steps, dt, ms_per_step {median,min,max},\n"
     "                  bodies, contacts, max_contacts, max_penetration, energy {initial,final,max},\n"
     "                  nan, named {NAME: {x0,y0,angle0,x,y,angle,vx,vy,w,max_dx,min_y,max_y}},\n"
-    "                  engine, notes, settings, displaced, joint_error {max,final} (and a few more)\n"
+    "                  engine, notes, settings, displaced, joint_error {max,final},\n"
+    "                  error {metric,value,unit} (the scene's error figure, null if none) and a few more\n"
     "  --engine E      impulse2d (default) or box2d: the same scene in Box2D 2.4.1, same report;\n"
     "                  --velocity-iterations / --position-iterations then set Box2D's counts\n"
     "                  (default 8 and 3) and the other settings options do not apply\n"
@@ -183,6 +184,8 @@ RunReport runScene(const SceneDesc& desc, long steps, EngineKind engine, const B
     rep.energyInitial = rep.energyMax = rep.energyFinal = computeEnergy(*sim, g).total();
     rep.nan = !allFinite(*sim);
     rep.jointErrorMax = rep.jointErrorFinal = maxJointError(desc, *sim);
+    ErrorTracker tracker(desc, errorMetricFor(desc.name));
+    tracker.start(*sim);
 
     std::vector<double> ms;
     ms.reserve(static_cast<std::size_t>(steps));
@@ -194,7 +197,8 @@ RunReport runScene(const SceneDesc& desc, long steps, EngineKind engine, const B
         ++rep.stepsCompleted;
 
         rep.maxContacts = std::max(rep.maxContacts, sim->touchingContactCount());
-        rep.maxPenetration = std::max(rep.maxPenetration, sim->maxPenetration());
+        const float penetration = sim->maxPenetration();
+        rep.maxPenetration = std::max(rep.maxPenetration, penetration);
         if (!allFinite(*sim)) {
             rep.nan = true;
             break;
@@ -204,6 +208,7 @@ RunReport runScene(const SceneDesc& desc, long steps, EngineKind engine, const B
         rep.energyFinal = e;
         rep.jointErrorFinal = maxJointError(desc, *sim);
         rep.jointErrorMax = std::max(rep.jointErrorMax, rep.jointErrorFinal);
+        tracker.observe(*sim, penetration, rep.jointErrorFinal);
         for (std::size_t k = 0; k < named.size(); ++k) {
             BodySample s = sim->sample(named[k].second);
             RunReport::Named& nb = rep.named[k];
@@ -212,6 +217,7 @@ RunReport runScene(const SceneDesc& desc, long steps, EngineKind engine, const B
             nb.maxY = std::max(nb.maxY, s.y);
         }
     }
+    rep.error = tracker.result(*sim);
     rep.contacts = sim->touchingContactCount();
     for (int i = 0; i < rep.bodies; ++i) {
         BodySample s = sim->sample(i);
@@ -282,6 +288,14 @@ std::string reportToJson(const RunReport& r) {
                          {"sleep", s.enableSleep}};
     }
     j["notes"] = r.notes;
+    if (r.error.metric == ErrorMetric::none) {
+        j["error"] = nullptr;
+    } else {
+        j["error"] = {{"metric", errorMetricName(r.error.metric)},
+                      {"value", r.error.value},
+                      {"unit", errorMetricUnit(r.error.metric)}};
+        if (errorMetricHasCollapse(r.error.metric)) j["error"]["collapsed"] = r.error.collapsed;
+    }
     return j.dump();
 }
 
@@ -298,6 +312,10 @@ void printText(const RunReport& r, std::ostream& out) {
         << r.energyMax << " J\n";
     out << "  displaced (> 0.5 m) " << r.displaced << ", joint error max " << std::setprecision(5) << r.jointErrorMax
         << " m, final " << r.jointErrorFinal << " m\n" << std::setprecision(3);
+    if (r.error.metric != ErrorMetric::none)
+        out << "  error: " << errorMetricName(r.error.metric) << " " << std::setprecision(5) << r.error.value << " "
+            << errorMetricUnit(r.error.metric) << (r.error.collapsed ? " (collapsed)" : "") << "\n"
+            << std::setprecision(3);
     if (r.nan) out << "  NON-FINITE STATE after step " << r.stepsCompleted << "\n";
     for (const auto& n : r.notes) out << "  note: " << n << "\n";
     for (const auto& n : r.named)

@@ -8,6 +8,7 @@
 #include <string>
 #include <vector>
 
+#include "error_metric.hpp"
 #include "scene.hpp"
 #include "simulation.hpp"
 
@@ -89,6 +90,8 @@ struct RunReport {
         float minY = 0, maxY = 0;  ///< lowest and highest y over the run (including the start)
     };
     std::vector<Named> named;  ///< sorted by name
+    /// The scene's error figure (tb::errorMetricFor; metric none for scenes without one).
+    ErrorValue error;
 };
 
 /// Build and step a scene in the given engine (with the overrides already in
