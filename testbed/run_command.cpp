@@ -42,8 +42,9 @@ const char* const kListHelp =
 
 const char* settingsOptionsHelp() {
     return "settings options (override the scene's world settings):\n"
-           "  --velocity-iterations N   velocity iterations per step (per substep in soft_step)\n"
-           "  --position-iterations N   position iterations (split) / relax iterations (soft_step)\n"
+           "  --velocity-iterations N   velocity iterations per step (baumgarte, split; soft_step has one\n"
+           "                            solve and one relax pass per substep); Box2D's with --engine box2d\n"
+           "  --position-iterations N   position iterations (split); Box2D's with --engine box2d\n"
            "  --substeps N              substeps per step (soft_step)\n"
            "  --correction MODE         soft_step | baumgarte | split\n"
            "  --impact MODEL            closed_form | velocity_bias\n"

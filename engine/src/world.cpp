@@ -636,8 +636,10 @@ ShapeId addShape(detail::WorldImpl& w, BodyId bodyId, const ShapeDef& def, Shape
     fill(w.shapes[s]);
     w.bodies[b].shapes.push_back(s);
     w.createProxy(s);
+    // A sleeping body stays asleep (a level built asleep stays asleep, as in
+    // Box2D): its new shape's contacts wake it when one begins to touch an
+    // awake body.
     w.updateMass(b);
-    if (w.bodies[b].type != BodyType::static_body && !w.bodies[b].awake) w.wakeBody(b);
     return w.shapeHandle(s);
 }
 }  // namespace

@@ -207,6 +207,35 @@ TEST(SolverBehaviour, FallingBodyWakesASleepingOne) {
     EXPECT_NEAR(world.position(high).y, 1.5f, 0.02f);
 }
 
+// Bodies created asleep (a level loaded at rest) stay asleep when their
+// shapes are added and while nothing touches them; a box dropped on one wakes
+// it through the new touch.
+TEST(SolverBehaviour, BodiesCreatedAsleepStayAsleepUntilTouched) {
+    World world;
+    test::makeGround(world);
+    std::vector<BodyId> resting;
+    for (int i = 0; i < 3; ++i) {
+        BodyId b = world.createBody(
+            {.type = BodyType::dynamic_body, .position = {3.0f * static_cast<float>(i), 0.5f}, .isAwake = false});
+        world.createPolygonShape(b, {}, makeBox(0.5f, 0.5f));
+        resting.push_back(b);
+    }
+    for (BodyId b : resting) EXPECT_FALSE(world.isAwake(b));
+    for (int i = 0; i < 60; ++i) world.step(kDt);
+    for (BodyId b : resting) {
+        EXPECT_FALSE(world.isAwake(b));
+        EXPECT_EQ(world.position(b).y, 0.5f);  // not moved at all: no step touched it
+    }
+    test::makeBox(world, {0.0f, 3.0f});
+    bool woke = false;
+    for (int i = 0; i < 60; ++i) {
+        world.step(kDt);
+        woke = woke || world.isAwake(resting[0]);
+    }
+    EXPECT_TRUE(woke);
+    EXPECT_FALSE(world.isAwake(resting[2]));  // 6 m away: never touched
+}
+
 TEST(SolverBehaviour, EveryPositionCorrectionModeHoldsABoxOnTheGround) {
     for (PositionCorrection mode : {PositionCorrection::baumgarte, PositionCorrection::split, PositionCorrection::soft_step}) {
         WorldSettings s;

@@ -45,10 +45,12 @@ struct WorldSettings {
     PositionCorrection positionCorrection = PositionCorrection::soft_step;
     ImpactModel impactModel = ImpactModel::closed_form;
 
-    /// Velocity iterations per step (baumgarte, split) or per substep (soft_step).
+    /// Velocity iterations per step (baumgarte, split). soft_step does not
+    /// iterate: each substep is one solve and one relax pass (substeps are
+    /// its accuracy knob, as in Box2D v3).
     int velocityIterations = 8;
-    /// Iterations of the position (pseudo-velocity) pass in split mode; relax
-    /// iterations per substep in soft_step mode.
+    /// Iterations of the position (pseudo-velocity) pass in split mode; not
+    /// used by baumgarte or soft_step.
     int positionIterations = 3;
     /// Substeps per step (soft_step only).
     int substeps = 4;
