@@ -63,8 +63,8 @@ TEST(WorldImpacts, BoxDroppedFlatBouncesFlat) {
 TEST(WorldImpacts, ReboundHeightIsESquaredH) {
     // The law gives exactly v⁺ = e·v⁻ (test_impact.cpp); the flight before and
     // after is integrated by semi-implicit Euler, whose apex is low by about
-    // v·Δt/2 each way. At 960 Hz that is 3.3 mm on 0.5 m (0.7 %), inside the 2 % bar;
-    // at 60 Hz the integrator alone costs about 5 % (docs/impacts.md).
+    // v·Δt/2 each way. At 960 Hz that is 3.3 mm on 0.5 m (0.7 %), inside the 2 % bar
+    // (60 Hz and 240 Hz figures are in docs/impacts.md).
     const float h = 2.0f;
     for (float e : {0.5f, 0.75f, 1.0f}) {
         auto [apex, spin] = dropBox(ImpactModel::closed_form, e, h, 1.0f / 960.0f);
