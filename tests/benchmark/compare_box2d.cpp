@@ -12,6 +12,8 @@
 #include <box2d/box2d.h>
 #include <impulse2d/impulse2d.hpp>
 
+#include "pyramid.hpp"
+
 #include <algorithm>
 #include <chrono>
 #include <cstdio>
@@ -35,18 +37,7 @@ Result runImpulse(int base, int steps) {
     i2d::WorldSettings s;
     s.enableSleep = false;
     i2d::World world(s);
-    i2d::BodyId ground = world.createBody({});
-    world.createPolygonShape(ground, {}, i2d::makeOffsetBox(base * 1.0f + 10.0f, 1.0f, {0, -1}, 0));
-    i2d::BodyId top;
-    for (int row = 0; row < base; ++row) {
-        int n = base - row;
-        for (int i = 0; i < n; ++i) {
-            float x = (static_cast<float>(i) - 0.5f * static_cast<float>(n - 1)) * 1.0f;
-            float y = 0.5f + static_cast<float>(row);
-            top = world.createBody({.type = i2d::BodyType::dynamic_body, .position = {x, y}});
-            world.createPolygonShape(top, {.density = 1.0f, .friction = 0.6f}, i2d::makeBox(0.5f, 0.5f));
-        }
-    }
+    const i2d::BodyId top = bench::buildPyramid(world, base, base * 1.0f + 10.0f);
     i2d::Vec2 p0 = world.position(top);
     Result r;
     auto t0 = Clock::now();
@@ -64,28 +55,7 @@ Result runImpulse(int base, int steps) {
 Result runBox2D(int base, int steps, int velocityIterations, int positionIterations) {
     b2World world(b2Vec2(0.0f, -10.0f));
     world.SetAllowSleeping(false);
-    b2BodyDef gd;
-    b2Body* ground = world.CreateBody(&gd);
-    b2PolygonShape gs;
-    gs.SetAsBox(base * 1.0f + 10.0f, 1.0f, b2Vec2(0, -1), 0);
-    ground->CreateFixture(&gs, 0.0f);
-    b2PolygonShape box;
-    box.SetAsBox(0.5f, 0.5f);
-    b2FixtureDef fd;
-    fd.shape = &box;
-    fd.density = 1.0f;
-    fd.friction = 0.6f;
-    b2Body* top = nullptr;
-    for (int row = 0; row < base; ++row) {
-        int n = base - row;
-        for (int i = 0; i < n; ++i) {
-            b2BodyDef bd;
-            bd.type = b2_dynamicBody;
-            bd.position.Set((static_cast<float>(i) - 0.5f * static_cast<float>(n - 1)) * 1.0f, 0.5f + static_cast<float>(row));
-            top = world.CreateBody(&bd);
-            top->CreateFixture(&fd);
-        }
-    }
+    b2Body* top = bench::buildPyramid(world, base, base * 1.0f + 10.0f);
     b2Vec2 p0 = top->GetPosition();
     Result r;
     auto t0 = Clock::now();

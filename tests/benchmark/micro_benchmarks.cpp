@@ -12,6 +12,8 @@
 #include <box2d/box2d.h>
 #include <impulse2d/impulse2d.hpp>
 
+#include "pyramid.hpp"
+
 #include <algorithm>
 #include <chrono>
 #include <cmath>
@@ -304,16 +306,7 @@ i2d::World makeI2dPyramid(int iterations) {
     s.positionCorrection = i2d::PositionCorrection::baumgarte;
     s.velocityIterations = iterations;
     i2d::World world(s);
-    i2d::BodyId ground = world.createBody({});
-    world.createPolygonShape(ground, {}, i2d::makeOffsetBox(40.0f, 1.0f, {0, -1}, 0));
-    for (int row = 0; row < kSolverBase; ++row) {
-        const int n = kSolverBase - row;
-        for (int i = 0; i < n; ++i) {
-            i2d::BodyId b = world.createBody({.type = i2d::BodyType::dynamic_body,
-                                              .position = {static_cast<float>(i) - 0.5f * static_cast<float>(n - 1), 0.5f + static_cast<float>(row)}});
-            world.createPolygonShape(b, {.density = 1.0f, .friction = 0.6f}, i2d::makeBox(0.5f, 0.5f));
-        }
-    }
+    bench::buildPyramid(world, kSolverBase, 40.0f);
     for (int i = 0; i < 60; ++i) world.step(1.0f / 60.0f);
     return world;
 }
@@ -321,25 +314,7 @@ i2d::World makeI2dPyramid(int iterations) {
 std::unique_ptr<b2World> makeB2dPyramid() {
     auto world = std::make_unique<b2World>(b2Vec2(0.0f, -10.0f));
     world->SetAllowSleeping(false);
-    b2BodyDef gd;
-    b2PolygonShape gs;
-    gs.SetAsBox(40.0f, 1.0f, b2Vec2(0, -1), 0);
-    world->CreateBody(&gd)->CreateFixture(&gs, 0.0f);
-    b2PolygonShape box;
-    box.SetAsBox(0.5f, 0.5f);
-    b2FixtureDef fd;
-    fd.shape = &box;
-    fd.density = 1.0f;
-    fd.friction = 0.6f;
-    for (int row = 0; row < kSolverBase; ++row) {
-        const int n = kSolverBase - row;
-        for (int i = 0; i < n; ++i) {
-            b2BodyDef bd;
-            bd.type = b2_dynamicBody;
-            bd.position.Set(static_cast<float>(i) - 0.5f * static_cast<float>(n - 1), 0.5f + static_cast<float>(row));
-            world->CreateBody(&bd)->CreateFixture(&fd);
-        }
-    }
+    bench::buildPyramid(*world, kSolverBase, 40.0f);
     for (int i = 0; i < 60; ++i) world->Step(1.0f / 60.0f, 8, 3);
     return world;
 }

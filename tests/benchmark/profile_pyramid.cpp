@@ -9,6 +9,8 @@
 // prints the top box's figures, which makes it a quick check as well.
 #include <impulse2d/impulse2d.hpp>
 
+#include "pyramid.hpp"
+
 #include <cmath>
 #include <cstdio>
 #include <cstdlib>
@@ -31,17 +33,7 @@ int main(int argc, char** argv) {
     i2d::WorldSettings s;
     s.enableSleep = false;
     i2d::World world(s);
-    i2d::BodyId ground = world.createBody({});
-    world.createPolygonShape(ground, {}, i2d::makeOffsetBox(base * 1.0f + 10.0f, 1.0f, {0, -1}, 0));
-    i2d::BodyId top;
-    for (int row = 0; row < base; ++row) {
-        int n = base - row;
-        for (int i = 0; i < n; ++i) {
-            float x = (static_cast<float>(i) - 0.5f * static_cast<float>(n - 1)) * 1.0f;
-            top = world.createBody({.type = i2d::BodyType::dynamic_body, .position = {x, 0.5f + static_cast<float>(row)}});
-            world.createPolygonShape(top, {.density = 1.0f, .friction = 0.6f}, i2d::makeBox(0.5f, 0.5f));
-        }
-    }
+    const i2d::BodyId top = bench::buildPyramid(world, base, base * 1.0f + 10.0f);
     const i2d::Vec2 p0 = world.position(top);
     for (int i = 0; i < warmup; ++i) world.step(1.0f / 60.0f);
     CALLGRIND_START_INSTRUMENTATION;
