@@ -117,6 +117,43 @@ void colourContacts(WorldImpl& w) {
     w.constraints.swap(w.constraintScratch);
 }
 
+// The push that separates overlapping bodies is capped per contact at
+// maxPushSpeed. A body overlapping many others deeply (boxes created on top of
+// each other) would otherwise collect one capped push per contact and fly
+// off at many times the cap: 100 boxes created at one point left at 50 m/s.
+// A body's deep contacts therefore share the cap, each getting
+// maxPushSpeed / n (n the larger count of its two bodies), which bounds the
+// push a body receives by about maxPushSpeed. Contacts of resting stacks
+// overlap by millimetres, far less than kDeepOverlap, and keep the full cap.
+constexpr float kDeepOverlap = 0.05f;  ///< m; ten times the linear slop
+
+void sharePushAmongDeepContacts(WorldImpl& w) {
+    const float maxPush = w.settings.maxPushSpeed;
+    std::vector<int>& count = w.deepContactCount;
+    count.assign(w.states.size(), 0);
+    auto deep = [](const WorldImpl& world, const ContactConstraint& cc) {
+        const Manifold& m = world.contacts[cc.contact].manifold;
+        for (int j = 0; j < m.pointCount; ++j)
+            if (m.points[j].separation < -kDeepOverlap) return true;
+        return false;
+    };
+    bool any = false;
+    for (ContactConstraint& cc : w.constraints) {
+        cc.maxPush = maxPush;
+        if (!deep(w, cc)) continue;
+        ++count[static_cast<std::size_t>(cc.a)];
+        ++count[static_cast<std::size_t>(cc.b)];
+        any = true;
+    }
+    if (!any) return;
+    const std::size_t zero = w.states.size() - 1;  // immovable stand-in: never shares
+    count[zero] = 1;
+    for (ContactConstraint& cc : w.constraints) {
+        const int n = std::max(count[static_cast<std::size_t>(cc.a)], count[static_cast<std::size_t>(cc.b)]);
+        if (n > 1 && deep(w, cc)) cc.maxPush = maxPush / static_cast<float>(n);
+    }
+}
+
 void prepareContacts(WorldImpl& w, float h, bool soft) {
     const WorldSettings& set = w.settings;
     w.constraints.clear();
@@ -189,6 +226,7 @@ void prepareContacts(WorldImpl& w, float h, bool soft) {
             }
         }
     }
+    sharePushAmongDeepContacts(w);
     colourContacts(w);
 }
 
@@ -225,7 +263,6 @@ void solveContactsFor(WorldImpl& w, float h) {
     const WorldSettings& set = w.settings;
     const float invH = 1.0f / h;
     const float slop = set.penetrationSlop;
-    const float maxPush = set.maxPushSpeed;
     const float beta = set.pushFactor;
     // The last relax of a step limits the approach speed for the next step's
     // first substep. With the closed-form impact model a fast approach belongs
@@ -260,12 +297,12 @@ void solveContactsFor(WorldImpl& w, float h) {
                 // Speculative: allow exactly the approach that closes the gap this (sub)step.
                 bias = s * invH;
             } else if constexpr (target == Target::soft_bias) {
-                bias = std::max(cc.biasRate * s, -maxPush);
+                bias = std::max(cc.biasRate * s, -cc.maxPush);
                 massScale = cc.massScale;
                 impulseScale = cc.impulseScale;
             } else if constexpr (target == Target::baumgarte) {
                 // Seed 001 eq. 5.3.1 with slop: push β·d/Δt, capped.
-                bias = std::max(beta * invH * std::min(s + slop, 0.0f), -maxPush);
+                bias = std::max(beta * invH * std::min(s + slop, 0.0f), -cc.maxPush);
             }
             if constexpr (target == Target::baumgarte || target == Target::no_push) {
                 // Seed 001 §8.2: restitution target added to the push (classic modes).

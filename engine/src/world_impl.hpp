@@ -167,6 +167,7 @@ struct ContactConstraint {
     float friction = 0, restitution = 0;
     float invMassA = 0, invIA = 0, invMassB = 0, invIB = 0;
     float biasRate = 0, massScale = 1, impulseScale = 0;  ///< soft contact coefficients
+    float maxPush = 0;  ///< push speed cap of this contact (m/s), shared among a body's deep contacts
     int pointCount = 0;
     ContactPointConstraint points[2];
 };
@@ -208,6 +209,7 @@ public:
     std::vector<int> colourCounts;
     std::vector<std::uint8_t> constraintColours;
     std::vector<int> activeJoints;
+    std::vector<int> deepContactCount;  ///< per solver body: contacts overlapping deeper than kDeepOverlap
     std::vector<int> unionParent;
     std::vector<std::uint32_t> impactChanged;
 

@@ -80,25 +80,19 @@ TEST(HardCases, HundredBoxesAtOnePointSeparateAndRestWithSplitImpulses) {
     EXPECT_GT(r.minDistance, 0.9f);
 }
 
-// Known failure, documented in docs/robustness.md: with the default soft
-// step the soft contacts of 99 coincident boxes add up and launch boxes at
-// 40–60 m/s in the first steps; some leave the 200 m ground and never rest.
-// Enable once the solver bounds the push of many coincident contacts.
-TEST(HardCases, DISABLED_HundredBoxesAtOnePointSeparateAndRestWithSoftStep) {
+// The same with the default soft step. Before a body's deep contacts shared
+// the push cap, the 99 coincident contacts of each box added their capped
+// pushes and launched boxes at 40-60 m/s (some never came to rest).
+TEST(HardCases, HundredBoxesAtOnePointSeparateAndRestWithSoftStep) {
     PileResult r = pileOfHundred(PositionCorrection::soft_step);
-    std::printf("[figure] 100 boxes at one point, soft step: peak speed %.2f m/s, asleep after %.2f s\n", r.peakSpeed,
-                r.restTime);
+    std::printf("[figure] 100 boxes at one point, soft step: peak speed %.2f m/s, asleep after %.2f s, closest centres "
+                "%.3f m\n",
+                r.peakSpeed, r.restTime, r.minDistance);
+    ASSERT_TRUE(r.finite);
     EXPECT_LT(r.peakSpeed, 20.0f);  // as with split impulses
     EXPECT_GE(r.restTime, 0.0f);
-}
-
-TEST(HardCases, HundredBoxesAtOnePointWithSoftStepStayFinite) {
-    PileResult r = pileOfHundred(PositionCorrection::soft_step);
-    std::printf("[figure] 100 boxes at one point, soft step (known failure): peak speed %.2f m/s, asleep after %.2f s\n",
-                r.peakSpeed, r.restTime);
-    // What holds today: state stays finite and the speed limit (400 m/s) holds.
-    EXPECT_TRUE(r.finite);
-    EXPECT_LE(r.peakSpeed, 400.0f * 1.01f);
+    EXPECT_LT(r.restTime, 20.0f);
+    EXPECT_GT(r.minDistance, 0.9f);
 }
 
 // A box created with 90% of its height inside the ground is pushed out at
