@@ -652,9 +652,25 @@ void integrateVelocities(WorldImpl& w, float h) {
     }
 }
 
+// The speed limits hold for the velocities the positions are integrated with,
+// after the constraints have acted: a joint or contact impulse can exceed what
+// integrateVelocities clamped (a fuzzed distance joint launched a body at
+// 1750 m/s and 55,000 rad/s). Angular: at most a quarter turn per (sub)step,
+// beyond which the rotation integration and the narrowphase lose the body's
+// orientation (Box2D v3 uses the same bound).
+constexpr float kMaxRotationPerStep = 0.25f * 3.14159265f;
+
+void clampVelocity(BodyState& s, float maxSpeed, float maxAngularSpeed) {
+    const float speed2 = lengthSquared(s.v);
+    if (speed2 > maxSpeed * maxSpeed) s.v *= maxSpeed / std::sqrt(speed2);
+    if (std::abs(s.w) > maxAngularSpeed) s.w = s.w > 0.0f ? maxAngularSpeed : -maxAngularSpeed;
+}
+
 void integratePositions(WorldImpl& w, float h) {
+    const float maxSpeed = w.settings.maxLinearSpeed, maxAngular = kMaxRotationPerStep / h;
     for (std::size_t i = 0; i < w.stateBodies.size(); ++i) {
         BodyState& s = w.states[i];
+        clampVelocity(s, maxSpeed, maxAngular);
         // Eq. 3.2.3-3.2.4 with the new velocities.
         s.dp = mulAdd(s.dp, h, s.v);
         s.dq = integrateRotation(s.dq, h * s.w);
@@ -723,6 +739,7 @@ void WorldImpl::solve(float dt) {
             // Move by v + v_push for this step only; v_push is then dropped.
             for (std::size_t i = 0; i < n; ++i) {
                 BodyState& s = states[i];
+                clampVelocity(s, settings.maxLinearSpeed, kMaxRotationPerStep / dt);
                 s.dp = mulAdd(s.dp, dt, s.v + biasV[i]);
                 s.dq = integrateRotation(s.dq, dt * (s.w + biasW[i]));
             }
