@@ -576,17 +576,17 @@ std::string machineLine() {
 const std::map<std::string, std::string>& shortfallNotes() {
     static const std::map<std::string, std::string> notes = {
         {"rain1000",
-         "Why: Impulse2D's largest penetration hardly moves with any setting (about 0.3 m, the distance a circle from "
-         "the top rows, falling at about 20 m/s, covers in one step), so it is made by first impacts, before any "
-         "contact exists, not by the solver; Box2D 2.4.1 stops dynamic bodies at static shapes with its continuous "
-         "collision and pushes the rest out with its position iterations, which is why its figure falls with them. "
-         "What it would take: speculative contact points out to the distance a pair can close in one step instead of "
-         "the fixed 2 cm, or continuous collision against static shapes."},
+         "Why: Impulse2D's largest penetration hardly moves with any setting (about 0.3 m). The circles start in "
+         "aligned columns and land column by column at about 11 m/s, each circle on the one below (dynamic against "
+         "dynamic: continuous collision only sweeps against static shapes), and the impact law's eight sweeps per "
+         "step do not carry the momentum through a 25-circle column in one step; Box2D 2.4.1 pushes the overlap out "
+         "with its position iterations, which is why its figure falls with them. What it would take: speculative "
+         "contact points out to the distance a pair can close in one step instead of the fixed 2 cm, or more impact "
+         "sweeps for long columns."},
         {"joint_grid",
-         "Why: soft_step caps the joint stiffness at an eighth of the substep rate (7.5 Hz at 1 substep, 15 at 2, 30 "
-         "at 4; the 60 Hz asked for only from 8 substeps on), so at few substeps its joints are softer than Box2D's "
-         "rigid rows with position iterations, and its cheapest step (1 substep) still costs more than Box2D at 2/1 "
-         "here. From 8 substeps on Impulse2D's stretch is below Box2D's best. What it would take: a joint that stays "
+         "Why: soft_step caps the joint stiffness at a quarter of the substep rate (15 Hz at 1 substep, 30 at 2; the "
+         "60 Hz asked for only from 4 substeps on), so at few substeps its joints are softer than Box2D's rigid rows "
+         "with position iterations, and its cheapest step (1 substep) still costs more than Box2D at 2/1 here. What it would take: a joint that stays "
          "stiff at few substeps (a position pass for joints, or a higher cap with the relax pass keeping it stable), "
          "and a cheaper joint row."},
         {"bounce",
@@ -621,7 +621,7 @@ void writeMarkdown(const std::vector<SceneResult>& results, const std::vector<Sc
     md << "**Settings swept.** Impulse2D: its defaults (the scene's settings: `soft_step`, 4 substeps, contact 30 Hz, "
           "joints 60 Hz, closed-form impacts); `soft_step` with 1, 2, 3, 4, 6, 8, 12, 16, 24, 32 substeps, with contact "
           "and joint stiffness ×2 (\"x2 Hz\") at 4, 8, 16 substeps and ×4 at 8, 16, 32 (the engine caps contact hertz "
-          "at a quarter and joint hertz at an eighth of the substep rate), and with the velocity-bias impact model "
+          "at a quarter and joint hertz at a quarter of the substep rate), and with the velocity-bias impact model "
           "(\"vbias\") at 1, 4, 8 substeps; `baumgarte` with 1, 2, 4, 8, 16, 32 velocity iterations; `split` with 2/1, "
           "4/2, 8/3, 16/6, 32/10 velocity/position iterations. `soft_step` solves once and relaxes once per substep, so "
           "the iteration counts do not apply to it. Box2D 2.4.1: 1/1, 2/1, 4/2, 8/3, 16/6, 32/10 velocity/position "
