@@ -4,9 +4,9 @@
 // the step deep inside a static shape, or pass through a thin one: no contact
 // exists at the step's start (the surface is beyond the speculative distance)
 // and none at its end (the body is already through). After the solver has
-// moved the bodies, each fast body's motion over the step is swept against the static shapes
-// near its path; if it would touch one, the body is put back to the first
-// time of impact along its sweep and keeps its velocity. The contact then
+// moved the bodies, each fast body's motion over the step is swept against
+// the static shapes near its path; if it would touch one, the body is put
+// back to the first time of impact along its sweep and keeps its velocity. The contact then
 // exists at the next step's start, closer than the speculative distance, and
 // the impact law and the solver stop the body at the surface. This is the
 // dynamic-versus-static scheme of Box2D v3 (which sweeps only from half the
@@ -142,7 +142,12 @@ void WorldImpl::solveContinuous() {
             const Shape& shape = shapes[sh];
             if (shape.isSensor) continue;
             const Core core = coreOf(shape);
-            const AABB swept = unionOf(computeShapeAABB(shape, xf0), computeShapeAABB(shape, xf1));
+            // The boxes at both ends, grown by how far the turn can carry a
+            // point off the straight path between them (|Δθ|·r).
+            AABB swept = unionOf(computeShapeAABB(shape, xf0), computeShapeAABB(shape, xf1));
+            const float arc = turnBound * body.reach;
+            swept.lower -= Vec2{arc, arc};
+            swept.upper += Vec2{arc, arc};
             staticTree.query(swept, [&](int other) {
                 const Shape& o = shapes[other];
                 if (o.isSensor || !shouldCollide(shape.filter, o.filter)) return true;
