@@ -752,9 +752,13 @@ void WorldImpl::solve(float dt) {
     storeJointImpulses(*this, dt);
 
     // Write back: centre of mass, rotation, origin, velocities; clear forces.
+    // The relax and restitution passes act after the last position update, so
+    // the limits are applied once more to the velocities the body keeps.
+    const float maxAngular = kMaxRotationPerStep / (dt / static_cast<float>(substeps));
     for (std::size_t i = 0; i < n; ++i) {
         Body& body = bodies[stateBodies[i]];
-        const BodyState& s = states[i];
+        BodyState& s = states[i];
+        clampVelocity(s, settings.maxLinearSpeed, maxAngular);
         body.v = s.v;
         body.w = s.w;
         body.center += s.dp;
