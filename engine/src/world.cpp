@@ -276,6 +276,9 @@ void World::step(float dt) {
     requireFinite(dt, "time step");
     if (dt <= 0.0f) fail("time step must be > 0");
     if (dt > 1.0f) fail("time step must be <= 1 s");
+    // The solver divides by the (sub)step: a denormal dt made 1/h infinite
+    // and a kinematic body's position NaN (found by fuzz_world).
+    if (dt < 1.0e-6f) fail("time step must be >= 1e-6 s");
     impl_->step(dt);
 }
 
