@@ -740,8 +740,15 @@ void WorldImpl::solve(float dt) {
             for (std::size_t i = 0; i < n; ++i) {
                 BodyState& s = states[i];
                 clampVelocity(s, settings.maxLinearSpeed, kMaxRotationPerStep / dt);
-                s.dp = mulAdd(s.dp, dt, s.v + biasV[i]);
-                s.dq = integrateRotation(s.dq, dt * (s.w + biasW[i]));
+                // The limits hold for the motion including the push: a light,
+                // small body's pseudo-velocity could otherwise turn it by an
+                // angle whose square overflows (fuzz_world: NaN rotation).
+                BodyState moved = s;
+                moved.v = s.v + biasV[i];
+                moved.w = s.w + biasW[i];
+                clampVelocity(moved, settings.maxLinearSpeed, kMaxRotationPerStep / dt);
+                s.dp = mulAdd(s.dp, dt, moved.v);
+                s.dq = integrateRotation(s.dq, dt * moved.w);
             }
         } else {
             integratePositions(*this, dt);
