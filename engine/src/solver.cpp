@@ -507,6 +507,14 @@ bool isRigid(const DistanceJoint& jt) {
     return !(jt.def.enableSpring && (!jt.def.enableLimit || jt.def.minLength < jt.def.maxLength));
 }
 
+// Adds `impulse` to `accumulated` within [lo, hi]; returns the part applied.
+float boundedIncrement(float& accumulated, float impulse, float lo, float hi) {
+    const float total = clamp(accumulated + impulse, lo, hi);
+    impulse = total - accumulated;
+    accumulated = total;
+    return impulse;
+}
+
 void solveJoints(WorldImpl& w, float h, Target target) {
     const WorldSettings& set = w.settings;
     const float invH = 1.0f / h;
@@ -522,6 +530,11 @@ void solveJoints(WorldImpl& w, float h, Target target) {
         BodyState& sA = jt.a >= 0 ? w.states[static_cast<std::size_t>(jt.a)] : (dA = BodyState{});
         BodyState& sB = jt.b >= 0 ? w.states[static_cast<std::size_t>(jt.b)] : (dB = BodyState{});
         JointFrame f = currentFrame(jt, sA, sB);
+        // A joint's impulse per (sub)step never needs to exceed what changes
+        // the relative speed along it by twice the speed limit; bounding it
+        // keeps a diverging row (a fuzzed, stretched 600:1 joint reached
+        // 1e36 N·s, then NaN) finite.
+        const float maxImpulse = 2.0f * set.maxLinearSpeed * jt.axialMass;
         auto cdot = [&]() {
             Vec2 dv = (sB.v + cross(sB.w, f.rB)) - (sA.v + cross(sA.w, f.rA));
             return dot(dv, f.axis);
@@ -537,14 +550,14 @@ void solveJoints(WorldImpl& w, float h, Target target) {
                 bias = set.pushFactor * invH * C;  // seed 001 eq. 5.2.3
             }
             float impulse = -ms * jt.axialMass * (cdot() + bias) - is * jt.impulse;
-            jt.impulse += impulse;
+            impulse = boundedIncrement(jt.impulse, impulse, -maxImpulse, maxImpulse);
             applyAxial(jt, f, impulse, sA, sB);
         } else if (jt.def.hertz > 0.0f) {
             // A spring: its softness is physical, so it applies in every pass.
             Softness spring = makeSoft(jt.def.hertz, jt.def.dampingRatio, h);
             float C = f.length - jt.def.length;
             float impulse = -spring.massScale * jt.axialMass * (cdot() + spring.biasRate * C) - spring.impulseScale * jt.impulse;
-            jt.impulse += impulse;
+            impulse = boundedIncrement(jt.impulse, impulse, -maxImpulse, maxImpulse);
             applyAxial(jt, f, impulse, sA, sB);
         }
         if (jt.def.enableLimit && jt.def.minLength < jt.def.maxLength) {
@@ -562,9 +575,7 @@ void solveJoints(WorldImpl& w, float h, Target target) {
                     bias = set.pushFactor * invH * C;
                 }
                 float impulse = -ms * jt.axialMass * (sign * cdot() + bias) - is * accumulated;
-                float newImpulse = std::max(0.0f, accumulated + impulse);
-                impulse = newImpulse - accumulated;
-                accumulated = newImpulse;
+                impulse = boundedIncrement(accumulated, impulse, 0.0f, maxImpulse);
                 applyAxial(jt, f, sign * impulse, sA, sB);
             };
             // Lower limit: length ≥ minLength (pushes apart).
