@@ -41,9 +41,10 @@ public:
 
     // ---- Stepping -------------------------------------------------------
 
-    /// Advance the world by dt seconds (> 0, finite; use a fixed value, usually 1/60).
-    /// Runs: broadphase pairs → narrowphase → impacts → velocity solve →
-    /// integrate → position correction → sleep. Events of this step are
+    /// Advance the world by dt seconds (finite, in [1e-6, 1]; use a fixed
+    /// value, usually 1/60). Runs: broadphase pairs → narrowphase → impacts →
+    /// velocity solve → integrate → position correction → continuous
+    /// collision of fast bodies against static shapes → sleep. Events of this step are
     /// readable afterwards until the next step.
     void step(float dt);
 
