@@ -127,30 +127,15 @@ void colourContacts(WorldImpl& w) {
 // overlap by millimetres, far less than kDeepOverlap, and keep the full cap.
 constexpr float kDeepOverlap = 0.05f;  ///< m; ten times the linear slop
 
+// Divides the push cap of each deep contact by the larger deep-contact count
+// of its two bodies (counted in prepareContacts).
 void sharePushAmongDeepContacts(WorldImpl& w) {
-    const float maxPush = w.settings.maxPushSpeed;
     std::vector<int>& count = w.deepContactCount;
-    count.assign(w.states.size(), 0);
-    auto deep = [](const WorldImpl& world, const ContactConstraint& cc) {
-        const Manifold& m = world.contacts[cc.contact].manifold;
-        for (int j = 0; j < m.pointCount; ++j)
-            if (m.points[j].separation < -kDeepOverlap) return true;
-        return false;
-    };
-    bool any = false;
+    count.back() = 1;  // the immovable stand-in never shares
     for (ContactConstraint& cc : w.constraints) {
-        cc.maxPush = maxPush;
-        if (!deep(w, cc)) continue;
-        ++count[static_cast<std::size_t>(cc.a)];
-        ++count[static_cast<std::size_t>(cc.b)];
-        any = true;
-    }
-    if (!any) return;
-    const std::size_t zero = w.states.size() - 1;  // immovable stand-in: never shares
-    count[zero] = 1;
-    for (ContactConstraint& cc : w.constraints) {
+        if (!cc.deepOverlap) continue;
         const int n = std::max(count[static_cast<std::size_t>(cc.a)], count[static_cast<std::size_t>(cc.b)]);
-        if (n > 1 && deep(w, cc)) cc.maxPush = maxPush / static_cast<float>(n);
+        if (n > 1) cc.maxPush /= static_cast<float>(n);
     }
 }
 
@@ -166,6 +151,8 @@ void prepareContacts(WorldImpl& w, float h, bool soft) {
     const bool biasRestitution = set.impactModel == ImpactModel::velocity_bias && !soft;
     const float fullDt = soft ? h * static_cast<float>(set.substeps) : h;
     const float warm = set.enableWarmStarting ? 1.0f : 0.0f;
+    w.deepContactCount.assign(w.states.size(), 0);
+    bool anyDeep = false;
 
     for (int c : w.activeContacts) {
         const Contact& ct = w.contacts[c];
@@ -194,6 +181,14 @@ void prepareContacts(WorldImpl& w, float h, bool soft) {
         cc.massScale = sf.massScale;
         cc.impulseScale = sf.impulseScale;
         cc.pointCount = ct.manifold.pointCount;
+        cc.maxPush = set.maxPushSpeed;
+        cc.deepOverlap = false;
+        for (int j = 0; j < cc.pointCount; ++j) cc.deepOverlap = cc.deepOverlap || ct.manifold.points[j].separation < -kDeepOverlap;
+        if (cc.deepOverlap) {
+            ++w.deepContactCount[static_cast<std::size_t>(a)];
+            ++w.deepContactCount[static_cast<std::size_t>(b)];
+            anyDeep = true;
+        }
         const Vec2 n = cc.normal;
         const Vec2 t = rightPerp(n);
         const Vec2 vA = bA.v, vB = bB.v;
@@ -226,7 +221,7 @@ void prepareContacts(WorldImpl& w, float h, bool soft) {
             }
         }
     }
-    sharePushAmongDeepContacts(w);
+    if (anyDeep) sharePushAmongDeepContacts(w);
     colourContacts(w);
 }
 

@@ -168,6 +168,7 @@ struct ContactConstraint {
     float invMassA = 0, invIA = 0, invMassB = 0, invIB = 0;
     float biasRate = 0, massScale = 1, impulseScale = 0;  ///< soft contact coefficients
     float maxPush = 0;  ///< push speed cap of this contact (m/s), shared among a body's deep contacts
+    bool deepOverlap = false;  ///< a point overlaps by more than kDeepOverlap (solver.cpp)
     int pointCount = 0;
     ContactPointConstraint points[2];
 };
