@@ -4,8 +4,15 @@
 #include <stdexcept>
 #include <string>
 #include <utility>
+#include <vector>
 
 namespace tb {
+
+/// The value after option args[i] (advancing i); std::invalid_argument when it is missing.
+inline const std::string& optionValue(const std::vector<std::string>& args, std::size_t& i) {
+    if (i + 1 >= args.size()) throw std::invalid_argument(args[i] + ": missing value");
+    return args[++i];
+}
 
 /// The whole of `value` as an integer; std::invalid_argument naming `flag` otherwise.
 inline int parseIntArg(const std::string& flag, const std::string& value) {

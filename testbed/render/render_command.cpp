@@ -168,10 +168,7 @@ int runRenderCommand(const std::vector<std::string>& args) {
     try {
         for (std::size_t i = 0; i < args.size(); ++i) {
             const std::string& a = args[i];
-            auto value = [&]() -> const std::string& {
-                if (i + 1 >= args.size()) throw std::invalid_argument(a + ": missing value");
-                return args[++i];
-            };
+            auto value = [&]() -> const std::string& { return optionValue(args, i); };
             if (a == "-h" || a == "--help") {
                 printRenderUsage(std::cout);
                 return 0;
