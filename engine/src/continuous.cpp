@@ -23,46 +23,12 @@
 #include <cmath>
 
 #include "impulse2d/collision.hpp"
-#include "world_impl.hpp"
+#include "continuous.hpp"
+#include "world_state.hpp"
 
 namespace i2d::detail {
 
 namespace {
-
-// A shape as a convex core (points) and a radius, for the distance function.
-struct Core {
-    Vec2 points[kMaxPolygonVertices];
-    int count = 0;
-    float radius = 0.0f;
-};
-
-Core coreOf(const Shape& s) {
-    Core c;
-    switch (s.type) {
-        case ShapeType::circle:
-            c.points[0] = s.circle.center;
-            c.count = 1;
-            c.radius = s.circle.radius;
-            break;
-        case ShapeType::capsule:
-            c.points[0] = s.capsule.center1;
-            c.points[1] = s.capsule.center2;
-            c.count = 2;
-            c.radius = s.capsule.radius;
-            break;
-        case ShapeType::segment:
-            c.points[0] = s.segment.point1;
-            c.points[1] = s.segment.point2;
-            c.count = 2;
-            break;
-        case ShapeType::polygon:
-            std::copy(s.polygon.vertices, s.polygon.vertices + s.polygon.count, c.points);
-            c.count = s.polygon.count;
-            c.radius = s.polygon.radius;
-            break;
-    }
-    return c;
-}
 
 // Pose of a body at time t ∈ [0, 1] of its sweep from (c0, angle0) by (dc, dAngle).
 struct Sweep {
@@ -83,7 +49,7 @@ constexpr int kMaxAdvances = 30;
 // the static core, or 1 when it does not within the step. A pair already
 // within the target band at t = 0 touches or overlaps: its contact holds it,
 // and sweeping it would stall a body sliding fast along the ground.
-float timeOfImpact(const Core& moving, const Sweep& sweep, float bound, const Core& fixed, const Transform& xfFixed,
+float timeOfImpact(const ShapeCore& moving, const Sweep& sweep, float bound, const ShapeCore& fixed, const Transform& xfFixed,
                    float target) {
     const float tolerance = 0.25f * kLinearSlop;
     const float radii = moving.radius + fixed.radius;
@@ -101,23 +67,12 @@ float timeOfImpact(const Core& moving, const Sweep& sweep, float bound, const Co
 
 }  // namespace
 
-float WorldImpl::solidReach(const Body& body) const {
-    float reach = -1.0f;
-    for (int sh : body.shapes) {
-        const Shape& shape = shapes[sh];
-        if (shape.isSensor) continue;
-        const Core core = coreOf(shape);
-        for (int k = 0; k < core.count; ++k) reach = std::max(reach, length(core.points[k] - body.localCenter));
-    }
-    return reach;
-}
-
-void WorldImpl::solveContinuous() {
+void solveContinuous(WorldState& w) {
     const float target = kLinearSlop;
-    for (std::size_t i = 0; i < stateBodies.size(); ++i) {
-        Body& body = bodies[stateBodies[i]];
+    for (std::size_t i = 0; i < w.solver.stateBodies.size(); ++i) {
+        Body& body = w.bodies[w.solver.stateBodies[i]];
         if (body.type != BodyType::dynamic_body || body.reach < 0.0f) continue;
-        const BodyState& s = states[i];
+        const BodyState& s = w.solver.states[i];
         // |Δθ| ≤ (π/2)·|sin Δθ| while the turn is under a quarter: a bound
         // without atan2 for the many bodies that are not fast.
         const float turnBound = s.dq.c >= 0.0f ? 1.5707964f * std::abs(s.dq.s) : 3.1415927f;
@@ -125,7 +80,7 @@ void WorldImpl::solveContinuous() {
         // A body moving less than the speculative distance always meets a
         // surface through a contact made at the step's start. Beyond it, it
         // could end the step deep inside (or past) a static shape: swept.
-        if (bound <= settings.speculativeDistance) continue;
+        if (bound <= w.settings.speculativeDistance) continue;
 
         const float dAngle = angleOf(s.dq);
         Sweep sweep;
@@ -139,20 +94,20 @@ void WorldImpl::solveContinuous() {
         const Transform xf0 = sweep.at(0.0f), xf1 = body.xf;
         float tMin = 1.0f;
         for (int sh : body.shapes) {
-            const Shape& shape = shapes[sh];
+            const Shape& shape = w.shapes[sh];
             if (shape.isSensor) continue;
-            const Core core = coreOf(shape);
+            const ShapeCore core = shapeCore(shape);
             // The boxes at both ends, grown by how far the turn can carry a
             // point off the straight path between them (|Δθ|·r).
-            AABB swept = unionOf(computeShapeAABB(shape, xf0), computeShapeAABB(shape, xf1));
+            AABB swept = unionOf(shapeAABB(shape, xf0), shapeAABB(shape, xf1));
             const float arc = turnBound * body.reach;
             swept.lower -= Vec2{arc, arc};
             swept.upper += Vec2{arc, arc};
-            staticTree.query(swept, [&](int other) {
-                const Shape& o = shapes[other];
+            w.broadPhase.staticTree.query(swept, [&](int other) {
+                const Shape& o = w.shapes[other];
                 if (o.isSensor || !shouldCollide(shape.filter, o.filter)) return true;
-                if (jointPreventsCollision(shape.body, o.body)) return true;
-                const float t = timeOfImpact(core, sweep, bound, coreOf(o), bodies[o.body].xf, target);
+                if (jointPreventsCollision(w, shape.body, o.body)) return true;
+                const float t = timeOfImpact(core, sweep, bound, shapeCore(o), w.bodies[o.body].xf, target);
                 tMin = std::min(tMin, t);
                 return true;
             });

@@ -27,7 +27,7 @@
 namespace i2d {
 
 namespace detail {
-class WorldImpl;
+struct WorldState;
 }
 
 class World {
@@ -193,7 +193,10 @@ public:
     void draw(DebugDraw& drawer) const;
 
 private:
-    std::unique_ptr<detail::WorldImpl> impl_;
+    /// The world's state; throws i2d::Error for a moved-from World.
+    detail::WorldState& state() const;
+
+    std::unique_ptr<detail::WorldState> state_;
 };
 
 }  // namespace i2d

@@ -1,7 +1,9 @@
-// Impacts in the world: contacts that close with a real approach speed are
-// resolved by the closed-form law of seed 000 §5 (impact.cpp) before the
-// iterative solver runs, which then only sees what remains (resting contact,
-// joints) and adds no restitution of its own.
+// The impact stage of a step: contacts that close with a real approach speed
+// are resolved by the closed-form impact law (impact_law.cpp; Baber (2011),
+// A Correction To Brian Mirtich's Thesis "Impulse-based Dynamic Simulation
+// of Rigid Body Systems", §5) before the iterative solver runs, which then
+// only sees what remains (resting contact, joints) and adds no restitution of
+// its own.
 //
 // Strategy (see docs/impacts.md):
 //  * A manifold's impact point is the mean of its points that approach faster
@@ -22,7 +24,8 @@
 #include <cmath>
 
 #include "impulse2d/impact.hpp"
-#include "world_impl.hpp"
+#include "impact_stage.hpp"
+#include "world_state.hpp"
 
 namespace i2d::detail {
 
@@ -30,23 +33,24 @@ namespace {
 constexpr int kMaxSweeps = 8;
 }
 
-void WorldImpl::resolveImpacts(float dt) {
+void resolveImpacts(WorldState& w, float dt) {
+    const WorldSettings& settings = w.settings;
     if (settings.impactModel != ImpactModel::closed_form) return;
     const float threshold = settings.impactThreshold;
 
     std::uint32_t sweepStamp = 0;
     // changed[b] == the sweep in which body b's velocity last changed.
-    std::vector<std::uint32_t>& changed = impactChanged;
-    changed.assign(static_cast<std::size_t>(bodies.capacity()), 0u);
+    std::vector<std::uint32_t>& changed = w.impactChanged;
+    changed.assign(static_cast<std::size_t>(w.bodies.capacity()), 0u);
 
     for (int sweep = 1; sweep <= kMaxSweeps; ++sweep) {
         bool any = false;
         sweepStamp = static_cast<std::uint32_t>(sweep);
-        for (int c : activeContacts) {
-            Contact& ct = contacts[c];
+        for (int c : w.activeContacts) {
+            Contact& ct = w.contacts[c];
             if (!ct.touching || ct.isSensor || ct.manifold.pointCount == 0) continue;
-            Body& A = bodies[ct.bodyA];
-            Body& B = bodies[ct.bodyB];
+            Body& A = w.bodies[ct.bodyA];
+            Body& B = w.bodies[ct.bodyB];
             if (A.type != BodyType::dynamic_body && B.type != BodyType::dynamic_body) continue;
             if (!A.awake && !B.awake) continue;
             if (sweep > 1 && changed[static_cast<std::size_t>(ct.bodyA)] != sweepStamp - 1 &&

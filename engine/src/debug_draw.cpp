@@ -1,7 +1,7 @@
 // World::draw: hands every shape, joint and (optionally) AABB and contact to
 // a DebugDraw implementation, in world coordinates.
 #include "impulse2d/world.hpp"
-#include "world_impl.hpp"
+#include "world_state.hpp"
 
 namespace i2d {
 
@@ -17,7 +17,7 @@ Color bodyColor(const detail::Body& b) {
 void World::draw(DebugDraw& dd) const {
     // A drawer that calls back into the world to create or destroy things
     // would edit the arrays iterated here: such calls are refused.
-    bool& locked = impl_->locked;
+    bool& locked = state().locked;
     const bool wasLocked = locked;
     locked = true;
     struct Restore {
@@ -25,7 +25,7 @@ void World::draw(DebugDraw& dd) const {
         bool value;
         ~Restore() { flag = value; }
     } restore{locked, wasLocked};
-    const auto& w = *impl_;
+    const auto& w = state();
     if (dd.drawShapes) {
         for (int s = 0; s < w.shapes.capacity(); ++s) {
             const detail::Shape& sh = w.shapes[s];
@@ -35,19 +35,19 @@ void World::draw(DebugDraw& dd) const {
             if (sh.isSensor) c.a = 0.3f;
             switch (sh.type) {
                 case ShapeType::circle: {
-                    Vec2 center = transformPoint(b.xf, sh.circle.center);
-                    dd.drawSolidCircle(center, sh.circle.radius, rotate(b.xf.q, {1.0f, 0.0f}), c);
+                    Vec2 center = transformPoint(b.xf, sh.geometry.circle.center);
+                    dd.drawSolidCircle(center, sh.geometry.circle.radius, rotate(b.xf.q, {1.0f, 0.0f}), c);
                     break;
                 }
                 case ShapeType::capsule:
-                    dd.drawSolidCapsule(transformPoint(b.xf, sh.capsule.center1), transformPoint(b.xf, sh.capsule.center2),
-                                        sh.capsule.radius, c);
+                    dd.drawSolidCapsule(transformPoint(b.xf, sh.geometry.capsule.center1), transformPoint(b.xf, sh.geometry.capsule.center2),
+                                        sh.geometry.capsule.radius, c);
                     break;
                 case ShapeType::polygon:
-                    dd.drawSolidPolygon(b.xf, sh.polygon.vertices, sh.polygon.count, sh.polygon.radius, c);
+                    dd.drawSolidPolygon(b.xf, sh.geometry.polygon.vertices, sh.geometry.polygon.count, sh.geometry.polygon.radius, c);
                     break;
                 case ShapeType::segment:
-                    dd.drawSegment(transformPoint(b.xf, sh.segment.point1), transformPoint(b.xf, sh.segment.point2), c);
+                    dd.drawSegment(transformPoint(b.xf, sh.geometry.segment.point1), transformPoint(b.xf, sh.geometry.segment.point2), c);
                     break;
             }
         }

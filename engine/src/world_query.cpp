@@ -1,9 +1,10 @@
-// World queries: ray casts, box overlap and point tests over both trees.
+// World: the public API facade for queries — ray casts, box overlap and
+// point tests over both broadphase trees.
 #include <algorithm>
 
 #include "impulse2d/world.hpp"
 #include "validation.hpp"
-#include "world_impl.hpp"
+#include "world_state.hpp"
 
 namespace i2d {
 
@@ -15,13 +16,7 @@ bool passes(const Filter& f, const QueryFilter& q) {
 
 std::optional<RayHit> castShape(const detail::Shape& sh, const Transform& xf, Vec2 origin, Vec2 translation, float maxFraction) {
     RayCastInput in{invTransformPoint(xf, origin), invRotate(xf.q, translation), maxFraction};
-    std::optional<RayHit> hit;
-    switch (sh.type) {
-        case ShapeType::circle: hit = rayCast(in, sh.circle); break;
-        case ShapeType::capsule: hit = rayCast(in, sh.capsule); break;
-        case ShapeType::polygon: hit = rayCast(in, sh.polygon); break;
-        case ShapeType::segment: hit = rayCast(in, sh.segment); break;
-    }
+    std::optional<RayHit> hit = detail::shapeRayCast(sh, in);
     if (hit) {
         hit->point = transformPoint(xf, hit->point);
         hit->normal = rotate(xf.q, hit->normal);
@@ -32,15 +27,15 @@ std::optional<RayHit> castShape(const detail::Shape& sh, const Transform& xf, Ve
 // Shapes of both trees whose fat box overlaps `box`, that pass the filter and
 // the exact test `accept`, as handles in slot order (independent of tree shape).
 template <class Accept>
-std::vector<ShapeId> shapesInBox(const detail::WorldImpl& w, const AABB& box, const QueryFilter& filter, Accept accept) {
+std::vector<ShapeId> shapesInBox(const detail::WorldState& w, const AABB& box, const QueryFilter& filter, Accept accept) {
     std::vector<int> found;
     auto visit = [&](int s) {
         const detail::Shape& sh = w.shapes[s];
         if (passes(sh.filter, filter) && accept(sh)) found.push_back(s);
         return true;
     };
-    w.staticTree.query(box, visit);
-    w.movingTree.query(box, visit);
+    w.broadPhase.staticTree.query(box, visit);
+    w.broadPhase.movingTree.query(box, visit);
     std::sort(found.begin(), found.end());
     std::vector<ShapeId> out;
     out.reserve(found.size());
@@ -57,7 +52,7 @@ void checkRay(Vec2 origin, Vec2 translation) {
 
 std::optional<RayResult> World::rayCastClosest(Vec2 origin, Vec2 translation, const QueryFilter& filter) const {
     checkRay(origin, translation);
-    const auto& w = *impl_;
+    const auto& w = state();
     std::optional<RayResult> best;
     auto visit = [&](int s, float maxFraction) -> float {
         const detail::Shape& sh = w.shapes[s];
@@ -70,15 +65,15 @@ std::optional<RayResult> World::rayCastClosest(Vec2 origin, Vec2 translation, co
         return hit->fraction;
     };
     float maxFraction = 1.0f;
-    w.staticTree.rayCast(origin, translation, maxFraction, visit);
+    w.broadPhase.staticTree.rayCast(origin, translation, maxFraction, visit);
     if (best) maxFraction = best->fraction;
-    w.movingTree.rayCast(origin, translation, maxFraction, visit);
+    w.broadPhase.movingTree.rayCast(origin, translation, maxFraction, visit);
     return best;
 }
 
 std::vector<RayResult> World::rayCastAll(Vec2 origin, Vec2 translation, const QueryFilter& filter) const {
     checkRay(origin, translation);
-    const auto& w = *impl_;
+    const auto& w = state();
     std::vector<RayResult> out;
     auto visit = [&](int s, float maxFraction) -> float {
         const detail::Shape& sh = w.shapes[s];
@@ -87,8 +82,8 @@ std::vector<RayResult> World::rayCastAll(Vec2 origin, Vec2 translation, const Qu
         if (hit) out.push_back({w.shapeHandle(s), hit->point, hit->normal, hit->fraction});
         return maxFraction;
     };
-    w.staticTree.rayCast(origin, translation, 1.0f, visit);
-    w.movingTree.rayCast(origin, translation, 1.0f, visit);
+    w.broadPhase.staticTree.rayCast(origin, translation, 1.0f, visit);
+    w.broadPhase.movingTree.rayCast(origin, translation, 1.0f, visit);
     std::sort(out.begin(), out.end(), [](const RayResult& a, const RayResult& b) {
         return a.fraction != b.fraction ? a.fraction < b.fraction : a.shape.index1 < b.shape.index1;
     });
@@ -98,24 +93,17 @@ std::vector<RayResult> World::rayCastAll(Vec2 origin, Vec2 translation, const Qu
 std::vector<ShapeId> World::overlapAABB(const AABB& box, const QueryFilter& filter) const {
     detail::requireBounded(box.lower, "box lower");
     detail::requireBounded(box.upper, "box upper");
-    const auto& w = *impl_;
+    const auto& w = state();
     return shapesInBox(w, box, filter, [&](const detail::Shape& sh) {
-        return overlaps(w.computeShapeAABB(sh, w.bodies[sh.body].xf), box);
+        return overlaps(detail::shapeAABB(sh, w.bodies[sh.body].xf), box);
     });
 }
 
 std::vector<ShapeId> World::queryPoint(Vec2 p, const QueryFilter& filter) const {
     detail::requireBounded(p, "point");
-    const auto& w = *impl_;
+    const auto& w = state();
     return shapesInBox(w, AABB{p, p}, filter, [&](const detail::Shape& sh) {
-        Vec2 local = invTransformPoint(w.bodies[sh.body].xf, p);
-        switch (sh.type) {
-            case ShapeType::circle: return containsPoint(sh.circle, local);
-            case ShapeType::capsule: return containsPoint(sh.capsule, local);
-            case ShapeType::polygon: return containsPoint(sh.polygon, local);
-            case ShapeType::segment: break;
-        }
-        return false;
+        return detail::shapeContains(sh, invTransformPoint(w.bodies[sh.body].xf, p));
     });
 }
 

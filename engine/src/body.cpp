@@ -1,0 +1,76 @@
+// Bodies: mass properties from the shapes, the reach of a body's surface,
+// and whether a joint keeps two bodies from colliding.
+#include <algorithm>
+
+#include "world_state.hpp"
+
+namespace i2d::detail {
+
+void updateMass(WorldState& w, int b) {
+    Body& body = w.bodies[b];
+    body.mass = body.invMass = body.inertia = body.invInertia = 0.0f;
+    body.localCenter = {};
+    if (body.type != BodyType::dynamic_body) {
+        body.center = transformPoint(body.xf, body.localCenter);
+        return;
+    }
+    // Parallel-axis sum: I_origin = Σ (I_i + m_i |c_i|²); I_com = I_origin − M |c|².
+    float inertiaAtOrigin = 0.0f;
+    Vec2 weighted{};
+    for (int s : body.shapes) {
+        const Shape& sh = w.shapes[s];
+        if (sh.density == 0.0f) continue;
+        const std::optional<MassData> md = shapeMass(sh);
+        if (!md) continue;
+        body.mass += md->mass;
+        weighted += md->mass * md->center;
+        inertiaAtOrigin += md->rotationalInertia + md->mass * dot(md->center, md->center);
+    }
+    // A positive mass too small to invert (denormal densities) counts as no
+    // mass: 1/m would be infinite and the centre of mass 0·∞ = NaN.
+    if (body.mass > 0.0f && isFinite(1.0f / body.mass)) {
+        body.invMass = 1.0f / body.mass;
+        body.localCenter = body.invMass * weighted;
+        body.inertia = inertiaAtOrigin - body.mass * dot(body.localCenter, body.localCenter);
+    } else {
+        // A dynamic body without mass still needs one to move: 1 kg, no rotation.
+        body.mass = 1.0f;
+        body.invMass = 1.0f;
+        body.inertia = 0.0f;
+    }
+    body.reach = solidReach(w, body);
+    if (body.inertia > 0.0f && isFinite(1.0f / body.inertia) && !body.fixedRotation) {
+        body.invInertia = 1.0f / body.inertia;
+    } else {
+        body.invInertia = 0.0f;
+    }
+    // Keep the velocity of the centre of mass consistent when it shifts.
+    Vec2 oldCenter = body.center;
+    body.center = transformPoint(body.xf, body.localCenter);
+    body.v += cross(body.w, body.center - oldCenter);
+}
+
+float solidReach(const WorldState& w, const Body& body) {
+    float reach = -1.0f;
+    for (int s : body.shapes) {
+        const Shape& shape = w.shapes[s];
+        if (shape.isSensor) continue;
+        const ShapeCore core = shapeCore(shape);
+        for (int k = 0; k < core.count; ++k) reach = std::max(reach, length(core.points[k] - body.localCenter));
+    }
+    return reach;
+}
+
+bool jointPreventsCollision(const WorldState& w, int a, int b) {
+    const Body& ba = w.bodies[a];
+    const Body& bb = w.bodies[b];
+    const Body& fewer = ba.joints.size() <= bb.joints.size() ? ba : bb;
+    for (int j : fewer.joints) {
+        const DistanceJoint& jt = w.joints[j];
+        if (!jt.def.collideConnected && ((jt.bodyA == a && jt.bodyB == b) || (jt.bodyA == b && jt.bodyB == a)))
+            return true;
+    }
+    return false;
+}
+
+}  // namespace i2d::detail

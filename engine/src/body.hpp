@@ -1,0 +1,91 @@
+// Bodies: what the world keeps of each body between steps, and the two
+// compact records the solver streams through during a step.
+//
+//   Body             everything about a body (transform, velocity, mass,
+//                    damping, forces, links to its shapes, contacts and joints)
+//   BodyState        32 bytes per awake body: what every solver pass reads
+//                    and writes (velocity and the motion since the step began)
+//   BodyIntegration  24 bytes per awake body: the constant inputs of the
+//                    velocity integration, gathered once per step
+#pragma once
+
+#include <cstdint>
+#include <vector>
+
+#include "impulse2d/types.hpp"
+#include "slot_array.hpp"
+
+namespace i2d::detail {
+
+struct WorldState;
+
+struct Body {
+    Transform xf{};       ///< origin and rotation
+    Vec2 center{};        ///< centre of mass, world
+    Vec2 localCenter{};   ///< centre of mass, body frame
+    Vec2 v{};             ///< velocity of the centre of mass (m/s)
+    float w = 0.0f;       ///< angular velocity (rad/s)
+    Vec2 force{};         ///< accumulated for the next step (N)
+    float torque = 0.0f;  ///< N·m
+    float mass = 0.0f, invMass = 0.0f;
+    float inertia = 0.0f, invInertia = 0.0f;  ///< about the centre of mass
+    float linearDamping = 0.0f, angularDamping = 0.0f;
+    float gravityScale = 1.0f;
+    float sleepTime = 0.0f;  ///< seconds at rest (island.cpp)
+    /// Farthest core point of a solid shape from the centre of mass (m); −1
+    /// when the body has no solid shape. Bounds how far a turn moves its
+    /// surface (continuous.cpp). Set by updateMass.
+    float reach = -1.0f;
+    std::uint32_t generation = 1;
+    int awakeIndex = kNullIndex;   ///< position in IslandSet::awakeBodies
+    int sleepIsland = kNullIndex;  ///< sleeping island this body belongs to
+    int solverIndex = kNullIndex;  ///< index into the solver arrays during a step
+    BodyType type = BodyType::static_body;
+    bool fixedRotation = false;
+    bool awake = true;
+    bool enableSleep = true;
+    bool alive = false;
+    std::uintptr_t userData = 0;
+    std::vector<int> shapes;
+    std::vector<int> contacts;
+    std::vector<int> joints;
+};
+
+/// Solver state of one awake body during a step. The constraint passes of
+/// every substep read and write only this array (and the constraint rows),
+/// so it is kept to half a cache line. Positions are not here: the solver
+/// works with the motion since the step began (dp, dq), which keeps the
+/// separations it computes free of the round-off of large coordinates, and
+/// the transform is updated once at the end of the step.
+struct BodyState {
+    Vec2 v{};    ///< linear velocity (m/s)
+    float w = 0.0f;  ///< angular velocity (rad/s)
+    std::uint32_t reserved = 0;  ///< keeps the record at 32 bytes
+    Vec2 dp{};   ///< change of the centre of mass since the step began
+    Rot dq{};    ///< rotation since the step began
+};
+static_assert(sizeof(BodyState) == 32, "BodyState is streamed by every solver pass: keep it at 32 bytes");
+
+/// What the velocity integration of each substep needs besides BodyState,
+/// gathered once per step (forces, gravity and damping do not change within it).
+struct BodyIntegration {
+    Vec2 linearAcceleration{};  ///< gravityScale·g + F/m (m/s²)
+    float torque = 0.0f;        ///< N·m
+    float invInertia = 0.0f;    ///< 1/(kg·m²)
+    float linearDampingFactor = 1.0f;   ///< 1/(1 + h·c), h the substep
+    float angularDampingFactor = 1.0f;
+    bool movedByForces = false;  ///< dynamic; kinematic bodies keep their velocity
+};
+
+/// Mass, centre of mass and rotational inertia from the body's shapes
+/// (parallel-axis sum); keeps the velocity of the centre of mass consistent
+/// when the centre shifts. Static and kinematic bodies get no mass.
+void updateMass(WorldState& w, int body);
+
+/// Body::reach from the body's solid shapes.
+float solidReach(const WorldState& w, const Body& body);
+
+/// True when a joint between the two bodies forbids their shapes to collide.
+bool jointPreventsCollision(const WorldState& w, int bodyA, int bodyB);
+
+}  // namespace i2d::detail

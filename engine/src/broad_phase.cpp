@@ -1,0 +1,88 @@
+// Broadphase proxies: inserting, removing and moving shapes' fat boxes.
+#include <algorithm>
+
+#include "world_state.hpp"
+
+namespace i2d::detail {
+
+namespace {
+AABB fatten(const AABB& box, float margin) {
+    return {{box.lower.x - margin, box.lower.y - margin}, {box.upper.x + margin, box.upper.y + margin}};
+}
+}  // namespace
+
+void createProxy(WorldState& w, int s) {
+    Shape& sh = w.shapes[s];
+    const Body& body = w.bodies[sh.body];
+    BroadPhase& bp = w.broadPhase;
+    // Static boxes are exact: they never move, so a margin would only make
+    // more pairs.
+    sh.fatAABB = fatten(shapeAABB(sh, body.xf), body.type == BodyType::static_body ? 0.0f : w.settings.aabbMargin);
+    sh.inStaticTree = body.type == BodyType::static_body;
+    DynamicTree& tree = sh.inStaticTree ? bp.staticTree : bp.movingTree;
+    sh.proxy = tree.createProxy(sh.fatAABB, s);
+    if (!sh.inStaticTree) {
+        sh.moved = true;
+        bp.moveBuffer.push_back(s);
+    } else {
+        // A new static shape: let the moving shapes around it look again.
+        bp.movingTree.query(sh.fatAABB, [&](int other) {
+            Shape& o = w.shapes[other];
+            if (!o.moved) {
+                o.moved = true;
+                bp.moveBuffer.push_back(other);
+            }
+            return true;
+        });
+    }
+}
+
+void destroyProxy(WorldState& w, int s) {
+    Shape& sh = w.shapes[s];
+    BroadPhase& bp = w.broadPhase;
+    if (sh.proxy == DynamicTree::kNull) return;
+    (sh.inStaticTree ? bp.staticTree : bp.movingTree).destroyProxy(sh.proxy);
+    sh.proxy = DynamicTree::kNull;
+    if (sh.moved) {
+        bp.moveBuffer.erase(std::remove(bp.moveBuffer.begin(), bp.moveBuffer.end(), s), bp.moveBuffer.end());
+        sh.moved = false;
+    }
+}
+
+void synchronizeProxies(WorldState& w, int b) {
+    const Body& body = w.bodies[b];
+    BroadPhase& bp = w.broadPhase;
+    for (int s : body.shapes) {
+        Shape& sh = w.shapes[s];
+        AABB box = shapeAABB(sh, body.xf);
+        if (contains(sh.fatAABB, box)) continue;
+        sh.fatAABB = fatten(box, body.type == BodyType::static_body ? 0.0f : w.settings.aabbMargin);
+        DynamicTree& tree = sh.inStaticTree ? bp.staticTree : bp.movingTree;
+        tree.moveProxy(sh.proxy, sh.fatAABB);
+        bp.markMoved(sh, s);
+    }
+}
+
+void wakeShapesAround(WorldState& w, int b) {
+    BroadPhase& bp = w.broadPhase;
+    for (int s : w.bodies[b].shapes) {
+        const AABB box = w.shapes[s].fatAABB;
+        bp.staticTree.query(box, [&](int other) {
+            Shape& o = w.shapes[other];
+            if (w.bodies[o.body].type != BodyType::static_body) wakeBody(w, o.body);
+            bp.markMoved(o, other);
+            return true;
+        });
+        bp.movingTree.query(box, [&](int other) {
+            Shape& o = w.shapes[other];
+            wakeBody(w, o.body);
+            if (!o.moved) {
+                o.moved = true;
+                bp.moveBuffer.push_back(other);
+            }
+            return true;
+        });
+    }
+}
+
+}  // namespace i2d::detail

@@ -1,0 +1,76 @@
+// The broadphase: two AABB trees of fattened shape boxes (static shapes never
+// query, so a level's static geometry costs nothing while nothing moves near
+// it), the buffer of proxies that moved, and the set of pairs that already
+// have a contact.
+//
+// A proxy moves in its tree only when its shape leaves the fat box; only
+// moved proxies query for new pairs, so the cost per step follows how much
+// moved, not how much exists.
+#pragma once
+
+#include <vector>
+
+#include "dynamic_tree.hpp"
+#include "pair_set.hpp"
+#include "shape.hpp"
+
+namespace i2d::detail {
+
+struct WorldState;
+
+struct BroadPhase {
+    DynamicTree staticTree;        ///< shapes of static bodies
+    DynamicTree movingTree;        ///< shapes of kinematic and dynamic bodies
+    std::vector<int> moveBuffer;   ///< shapes whose proxies moved or were created
+    PairSet pairs;                 ///< shape pairs that have a contact
+
+    /// Puts a moving shape into the move buffer (once).
+    void markMoved(Shape& shape, int index) {
+        if (!shape.moved && !shape.inStaticTree) {
+            shape.moved = true;
+            moveBuffer.push_back(index);
+        }
+    }
+
+    /// Calls onPair(s, other) for every pair of a moved shape with a shape
+    /// whose fat box overlaps its own: distinct shapes of distinct bodies
+    /// without a contact yet, each pair of two moved shapes once. Then
+    /// empties the move buffer. Deterministic: the buffer is in the order the
+    /// proxies moved and the trees are visited in a fixed order.
+    template <class OnPair>
+    void findNewPairs(SlotArray<Shape>& shapes, OnPair&& onPair) {
+        for (int s : moveBuffer) {
+            const Shape& sh = shapes[s];
+            const AABB box = sh.fatAABB;
+            auto visit = [&](int other) {
+                if (other == s) return true;
+                const Shape& o = shapes[other];
+                // Both moved: the pair is handled once, from the lower index.
+                if (o.moved && other < s && !o.inStaticTree) return true;
+                if (o.body == sh.body) return true;
+                if (pairs.contains(pairKey(s, other))) return true;
+                onPair(s, other);
+                return true;
+            };
+            movingTree.query(box, visit);
+            if (!sh.inStaticTree) staticTree.query(box, visit);
+        }
+        for (int s : moveBuffer) shapes[s].moved = false;
+        moveBuffer.clear();
+    }
+};
+
+/// Inserts the shape's proxy into the tree of its body's type. A new static
+/// shape makes the moving shapes around it look for pairs again.
+void createProxy(WorldState& w, int shape);
+void destroyProxy(WorldState& w, int shape);
+
+/// Refreshes the proxies of a body's shapes after it moved.
+void synchronizeProxies(WorldState& w, int body);
+
+/// A static body was moved: its proxies never query, so the moving shapes
+/// overlapping its shapes are woken and put in the move buffer to find the
+/// new pairs from their side.
+void wakeShapesAround(WorldState& w, int staticBody);
+
+}  // namespace i2d::detail

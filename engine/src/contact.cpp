@@ -1,0 +1,230 @@
+// Contacts: their lifetime (created when the broadphase finds a new pair,
+// destroyed when the fattened boxes part, or with a shape, a body type change,
+// a filter change or a joint) and the narrowphase update of their manifolds.
+//
+// Each step, every contact with an awake body recomputes its manifold.
+// Manifold points keep the accumulated impulses of the previous step's point
+// with the same feature id: the "contact caching" of Tamis and Maggiore
+// (2015), Constraint based physics solver, the solver's warm start.
+#include <algorithm>
+#include <cmath>
+
+#include "world_state.hpp"
+
+namespace i2d::detail {
+
+namespace {
+
+// Order of the pair passed to the colliders: the manifold function table is
+// written for (higher-rank type, lower-rank type) with rank
+// polygon > capsule > circle, and segments always first.
+int typeRank(ShapeType t) {
+    switch (t) {
+        case ShapeType::segment: return 3;
+        case ShapeType::polygon: return 2;
+        case ShapeType::capsule: return 1;
+        case ShapeType::circle: return 0;
+    }
+    return 0;
+}
+
+Manifold computeManifold(const WorldState& w, const Contact& c) {
+    const Shape& sa = w.shapes[c.shapeA];
+    const Shape& sb = w.shapes[c.shapeB];
+    const ShapeGeometry& a = sa.geometry;
+    const ShapeGeometry& b = sb.geometry;
+    const Transform& xa = w.bodies[c.bodyA].xf;
+    const Transform& xb = w.bodies[c.bodyB].xf;
+    // Sensors report overlap only: no speculative margin.
+    const float spec = c.isSensor ? 0.0f : w.settings.speculativeDistance;
+    switch (sa.type) {
+        case ShapeType::segment:
+            switch (sb.type) {
+                case ShapeType::circle: return collideSegmentAndCircle(a.segment, xa, b.circle, xb, spec);
+                case ShapeType::capsule: return collideSegmentAndCapsule(a.segment, xa, b.capsule, xb, spec);
+                case ShapeType::polygon: return collideSegmentAndPolygon(a.segment, xa, b.polygon, xb, spec);
+                case ShapeType::segment: return {};  // two segments have no area to collide
+            }
+            break;
+        case ShapeType::polygon:
+            switch (sb.type) {
+                case ShapeType::circle: return collidePolygonAndCircle(a.polygon, xa, b.circle, xb, spec);
+                case ShapeType::capsule: return collidePolygonAndCapsule(a.polygon, xa, b.capsule, xb, spec);
+                case ShapeType::polygon: return collidePolygons(a.polygon, xa, b.polygon, xb, spec);
+                default: break;
+            }
+            break;
+        case ShapeType::capsule:
+            switch (sb.type) {
+                case ShapeType::circle: return collideCapsuleAndCircle(a.capsule, xa, b.circle, xb, spec);
+                case ShapeType::capsule: return collideCapsules(a.capsule, xa, b.capsule, xb, spec);
+                default: break;
+            }
+            break;
+        case ShapeType::circle:
+            if (sb.type == ShapeType::circle) return collideCircles(a.circle, xa, b.circle, xb, spec);
+            break;
+    }
+    return {};
+}
+
+bool updateContact(WorldState& w, int c) {
+    Contact& ct = w.contacts[c];
+    const Shape& a = w.shapes[ct.shapeA];
+    const Shape& b = w.shapes[ct.shapeB];
+    if (!overlaps(a.fatAABB, b.fatAABB)) {
+        destroyContact(w, c, true);
+        return false;
+    }
+    Manifold m = computeManifold(w, ct);
+    bool touching;
+    if (ct.isSensor) {
+        touching = false;
+        for (int i = 0; i < m.pointCount; ++i) touching = touching || m.points[i].separation < 0.0f;
+    } else {
+        touching = m.pointCount > 0;
+        // Warm start: carry impulses over by feature id.
+        float ni[2] = {0.0f, 0.0f}, ti[2] = {0.0f, 0.0f};
+        for (int i = 0; i < m.pointCount; ++i) {
+            for (int j = 0; j < ct.manifold.pointCount; ++j) {
+                if (ct.manifold.points[j].id == m.points[i].id) {
+                    ni[i] = ct.normalImpulse[j];
+                    ti[i] = ct.tangentImpulse[j];
+                    break;
+                }
+            }
+        }
+        for (int i = 0; i < 2; ++i) {
+            ct.normalImpulse[i] = ni[i];
+            ct.tangentImpulse[i] = ti[i];
+        }
+    }
+    ct.manifold = m;
+    if (touching != ct.touching) {
+        ct.touching = touching;
+        if (touching) {
+            // A touch wakes whatever sleeps on the other side.
+            if (!w.bodies[ct.bodyA].awake) wakeBody(w, ct.bodyA);
+            if (!w.bodies[ct.bodyB].awake) wakeBody(w, ct.bodyB);
+        }
+        if (ct.enableEvents) {
+            if (ct.isSensor) {
+                bool aSensor = a.isSensor;
+                SensorBeginEvent ev{w.shapeHandle(aSensor ? ct.shapeA : ct.shapeB), w.shapeHandle(aSensor ? ct.shapeB : ct.shapeA)};
+                if (touching)
+                    w.events.sensorBegin.push_back(ev);
+                else
+                    w.events.sensorEnd.push_back({ev.sensor, ev.visitor});
+            } else if (touching) {
+                w.events.contactBegin.push_back({w.shapeHandle(ct.shapeA), w.shapeHandle(ct.shapeB), m});
+            } else {
+                w.events.contactEnd.push_back({w.shapeHandle(ct.shapeA), w.shapeHandle(ct.shapeB)});
+            }
+        }
+    }
+    return true;
+}
+
+}  // namespace
+
+void updatePairs(WorldState& w) {
+    w.broadPhase.findNewPairs(w.shapes, [&](int s, int other) {
+        const Shape& sh = w.shapes[s];
+        const Shape& o = w.shapes[other];
+        const Body& b1 = w.bodies[sh.body];
+        const Body& b2 = w.bodies[o.body];
+        if (b1.type != BodyType::dynamic_body && b2.type != BodyType::dynamic_body) return;
+        if (sh.isSensor && o.isSensor) return;
+        if (!shouldCollide(sh.filter, o.filter)) return;
+        if (jointPreventsCollision(w, sh.body, o.body)) return;
+        createContact(w, s, other);
+    });
+}
+
+void createContact(WorldState& w, int s1, int s2) {
+    if (typeRank(w.shapes[s1].type) < typeRank(w.shapes[s2].type)) std::swap(s1, s2);
+    int c = w.contacts.allocate();
+    Contact& ct = w.contacts[c];
+    const Shape& a = w.shapes[s1];
+    const Shape& b = w.shapes[s2];
+    ct.shapeA = s1;
+    ct.shapeB = s2;
+    ct.bodyA = a.body;
+    ct.bodyB = b.body;
+    // Mixing rules: friction is the geometric mean (a slippery surface stays
+    // slippery whatever touches it); restitution is the larger (a bouncy ball
+    // bounces on anything). Both as in Box2D.
+    ct.friction = std::sqrt(a.friction * b.friction);
+    ct.restitution = std::max(a.restitution, b.restitution);
+    ct.isSensor = a.isSensor || b.isSensor;
+    ct.enableEvents = ct.isSensor ? ((a.isSensor ? a.enableSensorEvents : b.enableSensorEvents))
+                                  : (a.enableContactEvents || b.enableContactEvents);
+    w.broadPhase.pairs.insert(pairKey(s1, s2));
+    w.bodies[a.body].contacts.push_back(c);
+    w.bodies[b.body].contacts.push_back(c);
+}
+
+void destroyContact(WorldState& w, int c, bool emitEvents) {
+    Contact& ct = w.contacts[c];
+    if (ct.touching && emitEvents && ct.enableEvents) {
+        if (ct.isSensor) {
+            bool aSensor = w.shapes[ct.shapeA].isSensor;
+            w.events.sensorEnd.push_back(
+                {w.shapeHandle(aSensor ? ct.shapeA : ct.shapeB), w.shapeHandle(aSensor ? ct.shapeB : ct.shapeA)});
+        } else {
+            w.events.contactEnd.push_back({w.shapeHandle(ct.shapeA), w.shapeHandle(ct.shapeB)});
+        }
+    }
+    w.broadPhase.pairs.erase(pairKey(ct.shapeA, ct.shapeB));
+    for (int b : {ct.bodyA, ct.bodyB}) {
+        auto& list = w.bodies[b].contacts;
+        auto it = std::find(list.begin(), list.end(), c);
+        if (it != list.end()) {
+            *it = list.back();
+            list.pop_back();
+        }
+    }
+    w.contacts.release(c);
+}
+
+void destroyBodyContacts(WorldState& w, int body, int shape) {
+    // A copy: destroyContact edits the body's list.
+    const std::vector<int> list = w.bodies[body].contacts;
+    for (int c : list) {
+        const Contact& ct = w.contacts[c];
+        if (shape == kNullIndex || ct.shapeA == shape || ct.shapeB == shape) destroyContact(w, c, true);
+    }
+}
+
+void collide(WorldState& w) {
+    // Gather each contact with an awake body once (a sleeping or static
+    // pair costs nothing here). A touch can wake a sleeping island; its
+    // contacts are then gathered in a further round of the same loop so the
+    // island is supported in this very step.
+    ++w.stepStamp;
+    w.activeContacts.clear();
+    std::vector<int>& scratch = w.gatherScratch;
+    const std::vector<int>& awakeBodies = w.islands.awakeBodies;
+    std::size_t bodyCursor = 0;
+    std::size_t processed = 0;
+    scratch.clear();
+    while (bodyCursor < awakeBodies.size()) {
+        std::size_t roundBegin = scratch.size();
+        for (; bodyCursor < awakeBodies.size(); ++bodyCursor) {
+            for (int c : w.bodies[awakeBodies[bodyCursor]].contacts) {
+                Contact& ct = w.contacts[c];
+                if (ct.stamp == w.stepStamp) continue;
+                ct.stamp = w.stepStamp;
+                scratch.push_back(c);
+            }
+        }
+        // Contact-slot order, so results do not depend on the awake list's order.
+        std::sort(scratch.begin() + static_cast<std::ptrdiff_t>(roundBegin), scratch.end());
+        for (; processed < scratch.size(); ++processed) {
+            int c = scratch[processed];
+            if (updateContact(w, c)) w.activeContacts.push_back(c);
+        }
+    }
+}
+
+}  // namespace i2d::detail

@@ -1,0 +1,51 @@
+// Contacts: one per pair of shapes whose fattened boxes overlap, from the
+// step the broadphase finds the pair until the boxes part. A contact keeps
+// the manifold of the last narrowphase update and the impulses the solver
+// accumulated at each manifold point, carried to the next step by feature
+// id (the warm start).
+#pragma once
+
+#include <cstdint>
+
+#include "impulse2d/collision.hpp"
+#include "slot_array.hpp"
+
+namespace i2d::detail {
+
+struct WorldState;
+
+struct Contact {
+    Manifold manifold{};
+    float normalImpulse[2]{};   ///< accumulated at each manifold point (N·s)
+    float tangentImpulse[2]{};
+    float friction = 0.0f, restitution = 0.0f;  ///< mixed from the two shapes
+    int shapeA = kNullIndex, shapeB = kNullIndex;
+    int bodyA = kNullIndex, bodyB = kNullIndex;
+    std::uint32_t generation = 1;
+    std::uint32_t stamp = 0;  ///< step stamp, to gather each active contact once
+    bool alive = false;
+    bool touching = false;  ///< the manifold has points (sensors: an overlap)
+    bool isSensor = false;
+    bool enableEvents = false;
+};
+
+/// Finds the new pairs among the shapes whose proxies moved (broad_phase.hpp)
+/// and creates a contact for each one that passes the filters.
+void updatePairs(WorldState& w);
+
+/// Creates the contact of two shapes (ordered for the manifold functions).
+void createContact(WorldState& w, int shapeA, int shapeB);
+
+/// Destroys a contact; a touching one reports its end when `emitEvents`.
+void destroyContact(WorldState& w, int contact, bool emitEvents);
+
+/// The narrowphase: updates the manifold of every contact with an awake body,
+/// reports begin and end events, wakes islands that are touched, destroys
+/// contacts whose boxes parted and fills WorldState::activeContacts.
+void collide(WorldState& w);
+
+/// Destroys every contact of `body` whose other shape is `shape` (or any of the
+/// body's contacts when `shape` is kNullIndex), reporting touching ones as ended.
+void destroyBodyContacts(WorldState& w, int body, int shape);
+
+}  // namespace i2d::detail

@@ -1,0 +1,63 @@
+// The contact rows of the sequential-impulse solver (Tamis and Maggiore
+// (2015), Constraint based physics solver, §5.3 and §7): a normal row and a
+// friction row per manifold point, prepared once per step and streamed by
+// every pass in the order the solver colours them (solver.cpp).
+//
+// Layout: ContactConstraint is one manifold (normal, material, the inverse
+// masses of its two bodies, soft coefficients) with up to two points inline,
+// 172 bytes (static_assert below: 68 for the manifold, 52 per point); a side that cannot move points at the zero
+// BodyState kept after the awake bodies, so the passes have no branch per
+// side. Rows reference bodies by solver index only: the passes read
+// ContactConstraint and BodyState and nothing else.
+#pragma once
+
+#include <vector>
+
+#include "impulse2d/math.hpp"
+#include "slot_array.hpp"
+#include "soft_constraint.hpp"
+
+namespace i2d::detail {
+
+struct WorldState;
+
+/// Solver row data of one contact point.
+struct ContactPointConstraint {
+    Vec2 rA{}, rB{};              ///< anchors relative to the centres of mass at step start
+    float adjustedSeparation = 0; ///< separation − (rB − rA)·n, so s = (Δ)·n + this
+    float normalMass = 0, tangentMass = 0;
+    float normalImpulse = 0, tangentImpulse = 0;
+    float maxNormalImpulse = 0;
+    float relativeVelocity = 0;   ///< normal approach speed at step start (for restitution)
+    float restitutionBias = 0;    ///< Tamis and Maggiore (2015) eq. 8.2.1 target, baumgarte/split modes
+    float biasImpulse = 0;        ///< split mode: accumulated push impulse
+};
+
+struct ContactConstraint {
+    int contact = kNullIndex;
+    int a = kNullIndex, b = kNullIndex;  ///< state indices; an immovable side uses the zero state
+    Vec2 normal{};
+    float friction = 0, restitution = 0;
+    float invMassA = 0, invIA = 0, invMassB = 0, invIB = 0;
+    float biasRate = 0, massScale = 1, impulseScale = 0;  ///< soft contact coefficients
+    float maxPush = 0;  ///< push speed cap of this contact (m/s), shared among a body's deep contacts
+    bool deepOverlap = false;  ///< a point overlaps by more than kDeepOverlap (contact_solver.cpp)
+    int pointCount = 0;
+    ContactPointConstraint points[2];
+};
+static_assert(sizeof(ContactConstraint) == 172, "the layout documented above");
+
+/// Rows of every touching, non-sensor contact in WorldState::activeContacts
+/// with a body that moves, for substeps of length h. `soft`: soft_step.
+void prepareContacts(WorldState& w, float h, bool soft);
+void warmStartContacts(WorldState& w);
+/// One Gauss-Seidel sweep over the contacts, with the velocity target of `pass`.
+void solveContacts(WorldState& w, float h, SolvePass pass);
+/// Split mode (Tamis and Maggiore (2015) §8.1): the push alone, on the pseudo-velocities.
+void solveContactPush(WorldState& w, float h);
+/// soft_step with the velocity-bias impact model: the restitution pass.
+void applyRestitution(WorldState& w);
+/// Impulses back into the contacts for the next step's warm start.
+void storeContactImpulses(WorldState& w);
+
+}  // namespace i2d::detail

@@ -1,0 +1,47 @@
+// Shapes: creating one on a body, destroying it with its contacts, and
+// re-pairing it under a new filter.
+#include <algorithm>
+
+#include "world_state.hpp"
+
+namespace i2d::detail {
+
+int createShape(WorldState& w, int b, const ShapeDef& def, ShapeType type, const ShapeGeometry& geometry) {
+    int s = w.shapes.allocate();
+    Shape& sh = w.shapes[s];
+    sh.type = type;
+    sh.geometry = geometry;
+    sh.body = b;
+    sh.density = def.density;
+    sh.friction = def.friction;
+    sh.restitution = def.restitution;
+    sh.filter = def.filter;
+    sh.isSensor = def.isSensor;
+    sh.enableContactEvents = def.enableContactEvents;
+    sh.enableSensorEvents = def.enableSensorEvents;
+    sh.userData = def.userData;
+    w.bodies[b].shapes.push_back(s);
+    createProxy(w, s);
+    // A sleeping body stays asleep (a level built asleep stays asleep, as in
+    // Box2D): its new shape's contacts wake it when one begins to touch an
+    // awake body.
+    updateMass(w, b);
+    return s;
+}
+
+void destroyShape(WorldState& w, int s) {
+    const int b = w.shapes[s].body;
+    destroyBodyContacts(w, b, s);
+    destroyProxy(w, s);
+    std::vector<int>& list = w.bodies[b].shapes;
+    list.erase(std::find(list.begin(), list.end(), s));
+    w.shapes.release(s);
+}
+
+void refilterShape(WorldState& w, int s) {
+    destroyBodyContacts(w, w.shapes[s].body, s);
+    destroyProxy(w, s);
+    createProxy(w, s);
+}
+
+}  // namespace i2d::detail

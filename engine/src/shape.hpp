@@ -1,0 +1,136 @@
+// Shapes: a body's collision geometry with its material and filter, and the
+// operations that depend only on the geometry (bounding box, mass, core
+// points, ray cast, point test), dispatched on the shape's type.
+#pragma once
+
+#include <algorithm>
+#include <cstdint>
+#include <optional>
+
+#include "dynamic_tree.hpp"
+#include "impulse2d/geometry.hpp"
+#include "impulse2d/types.hpp"
+#include "slot_array.hpp"
+
+namespace i2d::detail {
+
+struct WorldState;
+
+/// The geometry of one shape, stored once: which member is live is Shape::type.
+union ShapeGeometry {
+    Circle circle;
+    Capsule capsule;
+    Segment segment;
+    Polygon polygon;
+    ShapeGeometry() : polygon{} {}
+};
+
+struct Shape {
+    ShapeGeometry geometry;
+    AABB fatAABB{};  ///< the box in the broadphase tree (grown by the margin)
+    float density = 1.0f, friction = 0.6f, restitution = 0.0f;
+    Filter filter{};
+    int body = kNullIndex;
+    int proxy = DynamicTree::kNull;
+    std::uint32_t generation = 1;
+    ShapeType type = ShapeType::circle;
+    bool isSensor = false;
+    bool enableContactEvents = true;
+    bool enableSensorEvents = true;
+    bool alive = false;
+    bool inStaticTree = false;
+    bool moved = false;  ///< in the broadphase move buffer
+    std::uintptr_t userData = 0;
+};
+
+inline AABB shapeAABB(const Shape& s, const Transform& xf) {
+    switch (s.type) {
+        case ShapeType::circle: return computeAABB(s.geometry.circle, xf);
+        case ShapeType::capsule: return computeAABB(s.geometry.capsule, xf);
+        case ShapeType::segment: return computeAABB(s.geometry.segment, xf);
+        case ShapeType::polygon: return computeAABB(s.geometry.polygon, xf);
+    }
+    return {};
+}
+
+/// Mass data of a shape with area; none for segments (they add no mass).
+inline std::optional<MassData> shapeMass(const Shape& s) {
+    switch (s.type) {
+        case ShapeType::circle: return computeMass(s.geometry.circle, s.density);
+        case ShapeType::capsule: return computeMass(s.geometry.capsule, s.density);
+        case ShapeType::polygon: return computeMass(s.geometry.polygon, s.density);
+        case ShapeType::segment: break;
+    }
+    return std::nullopt;
+}
+
+/// A shape as a convex core (points) and a radius, for the distance function.
+struct ShapeCore {
+    Vec2 points[kMaxPolygonVertices];
+    int count = 0;
+    float radius = 0.0f;
+};
+
+inline ShapeCore shapeCore(const Shape& s) {
+    ShapeCore c;
+    switch (s.type) {
+        case ShapeType::circle:
+            c.points[0] = s.geometry.circle.center;
+            c.count = 1;
+            c.radius = s.geometry.circle.radius;
+            break;
+        case ShapeType::capsule:
+            c.points[0] = s.geometry.capsule.center1;
+            c.points[1] = s.geometry.capsule.center2;
+            c.count = 2;
+            c.radius = s.geometry.capsule.radius;
+            break;
+        case ShapeType::segment:
+            c.points[0] = s.geometry.segment.point1;
+            c.points[1] = s.geometry.segment.point2;
+            c.count = 2;
+            break;
+        case ShapeType::polygon:
+            std::copy(s.geometry.polygon.vertices, s.geometry.polygon.vertices + s.geometry.polygon.count, c.points);
+            c.count = s.geometry.polygon.count;
+            c.radius = s.geometry.polygon.radius;
+            break;
+    }
+    return c;
+}
+
+/// Ray cast in the shape's body frame.
+inline std::optional<RayHit> shapeRayCast(const Shape& s, const RayCastInput& in) {
+    switch (s.type) {
+        case ShapeType::circle: return rayCast(in, s.geometry.circle);
+        case ShapeType::capsule: return rayCast(in, s.geometry.capsule);
+        case ShapeType::polygon: return rayCast(in, s.geometry.polygon);
+        case ShapeType::segment: return rayCast(in, s.geometry.segment);
+    }
+    return std::nullopt;
+}
+
+/// Point test in the shape's body frame; segments contain no point.
+inline bool shapeContains(const Shape& s, Vec2 localPoint) {
+    switch (s.type) {
+        case ShapeType::circle: return containsPoint(s.geometry.circle, localPoint);
+        case ShapeType::capsule: return containsPoint(s.geometry.capsule, localPoint);
+        case ShapeType::polygon: return containsPoint(s.geometry.polygon, localPoint);
+        case ShapeType::segment: break;
+    }
+    return false;
+}
+
+/// Creates a shape on a body: its slot, its proxy in the broadphase and the
+/// body's new mass. The geometry must have been validated.
+int createShape(WorldState& w, int body, const ShapeDef& def, ShapeType type, const ShapeGeometry& geometry);
+
+/// Destroys a shape with its contacts (end events for touching ones) and its proxy.
+/// The body's mass is not updated.
+void destroyShape(WorldState& w, int shape);
+
+/// Drops the shape's contacts and re-inserts its proxy so the broadphase
+/// finds its pairs again under a new filter.
+void refilterShape(WorldState& w, int shape);
+
+}  // namespace i2d::detail

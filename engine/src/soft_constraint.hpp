@@ -1,0 +1,39 @@
+// What the contact and joint rows share: the solver pass a row is solved in,
+// and the coefficients of a soft (spring-damped) constraint.
+#pragma once
+
+namespace i2d::detail {
+
+/// The pass a constraint row is solved in; it selects the row's velocity target.
+enum class SolvePass {
+    soft_bias,        ///< soft_step, solve stage: soft push towards zero error
+    soft_relax,       ///< soft_step, relax stage: no push, removes its velocity
+    soft_relax_last,  ///< the last relax of the step (leaves fast approaches to the impact law)
+    baumgarte,        ///< the push factor in the velocity target
+    no_push,          ///< split mode's velocity pass: the push is solved separately
+};
+
+/// Soft constraint coefficients for a spring of frequency `hertz` and damping
+/// ratio ζ over a step h (implicit Euler of a spring-damper, in the
+/// mass-independent form of Catto's Solver2D and Box2D v3 soft step):
+///   ω = 2π·hertz, a1 = 2ζ + hω, a2 = hω·a1, a3 = 1/(1 + a2)
+///   biasRate = ω/a1, massScale = a2·a3, impulseScale = a3
+/// and a row's impulse is −massScale·m_eff·(Jv + biasRate·C) − impulseScale·λ_acc.
+/// hertz 0 is a rigid row (massScale 1, no bias, no impulse feedback).
+struct Softness {
+    float biasRate = 0.0f;
+    float massScale = 1.0f;
+    float impulseScale = 0.0f;
+};
+
+inline Softness makeSoft(float hertz, float zeta, float h) {
+    constexpr float kPi = 3.14159265358979f;
+    if (hertz == 0.0f) return {0.0f, 1.0f, 0.0f};
+    float omega = 2.0f * kPi * hertz;
+    float a1 = 2.0f * zeta + h * omega;
+    float a2 = h * omega * a1;
+    float a3 = 1.0f / (1.0f + a2);
+    return {omega / a1, a2 * a3, a3};
+}
+
+}  // namespace i2d::detail

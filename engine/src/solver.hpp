@@ -1,0 +1,36 @@
+// The step: the order of the stages, and the solver's per-step arrays.
+#pragma once
+
+#include <cstdint>
+#include <vector>
+
+#include "body.hpp"
+#include "contact_solver.hpp"
+#include "distance_joint.hpp"
+
+namespace i2d::detail {
+
+struct WorldState;
+
+/// Arrays rebuilt by every step. Each is sized for this step's awake bodies,
+/// contacts or joints.
+struct SolverArrays {
+    std::vector<BodyState> states;             ///< awake bodies, then one zero state for immovable sides
+    std::vector<BodyIntegration> integration;  ///< per awake body
+    std::vector<int> stateBodies;              ///< body slot of each state (awake bodies only)
+    std::vector<Vec2> biasV;                   ///< split mode pseudo-velocities (zero entry last)
+    std::vector<float> biasW;
+    std::vector<ContactConstraint> constraints;        ///< in colour order (solver.cpp)
+    std::vector<ContactConstraint> constraintScratch;  ///< the colour sort's other buffer
+    std::vector<std::uint64_t> colourBits;             ///< per colour, one bit per state
+    std::vector<int> colourCounts;
+    std::vector<std::uint8_t> constraintColours;
+    std::vector<DistanceJointConstraint> distanceJoints;
+    std::vector<int> deepContactCount;  ///< per state: contacts overlapping deeper than kDeepOverlap
+};
+
+/// Advances the world by dt: pairs → narrowphase → impacts → solve →
+/// continuous collision → proxies → sleep.
+void stepWorld(WorldState& w, float dt);
+
+}  // namespace i2d::detail

@@ -1,0 +1,319 @@
+// World: the public API facade for bodies — creation and destruction, type,
+// transform, velocity, forces and impulses, mass, damping, sleep. Validates,
+// then calls the body, island, shape, joint and broadphase modules.
+#include <algorithm>
+
+#include "impulse2d/world.hpp"
+#include "joint.hpp"
+#include "world_state.hpp"
+
+namespace i2d {
+
+using detail::fail;
+using detail::requireBounded;
+using detail::requireFinite;
+using detail::requireNonNegative;
+
+BodyId World::createBody(const BodyDef& def) {
+    state().checkUnlocked();
+    requireBounded(def.position, "body position");
+    requireBounded(def.angle, "body angle");
+    requireBounded(def.linearVelocity, "body linear velocity");
+    requireBounded(def.angularVelocity, "body angular velocity");
+    requireNonNegative(def.linearDamping, "linear damping");
+    requireNonNegative(def.angularDamping, "angular damping");
+    requireBounded(def.gravityScale, "gravity scale");
+    if (static_cast<int>(def.type) > 2) fail("unknown body type");
+
+    auto& w = state();
+    int b = w.bodies.allocate();
+    detail::Body& body = w.bodies[b];
+    body.type = def.type;
+    body.xf = {def.position, makeRot(def.angle)};
+    body.center = def.position;
+    body.linearDamping = def.linearDamping;
+    body.angularDamping = def.angularDamping;
+    body.gravityScale = def.gravityScale;
+    body.fixedRotation = def.fixedRotation;
+    body.enableSleep = def.enableSleep;
+    body.userData = def.userData;
+    if (def.type != BodyType::static_body) {
+        body.v = def.linearVelocity;
+        body.w = def.fixedRotation ? 0.0f : def.angularVelocity;
+    }
+    detail::updateMass(w, b);
+    if (def.type == BodyType::static_body) {
+        body.awake = false;
+    } else if (def.isAwake || !w.settings.enableSleep || !def.enableSleep) {
+        body.awake = true;
+        detail::addAwake(w, b);
+    } else {
+        // Created asleep: its own single-body island.
+        detail::sleepAlone(w, b);
+    }
+    return w.bodyHandle(b);
+}
+
+void World::destroyBody(BodyId id) {
+    auto& w = state();
+    w.checkUnlocked();
+    int b = w.bodyIndex(id);
+    // Joints first (they wake the other body), then shapes with their contacts.
+    std::vector<int> joints = w.bodies[b].joints;
+    for (int j : joints) detail::destroyJoint(w, j);
+    std::vector<int> shapes = w.bodies[b].shapes;
+    for (int s : shapes) detail::destroyShape(w, s);
+    detail::removeAwake(w, b);
+    detail::leaveIsland(w, b);
+    detail::Body& body = w.bodies[b];
+    body.shapes.clear();
+    body.contacts.clear();
+    body.joints.clear();
+    w.bodies.release(b);
+}
+
+bool World::isValid(BodyId id) const { return state().find(id, state().bodies) != detail::kNullIndex; }
+
+BodyType World::bodyType(BodyId id) const { return state().bodies[state().bodyIndex(id)].type; }
+
+void World::setBodyType(BodyId id, BodyType type) {
+    auto& w = state();
+    w.checkUnlocked();
+    int b = w.bodyIndex(id);
+    if (static_cast<int>(type) > 2) fail("unknown body type");
+    detail::Body& body = w.bodies[b];
+    if (body.type == type) return;
+    // Simplest correct path: recreate the proxies in the right tree and
+    // drop the contacts; the broadphase finds the pairs again next step.
+    detail::destroyBodyContacts(w, b, detail::kNullIndex);
+    for (int s : body.shapes) detail::destroyProxy(w, s);
+    detail::wakeBody(w, b);
+    body.type = type;
+    if (type == BodyType::static_body) {
+        body.v = {};
+        body.w = 0.0f;
+        detail::removeAwake(w, b);
+        body.awake = false;
+    }
+    for (int s : body.shapes) detail::createProxy(w, s);
+    detail::updateMass(w, b);
+}
+
+Vec2 World::position(BodyId id) const { return state().bodies[state().bodyIndex(id)].xf.p; }
+float World::angle(BodyId id) const { return angleOf(state().bodies[state().bodyIndex(id)].xf.q); }
+Rot World::rotation(BodyId id) const { return state().bodies[state().bodyIndex(id)].xf.q; }
+Transform World::transform(BodyId id) const { return state().bodies[state().bodyIndex(id)].xf; }
+
+void World::setTransform(BodyId id, Vec2 position, float angle) {
+    auto& w = state();
+    w.checkUnlocked();
+    int b = w.bodyIndex(id);
+    requireBounded(position, "position");
+    requireBounded(angle, "angle");
+    detail::Body& body = w.bodies[b];
+    body.xf = {position, makeRot(angle)};
+    body.center = transformPoint(body.xf, body.localCenter);
+    detail::wakeBody(w, b);
+    // Bodies touching a moved static body must notice it.
+    for (int c : body.contacts) {
+        const detail::Contact& ct = w.contacts[c];
+        detail::wakeBody(w, ct.bodyA == b ? ct.bodyB : ct.bodyA);
+    }
+    detail::synchronizeProxies(w, b);
+    // Static proxies do not query: find the new pairs from the other side.
+    if (body.type == BodyType::static_body) detail::wakeShapesAround(w, b);
+}
+
+Vec2 World::worldCenterOfMass(BodyId id) const { return state().bodies[state().bodyIndex(id)].center; }
+Vec2 World::localCenterOfMass(BodyId id) const { return state().bodies[state().bodyIndex(id)].localCenter; }
+Vec2 World::linearVelocity(BodyId id) const { return state().bodies[state().bodyIndex(id)].v; }
+float World::angularVelocity(BodyId id) const { return state().bodies[state().bodyIndex(id)].w; }
+
+void World::setLinearVelocity(BodyId id, Vec2 v) {
+    state().checkUnlocked();
+    int b = state().bodyIndex(id);
+    requireBounded(v, "linear velocity");
+    detail::Body& body = state().bodies[b];
+    if (body.type == BodyType::static_body) return;  // documented: static bodies do not move
+    if (lengthSquared(v) > 0.0f) detail::wakeBody(state(), b);
+    body.v = v;
+}
+
+void World::setAngularVelocity(BodyId id, float w) {
+    state().checkUnlocked();
+    int b = state().bodyIndex(id);
+    requireBounded(w, "angular velocity");
+    detail::Body& body = state().bodies[b];
+    if (body.type == BodyType::static_body || body.fixedRotation) return;
+    if (w != 0.0f) detail::wakeBody(state(), b);
+    body.w = w;
+}
+
+Vec2 World::velocityAtPoint(BodyId id, Vec2 p) const {
+    const detail::Body& body = state().bodies[state().bodyIndex(id)];
+    return body.v + cross(body.w, p - body.center);
+}
+
+void World::applyForce(BodyId id, Vec2 force, Vec2 point, bool wake) {
+    state().checkUnlocked();
+    int b = state().bodyIndex(id);
+    requireBounded(force, "force");
+    requireBounded(point, "point");
+    detail::Body& body = state().bodies[b];
+    if (body.type != BodyType::dynamic_body) return;
+    if (wake) detail::wakeBody(state(), b);
+    if (!body.awake) return;  // a sleeping body ignores forces unless woken (as in Box2D)
+    body.force += force;
+    body.torque += cross(point - body.center, force);
+}
+
+void World::applyForceToCenter(BodyId id, Vec2 force, bool wake) {
+    applyForce(id, force, state().bodies[state().bodyIndex(id)].center, wake);
+}
+
+void World::applyTorque(BodyId id, float torque, bool wake) {
+    state().checkUnlocked();
+    int b = state().bodyIndex(id);
+    requireBounded(torque, "torque");
+    detail::Body& body = state().bodies[b];
+    if (body.type != BodyType::dynamic_body) return;
+    if (wake) detail::wakeBody(state(), b);
+    if (!body.awake) return;
+    body.torque += torque;
+}
+
+void World::applyLinearImpulse(BodyId id, Vec2 impulse, Vec2 point, bool wake) {
+    state().checkUnlocked();
+    int b = state().bodyIndex(id);
+    requireBounded(impulse, "impulse");
+    requireBounded(point, "point");
+    detail::Body& body = state().bodies[b];
+    if (body.type != BodyType::dynamic_body) return;
+    if (wake) detail::wakeBody(state(), b);
+    if (!body.awake) return;
+    body.v += body.invMass * impulse;
+    body.w += body.invInertia * cross(point - body.center, impulse);
+}
+
+void World::applyLinearImpulseToCenter(BodyId id, Vec2 impulse, bool wake) {
+    applyLinearImpulse(id, impulse, state().bodies[state().bodyIndex(id)].center, wake);
+}
+
+void World::applyAngularImpulse(BodyId id, float impulse, bool wake) {
+    state().checkUnlocked();
+    int b = state().bodyIndex(id);
+    requireBounded(impulse, "angular impulse");
+    detail::Body& body = state().bodies[b];
+    if (body.type != BodyType::dynamic_body) return;
+    if (wake) detail::wakeBody(state(), b);
+    if (!body.awake) return;
+    body.w += body.invInertia * impulse;
+}
+
+float World::mass(BodyId id) const { return state().bodies[state().bodyIndex(id)].mass; }
+float World::rotationalInertia(BodyId id) const { return state().bodies[state().bodyIndex(id)].inertia; }
+MassData World::massData(BodyId id) const {
+    const detail::Body& body = state().bodies[state().bodyIndex(id)];
+    return {body.mass, body.localCenter, body.inertia};
+}
+
+void World::setMassData(BodyId id, const MassData& md) {
+    state().checkUnlocked();
+    int b = state().bodyIndex(id);
+    requireFinite(md.mass, "mass");
+    requireBounded(md.center, "centre of mass");
+    requireFinite(md.rotationalInertia, "rotational inertia");
+    detail::Body& body = state().bodies[b];
+    if (body.type != BodyType::dynamic_body) fail("only dynamic bodies have mass");
+    if (!(md.mass > 0.0f)) fail("mass must be > 0");
+    if (!isFinite(1.0f / md.mass)) fail("mass is too small (its inverse is not finite)");
+    if (md.rotationalInertia < 0.0f) fail("rotational inertia must be >= 0");
+    if (md.rotationalInertia > 0.0f && !isFinite(1.0f / md.rotationalInertia))
+        fail("rotational inertia is too small (its inverse is not finite)");
+    body.mass = md.mass;
+    body.invMass = 1.0f / md.mass;
+    body.inertia = md.rotationalInertia;
+    body.invInertia = (md.rotationalInertia > 0.0f && !body.fixedRotation) ? 1.0f / md.rotationalInertia : 0.0f;
+    Vec2 oldCenter = body.center;
+    body.localCenter = md.center;
+    body.center = transformPoint(body.xf, body.localCenter);
+    body.v += cross(body.w, body.center - oldCenter);
+}
+
+void World::resetMassData(BodyId id) {
+    state().checkUnlocked();
+    detail::updateMass(state(), state().bodyIndex(id));
+}
+
+float World::linearDamping(BodyId id) const { return state().bodies[state().bodyIndex(id)].linearDamping; }
+void World::setLinearDamping(BodyId id, float d) {
+    int b = state().bodyIndex(id);
+    requireNonNegative(d, "linear damping");
+    state().bodies[b].linearDamping = d;
+}
+float World::angularDamping(BodyId id) const { return state().bodies[state().bodyIndex(id)].angularDamping; }
+void World::setAngularDamping(BodyId id, float d) {
+    int b = state().bodyIndex(id);
+    requireNonNegative(d, "angular damping");
+    state().bodies[b].angularDamping = d;
+}
+float World::gravityScale(BodyId id) const { return state().bodies[state().bodyIndex(id)].gravityScale; }
+void World::setGravityScale(BodyId id, float s) {
+    int b = state().bodyIndex(id);
+    requireBounded(s, "gravity scale");
+    state().bodies[b].gravityScale = s;
+}
+bool World::isFixedRotation(BodyId id) const { return state().bodies[state().bodyIndex(id)].fixedRotation; }
+void World::setFixedRotation(BodyId id, bool flag) {
+    state().checkUnlocked();
+    int b = state().bodyIndex(id);
+    detail::Body& body = state().bodies[b];
+    body.fixedRotation = flag;
+    if (flag) body.w = 0.0f;
+    detail::updateMass(state(), b);
+}
+std::uintptr_t World::userData(BodyId id) const { return state().bodies[state().bodyIndex(id)].userData; }
+void World::setUserData(BodyId id, std::uintptr_t data) { state().bodies[state().bodyIndex(id)].userData = data; }
+
+bool World::isAwake(BodyId id) const { return state().bodies[state().bodyIndex(id)].awake; }
+void World::setAwake(BodyId id, bool awake) {
+    auto& w = state();
+    w.checkUnlocked();
+    int b = w.bodyIndex(id);
+    detail::Body& body = w.bodies[b];
+    if (body.type == BodyType::static_body) return;
+    if (awake) {
+        detail::wakeBody(w, b);
+    } else if (body.awake) {
+        // Put the body's island to sleep at once: the next sleep pass would
+        // otherwise find it awake again through its touching neighbours.
+        body.sleepTime = w.settings.timeToSleep;
+        detail::putIslandToSleep(w, {b});
+    }
+}
+void World::enableSleep(BodyId id, bool flag) {
+    int b = state().bodyIndex(id);
+    state().bodies[b].enableSleep = flag;
+    if (!flag) detail::wakeBody(state(), b);
+}
+
+std::vector<ShapeId> World::bodyShapes(BodyId id) const {
+    const detail::Body& body = state().bodies[state().bodyIndex(id)];
+    std::vector<ShapeId> out;
+    for (int s : body.shapes) out.push_back(state().shapeHandle(s));
+    return out;
+}
+std::vector<JointId> World::bodyJoints(BodyId id) const {
+    const detail::Body& body = state().bodies[state().bodyIndex(id)];
+    std::vector<JointId> out;
+    for (int j : body.joints) out.push_back(state().jointHandle(j));
+    return out;
+}
+std::vector<BodyId> World::bodies() const {
+    std::vector<BodyId> out;
+    for (int b = 0; b < state().bodies.capacity(); ++b)
+        if (state().bodies[b].alive) out.push_back(state().bodyHandle(b));
+    return out;
+}
+
+}  // namespace i2d

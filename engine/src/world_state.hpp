@@ -1,0 +1,95 @@
+// The state of one World: the store of every module, addressed by slot
+// index, and the conversion between slots and the handles users hold. Not
+// part of the public API.
+//
+// Modules and the direction of their calls (docs/architecture.md):
+//   body, island → broad_phase → contact → joint, shape
+//     → impact_stage, contact_solver, distance_joint, continuous → solver
+//   and the API facade (world*.cpp, debug_draw.cpp) on top.
+#pragma once
+
+#include <cstdint>
+#include <vector>
+
+#include "body.hpp"
+#include "broad_phase.hpp"
+#include "contact.hpp"
+#include "distance_joint.hpp"
+#include "impulse2d/types.hpp"
+#include "island.hpp"
+#include "shape.hpp"
+#include "slot_array.hpp"
+#include "solver.hpp"
+#include "validation.hpp"
+
+namespace i2d::detail {
+
+/// Events of the last step (and of calls made since, see World's event accessors).
+struct EventBuffers {
+    std::vector<ContactBeginEvent> contactBegin;
+    std::vector<ContactEndEvent> contactEnd;
+    std::vector<SensorBeginEvent> sensorBegin;
+    std::vector<SensorEndEvent> sensorEnd;
+};
+
+struct WorldState {
+    WorldState(const WorldSettings& s, std::uint32_t id) : settings(s), worldId(id) {}
+
+    WorldSettings settings;
+    std::uint32_t worldId;  ///< stamped into every handle of this world
+
+    SlotArray<Body> bodies;
+    SlotArray<Shape> shapes;
+    SlotArray<Contact> contacts;
+    SlotArray<DistanceJoint> joints;
+
+    IslandSet islands;
+    BroadPhase broadPhase;
+    EventBuffers events;
+    SolverArrays solver;
+
+    // Per-step lists of the narrowphase and the impact stage.
+    std::vector<int> activeContacts;  ///< contacts with an awake body, updated this step, slot order
+    std::vector<int> gatherScratch;
+    std::vector<std::uint32_t> impactChanged;
+
+    Profile profile{};
+    std::uint32_t stepStamp = 0;
+    bool locked = false;  ///< true while stepping or drawing (see checkUnlocked)
+
+    void checkUnlocked() const {
+        if (locked) fail("the world cannot be changed while it is stepping or drawing");
+    }
+
+    BodyId bodyHandle(int i) const { return {static_cast<std::uint32_t>(i + 1), bodies[i].generation, worldId}; }
+    ShapeId shapeHandle(int i) const { return {static_cast<std::uint32_t>(i + 1), shapes[i].generation, worldId}; }
+    JointId jointHandle(int i) const { return {static_cast<std::uint32_t>(i + 1), joints[i].generation, worldId}; }
+
+    /// Slot of a live object named by a handle of this world, or kNullIndex.
+    template <class Tag, class T>
+    int find(Handle<Tag> id, const SlotArray<T>& store) const {
+        if (id.isNull() || id.world != worldId) return kNullIndex;
+        // Compared unsigned: a forged index beyond INT_MAX must not wrap negative.
+        if (id.index1 > static_cast<std::uint32_t>(store.capacity())) return kNullIndex;
+        const int i = static_cast<int>(id.index1) - 1;
+        return store[i].alive && store[i].generation == id.generation ? i : kNullIndex;
+    }
+
+    /// Slot of the object a handle names; throws i2d::Error for a null handle,
+    /// one of another world, or one whose object was destroyed.
+    template <class Tag, class T>
+    int require(Handle<Tag> id, const SlotArray<T>& store, const char* what) const {
+        if (id.isNull()) fail(std::string("null ") + what + " handle");
+        if (id.world != worldId && id.world != 0)
+            fail(std::string("invalid ") + what + " handle: it was made by another world");
+        const int i = find(id, store);
+        if (i == kNullIndex) fail(std::string("stale or invalid ") + what + " handle");
+        return i;
+    }
+
+    int bodyIndex(BodyId id) const { return require(id, bodies, "body"); }
+    int shapeIndex(ShapeId id) const { return require(id, shapes, "shape"); }
+    int jointIndex(JointId id) const { return require(id, joints, "joint"); }
+};
+
+}  // namespace i2d::detail
