@@ -33,10 +33,14 @@
 #include <malloc.h>
 #endif
 
+#include "footprint.hpp"
 #include "run_command.hpp"
 #include "scene_loader.hpp"
 
 namespace {
+
+using bench::columnsScene;
+using bench::heldBytes;
 
 using tb::EngineKind;
 
@@ -366,36 +370,6 @@ std::string errText(const Point& p, const std::string& unit) {
 
 // ----------------------------------------------------- scaling and memory --
 
-/// Columns of 10 boxes (1 m, touching) 1.5 m apart on one ground box: `count`
-/// bodies in columns, resting, one contact per box below it.
-tb::SceneDesc columnsScene(int count, bool touching) {
-    tb::SceneDesc d;
-    d.name = touching ? "columns" : "scattered";
-    const int perColumn = 10;
-    const int columns = (count + perColumn - 1) / perColumn;
-    const float width = columns * 1.5f;
-    tb::BodyDesc ground;
-    ground.def.position = {0.5f * width, -1.0f};
-    tb::ShapeDesc gs;
-    gs.polygon = i2d::makeBox(0.5f * width + 5.0f, 1.0f);
-    ground.shapes.push_back(gs);
-    if (touching) d.bodies.push_back(ground);
-    for (int i = 0; i < count; ++i) {
-        tb::BodyDesc b;
-        b.def.type = i2d::BodyType::dynamic_body;
-        const int c = i / perColumn, r = i % perColumn;
-        // Scattered: a sparse grid far above the ground, 3 m apart, nothing touches.
-        b.def.position = touching ? i2d::Vec2{c * 1.5f, 0.5f + static_cast<float>(r)}
-                                  : i2d::Vec2{c * 3.0f, 100.0f + 3.0f * static_cast<float>(r)};
-        tb::ShapeDesc s;
-        s.polygon = i2d::makeBox(0.5f, 0.5f);
-        b.shapes.push_back(s);
-        d.bodies.push_back(b);
-    }
-    if (!touching) d.settings.gravity = {0.0f, 0.0f};
-    return d;
-}
-
 /// 100 awake boxes (10 columns of 10 that never sleep) plus `idle` boxes far
 /// away: static boxes in a sparse grid, or dynamic boxes resting in columns
 /// of 10 on their own ground, which fall asleep within the first second.
@@ -431,17 +405,6 @@ struct ScalingRow {
     int contacts[2] = {0, 0};
 };
 
-std::size_t heapInUse() {
-#if defined(__GLIBC__) && (__GLIBC__ > 2 || (__GLIBC__ == 2 && __GLIBC_MINOR__ >= 33))
-    // Heap chunks plus the large blocks glibc maps separately (its mmap
-    // threshold moves at run time, so a big array may land in either).
-    const struct mallinfo2 m = mallinfo2();
-    return m.uordblks + m.hblkhd;
-#else
-    return 0;
-#endif
-}
-
 struct IdleRow {
     std::string world;
     double ms[2] = {0, 0};  ///< Impulse2D, Box2D
@@ -453,16 +416,6 @@ struct MemoryRow {
     double perBody = 0, perContact = 0;
     int bodies = 0, contacts = 0;
 };
-
-/// Heap bytes held by a simulation of `desc` after `steps` steps.
-std::size_t heldBytes(const tb::SceneDesc& desc, EngineKind engine, int steps, int* contacts) {
-    const std::size_t before = heapInUse();
-    auto sim = tb::makeSimulation(desc, engine);
-    for (int i = 0; i < steps; ++i) sim->step(desc.dt);
-    const std::size_t after = heapInUse();
-    if (contacts) *contacts = sim->touchingContactCount();
-    return after > before ? after - before : 0;
-}
 
 // ---------------------------------------------------------------- output --
 
@@ -555,6 +508,7 @@ void writePlots(const std::vector<SceneResult>& results, const std::vector<Scali
 
 // The markdown is long but plain: one function, in the order of the document.
 namespace {
+
 
 std::string machineLine() {
     std::string cpu = "unknown CPU";
