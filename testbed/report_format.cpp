@@ -62,8 +62,8 @@ std::string reportToJson(const RunReport& r) {
 }
 
 void printReportText(const RunReport& r, std::ostream& out) {
-    out << "scene " << r.scene << " (" << engineName(r.engine) << "): " << r.stepsCompleted << "/" << r.steps << " steps of " << r.dt << " s, "
-        << r.bodies << " bodies, " << r.joints << " joints\n";
+    out << "scene " << r.scene << " (" << engineName(r.engine) << "): " << r.stepsCompleted << "/" << r.steps
+        << " steps of " << r.dt << " s, " << r.bodies << " bodies, " << r.joints << " joints\n";
     out << std::fixed << std::setprecision(3);
     out << "  ms/step  median " << r.msMedian << "  min " << r.msMin << "  max " << r.msMax << "\n";
     out << "  contacts " << r.contacts << " (max " << r.maxContacts << "), max penetration " << std::setprecision(5)

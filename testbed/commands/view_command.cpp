@@ -79,7 +79,8 @@ int runViewCommand(const std::vector<std::string>& args, std::ostream& out, std:
         int start = 0;
         if (!a.scene.empty()) {
             const std::string& wanted = a.scene;
-            auto it = std::find_if(scenes.begin(), scenes.end(), [&](const ViewerScene& s) { return s.name == wanted; });
+            auto it = std::find_if(scenes.begin(), scenes.end(),
+                                   [&](const ViewerScene& s) { return s.name == wanted; });
             if (it != scenes.end()) {
                 start = static_cast<int>(it - scenes.begin());
             } else {
