@@ -5,22 +5,12 @@
 #include <cmath>
 #include <map>
 
+#include "enum_names.hpp"
 #include "metrics.hpp"
 
 namespace tb {
 
-const char* errorMetricName(ErrorMetric m) {
-    switch (m) {
-        case ErrorMetric::max_excursion: return "max_excursion";
-        case ErrorMetric::max_sway: return "max_sway";
-        case ErrorMetric::max_penetration: return "max_penetration";
-        case ErrorMetric::joint_stretch: return "joint_stretch";
-        case ErrorMetric::rebound_error: return "rebound_error";
-        case ErrorMetric::energy_drift: return "energy_drift";
-        case ErrorMetric::none: break;
-    }
-    return "";
-}
+const char* errorMetricName(ErrorMetric m) { return enumName(m); }
 
 const char* errorMetricUnit(ErrorMetric m) {
     switch (m) {

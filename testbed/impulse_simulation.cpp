@@ -1,6 +1,7 @@
 // Testbed — a scene as an Impulse2D world, behind the Simulation interface.
 #include <algorithm>
 
+#include "enum_names.hpp"
 #include "scene_build.hpp"
 #include "simulation.hpp"
 
@@ -61,7 +62,7 @@ std::unique_ptr<Simulation> makeImpulseSimulation(const SceneDesc& desc) {
     return std::make_unique<ImpulseSimulation>(desc);
 }
 
-const char* engineName(EngineKind kind) { return kind == EngineKind::box2d ? "box2d" : "impulse2d"; }
+const char* engineName(EngineKind kind) { return enumName(kind); }
 
 std::unique_ptr<Simulation> makeSimulation(const SceneDesc& desc, EngineKind kind, const Box2DSettings& box2d) {
     if (kind == EngineKind::impulse2d) return makeImpulseSimulation(desc);

@@ -1,18 +1,21 @@
-// testbed — command-line front end of the Impulse2D testbed.
+// testbed — command-line front end of the Impulse2D testbed: picks the
+// command named by the first argument and hands it the rest.
 //
 //   testbed list                 shipped scenes and their descriptions
 //   testbed run SCENE ...        step a scene headless, report timing/measurements (--json)
 //   testbed render SCENE ...     render frames to PNG (renderer)
 //   testbed view SCENE ...       interactive window (renderer)
 //   testbed impact               evaluate the closed-form impact law on input lines
+#include <exception>
 #include <iostream>
 #include <string>
 #include <vector>
 
-#include "run_command.hpp"
-
-#include "render_command.hpp"
-#include "impact_command.hpp"
+#include "commands/impact_command.hpp"
+#include "commands/list_command.hpp"
+#include "commands/render_command.hpp"
+#include "commands/run_command.hpp"
+#include "commands/view_command.hpp"
 
 namespace {
 
@@ -32,15 +35,13 @@ const char* const kHelp =
 }  // namespace
 
 int main(int argc, char** argv) {
-    // The render and impact entry points may be declared in tb:: or globally.
-    using namespace tb;
     std::vector<std::string> args(argv + 1, argv + argc);
     if (args.empty()) {
         std::cerr << kHelp;
         return 2;
     }
-    std::string cmd = args.front();
-    std::vector<std::string> rest(args.begin() + 1, args.end());
+    const std::string cmd = args.front();
+    const std::vector<std::string> rest(args.begin() + 1, args.end());
     try {
         if (cmd == "help" || cmd == "--help" || cmd == "-h") {
             std::cout << kHelp;
@@ -48,23 +49,11 @@ int main(int argc, char** argv) {
         }
         if (cmd == "list") return tb::runListCommand(rest, std::cout, std::cerr);
         if (cmd == "run") return tb::runRunCommand(rest, std::cout, std::cerr);
-        if (cmd == "render") {
-            return runRenderCommand(rest);
-        }
-        if (cmd == "view") {
-            return runViewCommand(rest);
-        }
-        if (cmd == "impact") {
-            for (const auto& a : rest)
-                if (a == "--help" || a == "-h") {
-                    std::cout << "usage: testbed impact < INPUT\n\n"
-                                 "Resolve impacts read from standard input with the closed-form impact law;\n"
-                                 "see the impact law's documentation for the line format.\n";
-                    return 0;
-                }
-            return runImpactCommand(std::cin, std::cout, std::cerr);
-        }
+        if (cmd == "render") return tb::runRenderCommand(rest, std::cout, std::cerr);
+        if (cmd == "view") return tb::runViewCommand(rest, std::cout, std::cerr);
+        if (cmd == "impact") return tb::runImpactCommand(rest, std::cin, std::cout, std::cerr);
     } catch (const std::exception& e) {
+        // Whatever a command did not catch itself (out of memory, a bug).
         std::cerr << "testbed " << cmd << ": " << e.what() << "\n";
         return 1;
     }

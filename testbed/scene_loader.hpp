@@ -1,6 +1,11 @@
 // Testbed — reading scene files (JSON, format in docs/scene-format.md) into
 // a tb::SceneDesc, and finding the shipped scenes.
 //
+// The implementation is in scene_file/: json_text and json_checks (JSON with
+// field-path errors), world_settings, bodies, joints and generators (the
+// parts of a scene), scene_parser (the whole file) and scene_paths (finding
+// files and the assets directory).
+//
 // Every problem in a file (malformed JSON, unknown field, wrong type, value
 // out of range or not finite, missing field, unknown body name, degenerate
 // geometry) throws tb::SceneError whose message names the file, the field

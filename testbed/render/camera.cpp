@@ -1,3 +1,4 @@
+// Testbed renderer — implementation of camera.hpp (see there).
 #include "render/camera.hpp"
 
 #include <algorithm>

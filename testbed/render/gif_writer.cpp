@@ -1,3 +1,4 @@
+// Testbed renderer — implementation of gif_writer.hpp (see there).
 #include "render/gif_writer.hpp"
 
 #include <spawn.h>

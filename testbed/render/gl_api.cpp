@@ -1,3 +1,4 @@
+// Testbed renderer — implementation of gl_api.hpp (see there).
 #include "render/gl_api.hpp"
 
 #include <cstring>

@@ -1,3 +1,4 @@
+// Testbed renderer — implementation of gl_draw.hpp (see there).
 #include "render/gl_draw.hpp"
 
 #include <algorithm>

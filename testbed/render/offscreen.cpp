@@ -1,3 +1,4 @@
+// Testbed renderer — implementation of offscreen.hpp (see there).
 #include "render/offscreen.hpp"
 
 #include <algorithm>

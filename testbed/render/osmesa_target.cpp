@@ -1,3 +1,4 @@
+// Testbed renderer — implementation of osmesa_target.hpp (see there).
 #include "render/osmesa_target.hpp"
 
 #include <GL/osmesa.h>

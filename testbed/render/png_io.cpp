@@ -1,3 +1,4 @@
+// Testbed renderer — implementation of png_io.hpp (see there).
 #include "render/png_io.hpp"
 
 #include <png.h>

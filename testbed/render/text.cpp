@@ -1,3 +1,4 @@
+// Testbed renderer — implementation of text.hpp (see there).
 #include "render/text.hpp"
 
 namespace tb {

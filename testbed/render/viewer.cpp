@@ -1,3 +1,4 @@
+// Testbed — the interactive viewer: its controller and the SDL2 window (see viewer.hpp).
 #include "render/viewer.hpp"
 
 #include <SDL.h>
@@ -8,34 +9,19 @@
 #include <iostream>
 #include <optional>
 #include <stdexcept>
-#include <tuple>
 
 #include "render/camera.hpp"
-#include "render/cli_args.hpp"
 #include "render/gl_draw.hpp"
 #include "render/offscreen.hpp"
 #include "render/png_io.hpp"
 #include "render/text.hpp"
+#include "enum_names.hpp"
 #include "scene.hpp"
 #include "scene_build.hpp"
-#include "scene_loader.hpp"
 
 namespace tb {
 
 namespace {
-
-const char* correctionName(i2d::PositionCorrection c) {
-    switch (c) {
-        case i2d::PositionCorrection::baumgarte: return "baumgarte";
-        case i2d::PositionCorrection::split: return "split";
-        case i2d::PositionCorrection::soft_step: return "soft_step";
-    }
-    return "?";
-}
-
-const char* impactName(i2d::ImpactModel m) {
-    return m == i2d::ImpactModel::closed_form ? "closed_form" : "velocity_bias";
-}
 
 /// A damped spring (5 Hz, damping ratio 0.7) pulling the grabbed point
 /// toward the pointer, on the effective mass at that point so that the
@@ -238,7 +224,7 @@ std::string ViewerController::settingsLine() const {
     const i2d::WorldSettings& s = scene_.world->settings();
     char line[256];
     std::snprintf(line, sizeof line, "%s | %s | sleep %s | iters %d | substeps %d | contacts %s | aabbs %s",
-                  correctionName(s.positionCorrection), impactName(s.impactModel), s.enableSleep ? "on" : "off",
+                  enumName(s.positionCorrection), enumName(s.impactModel), s.enableSleep ? "on" : "off",
                   s.velocityIterations, s.substeps, flags_.contacts ? "on" : "off", flags_.aabbs ? "on" : "off");
     return line;
 }
@@ -396,88 +382,12 @@ int runWindow(ViewerController& viewer, const ViewerOptions& options) {
     return 0;
 }
 
-void printViewUsage(std::ostream& out) {
-    out << "usage: testbed view [SCENE] [--assets DIR] [--size WxH] [--paused] [--screenshot FILE --frames N]\n"
-           "keys: space pause, s/right step, r restart, n/p (page down/up) next/previous scene,\n"
-           "      m position correction, i impact model, z sleep, +/- velocity iterations, ./, substeps,\n"
-           "      c contacts, a AABBs, j joints, h help, q/escape quit; mouse: drag bodies, wheel zoom\n";
-}
-
 }  // namespace
 
 int runViewer(const std::vector<ViewerScene>& scenes, int startIndex, const ViewerOptions& options) {
     try {
         ViewerController viewer(scenes, startIndex, options.width, options.height, options.paused);
         return runWindow(viewer, options);
-    } catch (const std::exception& e) {
-        std::cerr << "testbed view: " << e.what() << "\n";
-        return 1;
-    }
-}
-
-int runViewCommand(const std::vector<std::string>& args) {
-    ViewerOptions options;
-    std::string sceneName, assetsDir;
-    bool framesGiven = false;
-    try {
-        for (std::size_t i = 0; i < args.size(); ++i) {
-            const std::string& a = args[i];
-            auto value = [&]() -> const std::string& { return optionValue(args, i); };
-            if (a == "-h" || a == "--help") {
-                printViewUsage(std::cout);
-                return 0;
-            } else if (a == "--assets") {
-                assetsDir = value();
-            } else if (a == "--size") {
-                std::tie(options.width, options.height) = parseSizeArg(a, value(), 16);
-            } else if (a == "--screenshot") {
-                options.screenshot = value();
-            } else if (a == "--frames") {
-                options.frames = parseIntArg(a, value());
-                if (options.frames < 1) throw std::invalid_argument("--frames: expected at least 1");
-                framesGiven = true;
-            } else if (a == "--paused") {
-                options.paused = true;
-            } else if (!a.empty() && a[0] == '-') {
-                throw std::invalid_argument("unknown option " + a);
-            } else if (sceneName.empty()) {
-                sceneName = a;
-            } else {
-                throw std::invalid_argument("more than one scene given");
-            }
-        }
-        if (framesGiven && options.screenshot.empty())
-            throw std::invalid_argument("--frames needs --screenshot FILE");
-    } catch (const std::invalid_argument& e) {
-        std::cerr << "testbed view: " << e.what() << "\n";
-        printViewUsage(std::cerr);
-        return 2;
-    }
-
-    try {
-        if (assetsDir.empty()) assetsDir = defaultAssetsDir();
-        std::vector<ViewerScene> scenes;
-        for (const auto& entry : listScenes(assetsDir)) {
-            std::string name = entry.first;
-            scenes.push_back({name, [name, assetsDir] { return buildScene(loadSceneDesc(name, assetsDir)); }});
-        }
-        int start = 0;
-        if (!sceneName.empty()) {
-            auto it = std::find_if(scenes.begin(), scenes.end(), [&](const ViewerScene& s) { return s.name == sceneName; });
-            if (it != scenes.end()) {
-                start = static_cast<int>(it - scenes.begin());
-            } else {
-                // A file path or a scene outside the list: first in the cycle.
-                loadSceneDesc(sceneName, assetsDir);  // report a bad name before opening a window
-                scenes.insert(scenes.begin(),
-                              {sceneName, [sceneName, assetsDir] { return buildScene(loadSceneDesc(sceneName, assetsDir)); }});
-            }
-        }
-        if (scenes.empty()) {
-            std::cerr << "testbed view: no scenes found in " << assetsDir << "\n";
-            return 1;
-        }
-        return runViewer(scenes, start, options);
     } catch (const std::exception& e) {
         std::cerr << "testbed view: " << e.what() << "\n";
         return 1;

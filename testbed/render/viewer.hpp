@@ -130,7 +130,4 @@ private:
 /// Returns the process exit code.
 int runViewer(const std::vector<ViewerScene>& scenes, int startIndex, const ViewerOptions& options);
 
-/// `testbed view ...`; args are the words after "view". Returns the exit code.
-int runViewCommand(const std::vector<std::string>& args);
-
 }  // namespace tb

@@ -10,14 +10,17 @@
 #include <filesystem>
 #include <fstream>
 #include <iterator>
+#include <sstream>
 #include <string>
 #include <vector>
 
+#include "commands/render_command.hpp"
+#include "commands/view_command.hpp"
 #include "render/camera.hpp"
 #include "render/gif_writer.hpp"
 #include "render/offscreen.hpp"
 #include "render/png_io.hpp"
-#include "render/render_command.hpp"
+#include "render/scene_frames.hpp"
 #include "render/text.hpp"
 #include "render/viewer.hpp"
 #include "test_scene.hpp"
@@ -336,8 +339,80 @@ TEST(RenderScene, RejectsBadOptions) {
     o.frames = 1;
     o.every = 0;
     EXPECT_THROW(tb::renderSceneFrames(scene, o), std::runtime_error);
-    EXPECT_EQ(tb::runRenderCommand({"--frames"}), 2);
-    EXPECT_EQ(tb::runRenderCommand({"x", "--size", "12"}), 2);
+}
+
+struct CommandRun {
+    int code;
+    std::string out, err;
+};
+
+CommandRun renderCommand(const std::vector<std::string>& args) {
+    std::ostringstream out, err;
+    const int code = tb::runRenderCommand(args, out, err);
+    return {code, out.str(), err.str()};
+}
+
+CommandRun viewCommand(const std::vector<std::string>& args) {
+    std::ostringstream out, err;
+    const int code = tb::runViewCommand(args, out, err);
+    return {code, out.str(), err.str()};
+}
+
+// The message's first line: "testbed render: " once, then what is wrong.
+std::string firstLine(const std::string& text) { return text.substr(0, text.find('\n')); }
+
+TEST(RenderCommand, BadArgumentsAreUsageErrors) {
+    for (const std::vector<std::string>& args : std::vector<std::vector<std::string>>{
+             {"--frames"},
+             {"x", "--size", "12"},
+             {"x", "--size", "12x12"},
+             {"x", "--size", "9000x100"},
+             {"x", "--frames", "0"},
+             {"x", "--frames", "many"},
+             {"x", "--every", "-3"},
+             {"x", "--ssaa", "5"},
+             {"x", "--frobnicate"},
+             {"x", "y"},
+             {},
+         }) {
+        const CommandRun r = renderCommand(args);
+        EXPECT_EQ(r.code, 2) << r.err;
+        EXPECT_EQ(r.err.rfind("testbed render: ", 0), 0u) << r.err;
+        EXPECT_EQ(firstLine(r.err).find("render: ", 16), std::string::npos) << r.err;
+        EXPECT_TRUE(r.out.empty());
+    }
+}
+
+// `--every 0` used to reach the renderer, fail there with the prefix twice
+// ("testbed render: render: ...") and exit 1.
+TEST(RenderCommand, EveryZeroIsAUsageErrorWithOnePrefix) {
+    const CommandRun r = renderCommand({"stack5", "--every", "0", "--quiet"});
+    EXPECT_EQ(r.code, 2);
+    EXPECT_EQ(firstLine(r.err), "testbed render: --every: expected an integer of at least 1, got '0'");
+    EXPECT_NE(r.err.find("usage: testbed render"), std::string::npos) << r.err;
+}
+
+TEST(RenderCommand, HelpGoesToStandardOutput) {
+    const CommandRun r = renderCommand({"--help"});
+    EXPECT_EQ(r.code, 0);
+    EXPECT_EQ(r.out.rfind("usage: testbed render", 0), 0u);
+    EXPECT_TRUE(r.err.empty());
+}
+
+TEST(ViewCommand, BadArgumentsAreUsageErrors) {
+    for (const std::vector<std::string>& args : std::vector<std::vector<std::string>>{
+             {"--size"},
+             {"--size", "15x100"},
+             {"--frames", "3"},
+             {"--screenshot", "x.png", "--frames", "0"},
+             {"a", "b"},
+             {"--frobnicate"},
+         }) {
+        const CommandRun r = viewCommand(args);
+        EXPECT_EQ(r.code, 2) << r.err;
+        EXPECT_EQ(r.err.rfind("testbed view: ", 0), 0u) << r.err;
+        EXPECT_NE(r.err.find("usage: testbed view"), std::string::npos) << r.err;
+    }
 }
 
 TEST(Viewer, TakesAScreenshotUnderXvfbAndQuits) {

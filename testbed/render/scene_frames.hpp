@@ -1,9 +1,5 @@
-// Testbed — `testbed render`: run a scene offscreen and write its frames as
-// PNG files, a contact sheet and an animated GIF.
-//
-//   testbed render SCENE --frames N [--every K] --out DIR [--size WxH]
-//                  [--assets DIR] [--ssaa S] [--contacts] [--aabbs]
-//                  [--no-gif] [--no-sheet] [--no-caption] [--quiet]
+// Testbed — run a scene offscreen and write its frames as PNG files, a
+// contact sheet and an animated GIF (what `testbed render` does).
 //
 // Frame i (0-based) is the state after i·K steps: DIR/frame_0000.png is the
 // initial state; N steps are simulated and ceil(N / K) frames written.
@@ -46,11 +42,5 @@ RenderResult renderSceneFrames(Scene& scene, const RenderOptions& options);
 
 /// Columns of the contact sheet for `count` frames (about 16:9 overall).
 int sheetColumns(int count, int frameWidth, int frameHeight);
-
-/// `testbed render ...`; args are the words after "render". Returns the exit code.
-int runRenderCommand(const std::vector<std::string>& args);
-
-/// `testbed view ...` (see viewer.hpp); args are the words after "view".
-int runViewCommand(const std::vector<std::string>& args);
 
 }  // namespace tb

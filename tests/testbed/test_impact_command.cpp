@@ -1,13 +1,11 @@
-// The `testbed impact` command's JSON handling. The testbed is not linked into
-// the unit tests, so its single source file (which needs only nlohmann-json
-// and the engine) is compiled into this test directly.
+// The `testbed impact` command's JSON handling.
 #include <gtest/gtest.h>
 
 #include <nlohmann/json.hpp>
 #include <sstream>
 #include <string>
 
-#include "../../testbed/impact_command.cpp"
+#include "commands/impact_command.hpp"
 
 namespace {
 
@@ -19,7 +17,7 @@ struct CommandRun {
 CommandRun run(const std::string& input) {
     std::istringstream in(input);
     std::ostringstream out, err;
-    const int code = runImpactCommand(in, out, err);
+    const int code = tb::runImpactCommand(in, out, err);
     return {code, out.str(), err.str()};
 }
 

@@ -10,8 +10,17 @@
 #pragma once
 
 #include <iosfwd>
+#include <string>
+#include <vector>
+
+namespace tb {
+
+/// `testbed impact ...`: --help, or resolve what `in` holds. Returns the exit code.
+int runImpactCommand(const std::vector<std::string>& args, std::istream& in, std::ostream& out, std::ostream& err);
 
 /// Returns 0 on success; on invalid input (malformed JSON, missing or unknown
 /// fields, wrong types, or an input resolveImpact refuses) prints a message to
 /// `err`, prints nothing to `out` and returns 1.
 int runImpactCommand(std::istream& in, std::ostream& out, std::ostream& err);
+
+}  // namespace tb

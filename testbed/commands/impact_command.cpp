@@ -1,4 +1,5 @@
-#include "impact_command.hpp"
+// Testbed — `testbed impact` (see impact_command.hpp).
+#include "commands/impact_command.hpp"
 
 #include <initializer_list>
 #include <istream>
@@ -9,6 +10,10 @@
 
 #include "impulse2d/error.hpp"
 #include "impulse2d/impact.hpp"
+
+#include "cli/arguments.hpp"
+
+namespace tb {
 
 namespace {
 
@@ -74,7 +79,21 @@ ordered resolveOne(const json& j, const std::string& where) {
                 {"case", i2d::toString(r.kind)}};
 }
 
+const char* const kImpactHelp =
+    "usage: testbed impact < INPUT\n\n"
+    "Resolve impacts read from standard input with the closed-form impact law;\n"
+    "see the impact law's documentation for the line format.\n";
+
 }  // namespace
+
+int runImpactCommand(const std::vector<std::string>& args, std::istream& in, std::ostream& out, std::ostream& err) {
+    // Other arguments have always been ignored: the input is all on stdin.
+    if (wantsHelp(args)) {
+        out << kImpactHelp;
+        return 0;
+    }
+    return runImpactCommand(in, out, err);
+}
 
 int runImpactCommand(std::istream& in, std::ostream& out, std::ostream& err) {
     json input;
@@ -100,3 +119,5 @@ int runImpactCommand(std::istream& in, std::ostream& out, std::ostream& err) {
     }
     return 0;
 }
+
+}  // namespace tb

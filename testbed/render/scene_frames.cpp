@@ -1,20 +1,17 @@
-#include "render/render_command.hpp"
+// Testbed — rendering a scene's frames, sheet and GIF (see scene_frames.hpp).
+#include "render/scene_frames.hpp"
 
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
 #include <filesystem>
-#include <iostream>
+#include <string>
 #include <stdexcept>
-#include <tuple>
 
 #include <unistd.h>
 
-#include "render/cli_args.hpp"
 #include "render/gif_writer.hpp"
 #include "scene.hpp"
-#include "scene_build.hpp"
-#include "scene_loader.hpp"
 
 namespace tb {
 
@@ -87,16 +84,16 @@ int sheetColumns(int count, int frameWidth, int frameHeight) {
 }
 
 RenderResult renderSceneFrames(Scene& scene, const RenderOptions& options) {
-    if (!scene.world) throw std::runtime_error("render: the scene has no world");
-    if (options.frames < 1) throw std::runtime_error("render: --frames must be at least 1");
-    if (options.every < 1) throw std::runtime_error("render: --every must be at least 1");
+    if (!scene.world) throw std::runtime_error("the scene has no world");
+    if (options.frames < 1) throw std::runtime_error("--frames must be at least 1");
+    if (options.every < 1) throw std::runtime_error("--every must be at least 1");
     if (options.width < 16 || options.height < 16 || options.width > 8192 || options.height > 8192)
-        throw std::runtime_error("render: --size must be between 16x16 and 8192x8192");
+        throw std::runtime_error("--size must be between 16x16 and 8192x8192");
 
     std::filesystem::path dir(options.outDir);
     std::error_code ec;
     std::filesystem::create_directories(dir, ec);
-    if (ec) throw std::runtime_error("render: cannot create " + dir.string() + ": " + ec.message());
+    if (ec) throw std::runtime_error("cannot create " + dir.string() + ": " + ec.message());
 
     OffscreenRenderer renderer(options.width, options.height, options.supersample);
     View2D view = sceneView(scene, options.width, options.height);
@@ -143,94 +140,6 @@ RenderResult renderSceneFrames(Scene& scene, const RenderOptions& options) {
             result.gifPath = gif;
     }
     return result;
-}
-
-namespace {
-
-void printRenderUsage(std::ostream& out) {
-    out << "usage: testbed render SCENE --frames N [--every K] --out DIR [--size WxH]\n"
-           "                      [--assets DIR] [--ssaa S] [--contacts] [--aabbs]\n"
-           "                      [--no-gif] [--no-sheet] [--no-caption] [--quiet]\n"
-           "  SCENE      scene name (from the assets directory) or path to a scene file\n"
-           "  --frames   steps to simulate (default 120)\n"
-           "  --every    write a frame every K steps (default 1)\n"
-           "  --out      output directory (default out/SCENE)\n"
-           "  --size     frame size in pixels (default 1280x720)\n"
-           "  --ssaa     supersampling factor 1-4 for antialiasing (default 2)\n"
-           "writes DIR/frame_0000.png..., DIR/sheet.png and DIR/anim.gif (needs ImageMagick convert)\n";
-}
-
-}  // namespace
-
-int runRenderCommand(const std::vector<std::string>& args) {
-    RenderOptions options;
-    std::string sceneName, assetsDir, outDir;
-    try {
-        for (std::size_t i = 0; i < args.size(); ++i) {
-            const std::string& a = args[i];
-            auto value = [&]() -> const std::string& { return optionValue(args, i); };
-            if (a == "-h" || a == "--help") {
-                printRenderUsage(std::cout);
-                return 0;
-            } else if (a == "--frames") {
-                options.frames = parseIntArg(a, value());
-            } else if (a == "--every") {
-                options.every = parseIntArg(a, value());
-            } else if (a == "--out") {
-                outDir = value();
-            } else if (a == "--size") {
-                std::tie(options.width, options.height) = parseSizeArg(a, value(), 1);
-            } else if (a == "--assets") {
-                assetsDir = value();
-            } else if (a == "--ssaa") {
-                options.supersample = parseIntArg(a, value());
-                if (options.supersample < 1 || options.supersample > 4)
-                    throw std::invalid_argument("--ssaa: expected 1 to 4");
-            } else if (a == "--contacts") {
-                options.flags.contacts = true;
-            } else if (a == "--aabbs") {
-                options.flags.aabbs = true;
-            } else if (a == "--no-gif") {
-                options.writeGif = false;
-            } else if (a == "--no-sheet") {
-                options.writeSheet = false;
-            } else if (a == "--no-caption") {
-                options.caption = false;
-            } else if (a == "--quiet") {
-                options.progress = false;
-            } else if (!a.empty() && a[0] == '-') {
-                throw std::invalid_argument("unknown option " + a);
-            } else if (sceneName.empty()) {
-                sceneName = a;
-            } else {
-                throw std::invalid_argument("more than one scene given ('" + sceneName + "', '" + a + "')");
-            }
-        }
-        if (sceneName.empty()) throw std::invalid_argument("no scene given");
-    } catch (const std::invalid_argument& e) {
-        std::cerr << "testbed render: " << e.what() << "\n";
-        printRenderUsage(std::cerr);
-        return 2;
-    }
-
-    try {
-        if (assetsDir.empty()) assetsDir = defaultAssetsDir();
-        SceneDesc desc = loadSceneDesc(sceneName, assetsDir);
-        Scene scene = buildScene(desc);
-        std::string stem = !scene.desc.name.empty() ? scene.desc.name : std::filesystem::path(sceneName).stem().string();
-        options.outDir = outDir.empty() ? (std::filesystem::path("out") / stem).string() : outDir;
-        RenderResult r = renderSceneFrames(scene, options);
-        std::cerr << "wrote " << r.framePaths.size() << " frames to " << options.outDir << "\n";
-        if (!r.sheetPath.empty()) std::cerr << "contact sheet: " << r.sheetPath << "\n";
-        if (!r.gifPath.empty())
-            std::cerr << "animation: " << r.gifPath << "\n";
-        else if (options.writeGif)
-            std::cerr << "warning: anim.gif not written: " << r.gifMessage << "\n";
-        return 0;
-    } catch (const std::exception& e) {
-        std::cerr << "testbed render: " << e.what() << "\n";
-        return 1;
-    }
 }
 
 }  // namespace tb

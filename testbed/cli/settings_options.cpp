@@ -1,0 +1,45 @@
+// Testbed — world-settings overrides from the command line (see settings_options.hpp).
+#include "cli/settings_options.hpp"
+
+namespace tb {
+
+const char* settingsOptionsHelp() {
+    return "settings options (override the scene's world settings):\n"
+           "  --velocity-iterations N   velocity iterations per step (baumgarte, split; soft_step has one\n"
+           "                            solve and one relax pass per substep); Box2D's with --engine box2d\n"
+           "  --position-iterations N   position iterations (split); Box2D's with --engine box2d\n"
+           "  --substeps N              substeps per step (soft_step)\n"
+           "  --correction MODE         soft_step | baumgarte | split\n"
+           "  --impact MODEL            closed_form | velocity_bias\n"
+           "  --sleep on|off            enable or disable sleeping\n";
+}
+
+void SettingsOverrides::applyTo(i2d::WorldSettings& s) const {
+    if (velocityIterations) s.velocityIterations = *velocityIterations;
+    if (positionIterations) s.positionIterations = *positionIterations;
+    if (substeps) s.substeps = *substeps;
+    if (correction) s.positionCorrection = *correction;
+    if (impact) s.impactModel = *impact;
+    if (sleep) s.enableSleep = *sleep;
+}
+
+bool parseSettingsOption(ArgReader& r, SettingsOverrides& o) {
+    if (r.is("--velocity-iterations")) {
+        o.velocityIterations = static_cast<int>(r.integer(1, 1000));
+    } else if (r.is("--position-iterations")) {
+        o.positionIterations = static_cast<int>(r.integer(0, 1000));
+    } else if (r.is("--substeps")) {
+        o.substeps = static_cast<int>(r.integer(1, 1000));
+    } else if (r.is("--correction")) {
+        o.correction = r.choice<i2d::PositionCorrection>();
+    } else if (r.is("--impact")) {
+        o.impact = r.choice<i2d::ImpactModel>();
+    } else if (r.is("--sleep")) {
+        o.sleep = r.onOff();
+    } else {
+        return false;
+    }
+    return true;
+}
+
+}  // namespace tb

@@ -1,0 +1,100 @@
+// Testbed — `testbed run` (see run_command.hpp).
+#include "commands/run_command.hpp"
+
+#include <cmath>
+#include <ostream>
+
+#include "report_format.hpp"
+#include "run_report.hpp"
+#include "scene_loader.hpp"
+
+namespace tb {
+
+const char* const kRunHelp =
+    "usage: testbed run SCENE [--steps N | --seconds S] [--json] [--engine impulse2d|box2d] [--assets DIR]\n"
+    "                  [settings options]\n"
+    "\n"
+    "Step a scene without rendering and report timing and measurements.\n"
+    "SCENE is a shipped scene name (see `testbed list`) or a path to a .json scene file.\n"
+    "\n"
+    "  --steps N       number of steps (default 600)\n"
+    "  --seconds S     simulated time instead of --steps (steps = round(S / dt))\n"
+    "  --json          print one JSON object: scene, steps, dt, ms_per_step {median,min,max},\n"
+    "                  bodies, contacts, max_contacts, max_penetration, energy {initial,final,max},\n"
+    "                  nan, named {NAME: {x0,y0,angle0,x,y,angle,vx,vy,w,max_dx,min_y,max_y}},\n"
+    "                  engine, notes, settings, displaced, joint_error {max,final},\n"
+    "                  error {metric,value,unit} (the scene's error figure, null if none) and a few more\n"
+    "  --engine E      impulse2d (default) or box2d: the same scene in Box2D 2.4.1, same report;\n"
+    "                  --velocity-iterations / --position-iterations then set Box2D's counts\n"
+    "                  (default 8 and 3) and the other settings options do not apply\n"
+    "  --assets DIR    assets directory holding scenes/ (default: next to the executable or the source tree)\n";
+
+RunOptions parseRunOptions(const std::vector<std::string>& args) {
+    RunOptions o;
+    ArgReader r(args);
+    while (r.next()) {
+        if (parseSettingsOption(r, o.overrides)) continue;
+        if (r.is("--steps")) {
+            o.steps = r.integer(0, 100000000L);
+        } else if (r.is("--seconds")) {
+            o.seconds = r.number(0.0, 1.0e6);
+        } else if (r.is("--json")) {
+            o.json = true;
+        } else if (r.is("--engine")) {
+            o.engine = r.choice<EngineKind>();
+        } else if (r.is("--assets")) {
+            o.assetsDir = r.value();
+        } else if (r.isOption()) {
+            r.rejectUnknownOption();
+        } else if (o.scene.empty()) {
+            o.scene = r.current();
+        } else {
+            throw UsageError("unexpected argument '" + r.current() + "' (one scene per run)");
+        }
+    }
+    if (o.scene.empty()) throw UsageError("no scene given");
+    if (o.steps && o.seconds) throw UsageError("give --steps or --seconds, not both");
+    return o;
+}
+
+Box2DSettings RunOptions::box2dSettings() const {
+    Box2DSettings b;
+    if (overrides.velocityIterations) b.velocityIterations = *overrides.velocityIterations;
+    if (overrides.positionIterations) b.positionIterations = *overrides.positionIterations;
+    return b;
+}
+
+int runRunCommand(const std::vector<std::string>& args, std::ostream& out, std::ostream& err) {
+    if (wantsHelp(args)) {
+        out << kRunHelp << "\n" << settingsOptionsHelp();
+        return 0;
+    }
+    RunOptions opt;
+    try {
+        opt = parseRunOptions(args);
+    } catch (const UsageError& e) {
+        return reportUsageError(err, "run", e, "(see `testbed run --help`)\n");
+    }
+    try {
+        SceneDesc desc = loadSceneDesc(opt.scene, opt.assetsDir);
+        opt.overrides.applyTo(desc.settings);
+        long steps = 600;
+        if (opt.steps) steps = *opt.steps;
+        if (opt.seconds) steps = std::lround(*opt.seconds / static_cast<double>(desc.dt));
+        RunReport rep = runScene(desc, steps, opt.engine, opt.box2dSettings());
+        if (opt.json) {
+            out << reportToJson(rep) << "\n";
+        } else {
+            printReportText(rep, out);
+        }
+        return rep.nan ? 1 : 0;
+    } catch (const SceneError& e) {
+        err << "testbed run: " << e.what() << "\n";
+        return 1;
+    } catch (const i2d::Error& e) {
+        err << "testbed run: engine error: " << e.what() << "\n";
+        return 1;
+    }
+}
+
+}  // namespace tb
