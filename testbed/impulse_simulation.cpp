@@ -14,8 +14,8 @@ public:
         // The world holds everything the simulation needs; the description's
         // bodies and joints are not kept (the Box2D backend keeps none either,
         // so memory figures compare the two engines, not the testbed).
-        scene_.desc.bodies = {};
-        scene_.desc.joints = {};
+        std::vector<BodyDesc>().swap(scene_.desc.bodies);
+        std::vector<DistanceJointDesc>().swap(scene_.desc.joints);
     }
 
     EngineKind engine() const override { return EngineKind::impulse2d; }

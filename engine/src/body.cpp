@@ -17,7 +17,7 @@ void updateMass(WorldState& w, int b) {
     // Parallel-axis sum: I_origin = Σ (I_i + m_i |c_i|²); I_com = I_origin − M |c|².
     float inertiaAtOrigin = 0.0f;
     Vec2 weighted{};
-    for (int s : body.shapes) {
+    for (int s : bodyShapes(w.shapes, body)) {
         const Shape& sh = w.shapes[s];
         if (sh.density == 0.0f) continue;
         const std::optional<MassData> md = shapeMass(sh);
@@ -52,7 +52,7 @@ void updateMass(WorldState& w, int b) {
 
 float solidReach(const WorldState& w, const Body& body) {
     float reach = -1.0f;
-    for (int s : body.shapes) {
+    for (int s : bodyShapes(w.shapes, body)) {
         const Shape& shape = w.shapes[s];
         if (shape.isSensor) continue;
         const ShapeCore core = shapeCore(shape);

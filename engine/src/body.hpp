@@ -45,10 +45,10 @@ struct Body {
     bool awake = true;
     bool enableSleep = true;
     bool alive = false;
+    int firstShape = kNullIndex, lastShape = kNullIndex;  ///< the body's shapes, in creation order (shape.hpp)
     std::uintptr_t userData = 0;
-    std::vector<int> shapes;
-    std::vector<int> contacts;
-    std::vector<int> joints;
+    std::vector<int> contacts;  ///< contact slots
+    std::vector<int> joints;    ///< joint slots, in creation order
 };
 
 /// Solver state of one awake body during a step. The constraint passes of

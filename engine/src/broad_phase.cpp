@@ -52,7 +52,7 @@ void destroyProxy(WorldState& w, int s) {
 void synchronizeProxies(WorldState& w, int b) {
     const Body& body = w.bodies[b];
     BroadPhase& bp = w.broadPhase;
-    for (int s : body.shapes) {
+    for (int s : bodyShapes(w.shapes, body)) {
         Shape& sh = w.shapes[s];
         AABB box = shapeAABB(sh, body.xf);
         if (contains(sh.fatAABB, box)) continue;
@@ -65,7 +65,7 @@ void synchronizeProxies(WorldState& w, int b) {
 
 void wakeShapesAround(WorldState& w, int b) {
     BroadPhase& bp = w.broadPhase;
-    for (int s : w.bodies[b].shapes) {
+    for (int s : bodyShapes(w.shapes, w.bodies[b])) {
         const AABB box = w.shapes[s].fatAABB;
         bp.staticTree.query(box, [&](int other) {
             Shape& o = w.shapes[other];

@@ -41,9 +41,23 @@ void sharePushAmongDeepContacts(WorldState& w) {
 
 }  // namespace
 
+bool contactRowBodies(const WorldState& w, const Contact& ct, int zeroState, RowBodies& out) {
+    if (!ct.touching || ct.isSensor || ct.manifold.pointCount == 0) return false;
+    const Body& bA = w.bodies[ct.bodyA];
+    const Body& bB = w.bodies[ct.bodyB];
+    // solverIndex is set for this step's awake bodies only (static and sleeping: none).
+    out.a = bA.solverIndex >= 0 ? bA.solverIndex : zeroState;
+    out.b = bB.solverIndex >= 0 ? bB.solverIndex : zeroState;
+    out.invMassA = out.a != zeroState ? bA.invMass : 0.0f;
+    out.invIA = out.a != zeroState ? bA.invInertia : 0.0f;
+    out.invMassB = out.b != zeroState ? bB.invMass : 0.0f;
+    out.invIB = out.b != zeroState ? bB.invInertia : 0.0f;
+    // Neither side moves (two sleeping or infinitely heavy bodies): no row.
+    return out.invMassA != 0.0f || out.invIA != 0.0f || out.invMassB != 0.0f || out.invIB != 0.0f;
+}
+
 void prepareContacts(WorldState& w, float h, bool soft) {
     const WorldSettings& set = w.settings;
-    w.solver.constraints.clear();
     const int zeroState = static_cast<int>(w.solver.states.size()) - 1;
     const float rate = 1.0f / h;
     const float hertz = std::min(set.contactHertz, 0.25f * rate);
@@ -53,29 +67,34 @@ void prepareContacts(WorldState& w, float h, bool soft) {
     const bool biasRestitution = set.impactModel == ImpactModel::velocity_bias && !soft;
     const float fullDt = soft ? h * static_cast<float>(set.substeps) : h;
     const float warm = set.enableWarmStarting ? 1.0f : 0.0f;
-    w.solver.deepContactCount.assign(w.solver.states.size(), 0);
+    SolverArrays& s = w.solver;
+    s.deepContactCount.assign(s.states.size(), 0);
     bool anyDeep = false;
+    // Each row goes straight to its place in colour order (solver.cpp coloured
+    // the contacts and left each colour's first slot in colourOffsets).
+    s.constraints.resize(s.rowCount);
+    const std::size_t activeCount = w.activeContacts.size();
 
-    for (int c : w.activeContacts) {
+    for (std::size_t k = 0; k < activeCount; ++k) {
+        const std::uint8_t colour = s.contactColours[k];
+        if (colour == kNoRow) continue;
+        const int c = w.activeContacts[k];
         const Contact& ct = w.contacts[c];
-        if (!ct.touching || ct.isSensor || ct.manifold.pointCount == 0) continue;
         const Body& bA = w.bodies[ct.bodyA];
         const Body& bB = w.bodies[ct.bodyB];
-        // solverIndex is set for this step's awake bodies only (static and sleeping: none).
-        const int a = bA.solverIndex >= 0 ? bA.solverIndex : zeroState;
-        const int b = bB.solverIndex >= 0 ? bB.solverIndex : zeroState;
-        const float invMassA = a != zeroState ? bA.invMass : 0.0f, invIA = a != zeroState ? bA.invInertia : 0.0f;
-        const float invMassB = b != zeroState ? bB.invMass : 0.0f, invIB = b != zeroState ? bB.invInertia : 0.0f;
-        // Neither side moves (two sleeping or infinitely heavy bodies): no row.
-        if (invMassA == 0.0f && invIA == 0.0f && invMassB == 0.0f && invIB == 0.0f) continue;
-        ContactConstraint& cc = w.solver.constraints.emplace_back();
+        RowBodies rb;
+        contactRowBodies(w, ct, zeroState, rb);
+        const int a = rb.a, b = rb.b;
+        // Every field the passes read is written below (a row reads only its
+        // first pointCount points), so the slot needs no clearing.
+        ContactConstraint& cc = s.constraints[static_cast<std::size_t>(s.colourOffsets[colour]++)];
         cc.contact = c;
         cc.a = a;
         cc.b = b;
-        cc.invMassA = invMassA;
-        cc.invIA = invIA;
-        cc.invMassB = invMassB;
-        cc.invIB = invIB;
+        cc.invMassA = rb.invMassA;
+        cc.invIA = rb.invIA;
+        cc.invMassB = rb.invMassB;
+        cc.invIB = rb.invIB;
         cc.normal = ct.manifold.normal;
         cc.friction = ct.friction;
         cc.restitution = ct.restitution;

@@ -11,7 +11,10 @@
 // ContactConstraint and BodyState and nothing else.
 #pragma once
 
+#include <cstdint>
 #include <vector>
+
+#include "contact.hpp"
 
 #include "impulse2d/math.hpp"
 #include "slot_array.hpp"
@@ -47,8 +50,22 @@ struct ContactConstraint {
 };
 static_assert(sizeof(ContactConstraint) == 172, "the layout documented above");
 
-/// Rows of every touching, non-sensor contact in WorldState::activeContacts
-/// with a body that moves, for substeps of length h. `soft`: soft_step.
+/// The bodies of a contact's row: solver state indices (the zero state for a
+/// side that does not move this step) and inverse masses.
+struct RowBodies {
+    int a = kNullIndex, b = kNullIndex;
+    float invMassA = 0, invIA = 0, invMassB = 0, invIB = 0;
+};
+/// False when the contact gets no row: not touching, a sensor, or neither
+/// body moves.
+bool contactRowBodies(const WorldState& w, const Contact& ct, int zeroState, RowBodies& out);
+
+/// Marks an active contact without a row in SolverArrays::contactColours.
+inline constexpr std::uint8_t kNoRow = 0xFF;
+
+/// Rows of every contact in WorldState::activeContacts that gets one (see
+/// contactRowBodies), for substeps of length h (`soft`: soft_step), each
+/// written at its place in colour order: the colouring (solver.cpp) comes first.
 void prepareContacts(WorldState& w, float h, bool soft);
 void warmStartContacts(WorldState& w);
 /// One Gauss-Seidel sweep over the contacts, with the velocity target of `pass`.

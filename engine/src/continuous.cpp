@@ -93,7 +93,7 @@ void solveContinuous(WorldState& w) {
 
         const Transform xf0 = sweep.at(0.0f), xf1 = body.xf;
         float tMin = 1.0f;
-        for (int sh : body.shapes) {
+        for (int sh : bodyShapes(w.shapes, body)) {
             const Shape& shape = w.shapes[sh];
             if (shape.isSensor) continue;
             const ShapeCore core = shapeCore(shape);

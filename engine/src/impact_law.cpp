@@ -1,14 +1,18 @@
-// Impulse2D — closed-form 2D frictional impact (seed 000, §5.2).
+// Impulse2D — the closed-form 2D frictional impact law of Baber (2011),
+// A Correction To Brian Mirtich's Thesis "Impulse-based Dynamic Simulation
+// of Rigid Body Systems", §5.2, with Stronge's energetic coefficient of
+// restitution. (The stage that applies it to a world's contacts is
+// impact_stage.cpp.)
 //
-// The algorithm follows the ten steps of §5.2 in order. Step numbers in the
-// comments refer to §5.2; equation numbers refer to §3. Two places compute a
-// quantity of the seed by a different but algebraically identical formula,
-// because the seed's formula loses precision or needs K⁻¹:
+// The algorithm follows the ten steps of Baber's §5.2 in order. Step numbers
+// in the comments refer to §5.2; equation numbers refer to §3. Two places
+// compute a quantity of the paper by a different but algebraically identical
+// formula, because the paper's formula loses precision or needs K⁻¹:
 //   * the impulse p is accumulated segment by segment (Δp = Δp_y·(dp_x/dp_y, 1))
 //     instead of p = K⁻¹(u − u₀) of Step 9; by equation (2) both are equal;
 //   * det K and the normal rate k_y on a diverging ray are evaluated as sums
 //     of non-negative terms, so they keep their sign for ill-conditioned K.
-// docs/impacts.md lists these and the seed's ambiguities.
+// docs/impacts.md lists these and the paper's ambiguities.
 #include "impulse2d/impact.hpp"
 
 #include <cmath>
@@ -163,7 +167,7 @@ ImpactResult resolveImpact(const ImpactInput& in) {
             if (uOrigin <= 0.0) {
                 // Step 4(b): the origin is reached while still compressing.
                 // W_c = ∫ u_y dp_y = u_y·P + k_y·P²/2 with P = −u_x/k_x, which is
-                // the seed's −u_x u_y/k_x + k_y u_x²/(2k_x²).
+                // Baber's −u_x u_y/k_x + k_y u_x²/(2k_x²).
                 Wc = uy * dpyToOrigin + 0.5 * ky * dpyToOrigin * dpyToOrigin;
                 px += s * dpyToOrigin;
                 py += dpyToOrigin;

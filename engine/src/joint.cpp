@@ -31,7 +31,7 @@ void destroyJoint(WorldState& w, int j) {
         list.erase(std::remove(list.begin(), list.end(), j), list.end());
         wakeBody(w, b);
         // The bodies may collide again: let the broadphase look.
-        for (int s : w.bodies[b].shapes) {
+        for (int s : bodyShapes(w.shapes, w.bodies[b])) {
             Shape& sh = w.shapes[s];
             if (sh.proxy != DynamicTree::kNull) w.broadPhase.markMoved(sh, s);
         }

@@ -20,7 +20,13 @@ int createShape(WorldState& w, int b, const ShapeDef& def, ShapeType type, const
     sh.enableContactEvents = def.enableContactEvents;
     sh.enableSensorEvents = def.enableSensorEvents;
     sh.userData = def.userData;
-    w.bodies[b].shapes.push_back(s);
+    // Appended: a body's shapes stay in creation order (its mass sums and
+    // proxy updates visit them in that order).
+    Body& body = w.bodies[b];
+    sh.prevShape = body.lastShape;
+    if (body.lastShape != kNullIndex) w.shapes[body.lastShape].nextShape = s;
+    else body.firstShape = s;
+    body.lastShape = s;
     createProxy(w, s);
     // A sleeping body stays asleep (a level built asleep stays asleep, as in
     // Box2D): its new shape's contacts wake it when one begins to touch an
@@ -33,8 +39,12 @@ void destroyShape(WorldState& w, int s) {
     const int b = w.shapes[s].body;
     destroyBodyContacts(w, b, s);
     destroyProxy(w, s);
-    std::vector<int>& list = w.bodies[b].shapes;
-    list.erase(std::find(list.begin(), list.end(), s));
+    Body& body = w.bodies[b];
+    const Shape& sh = w.shapes[s];
+    if (sh.prevShape != kNullIndex) w.shapes[sh.prevShape].nextShape = sh.nextShape;
+    else body.firstShape = sh.nextShape;
+    if (sh.nextShape != kNullIndex) w.shapes[sh.nextShape].prevShape = sh.prevShape;
+    else body.lastShape = sh.prevShape;
     w.shapes.release(s);
 }
 

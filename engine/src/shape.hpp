@@ -9,6 +9,7 @@
 
 #include "dynamic_tree.hpp"
 #include "impulse2d/geometry.hpp"
+#include "body.hpp"
 #include "impulse2d/types.hpp"
 #include "slot_array.hpp"
 
@@ -31,6 +32,7 @@ struct Shape {
     float density = 1.0f, friction = 0.6f, restitution = 0.0f;
     Filter filter{};
     int body = kNullIndex;
+    int prevShape = kNullIndex, nextShape = kNullIndex;  ///< neighbours in the body's list
     int proxy = DynamicTree::kNull;
     std::uint32_t generation = 1;
     ShapeType type = ShapeType::circle;
@@ -41,6 +43,30 @@ struct Shape {
     bool inStaticTree = false;
     bool moved = false;  ///< in the broadphase move buffer
     std::uintptr_t userData = 0;
+};
+
+/// The shapes of a body in creation order, for range-for:
+///   for (int s : bodyShapes(w.shapes, body)) ...
+/// (do not destroy shapes while iterating).
+class BodyShapes {
+public:
+    BodyShapes(const SlotArray<Shape>& shapes, int first) : shapes_(&shapes), first_(first) {}
+    struct Iterator {
+        const SlotArray<Shape>* shapes;
+        int s;
+        int operator*() const { return s; }
+        Iterator& operator++() {
+            s = (*shapes)[s].nextShape;
+            return *this;
+        }
+        bool operator!=(const Iterator& o) const { return s != o.s; }
+    };
+    Iterator begin() const { return {shapes_, first_}; }
+    Iterator end() const { return {shapes_, kNullIndex}; }
+
+private:
+    const SlotArray<Shape>* shapes_;
+    int first_;
 };
 
 inline AABB shapeAABB(const Shape& s, const Transform& xf) {
@@ -120,6 +146,8 @@ inline bool shapeContains(const Shape& s, Vec2 localPoint) {
     }
     return false;
 }
+
+inline BodyShapes bodyShapes(const SlotArray<Shape>& shapes, const Body& body) { return {shapes, body.firstShape}; }
 
 /// Creates a shape on a body: its slot, its proxy in the broadphase and the
 /// body's new mass. The geometry must have been validated.

@@ -54,47 +54,53 @@ namespace {
 
 constexpr int kColourCount = 24;  ///< colours tried before the overflow group
 
-void colourContacts(SolverArrays& w) {
-    const std::size_t count = w.constraints.size();
-    const std::size_t bodyCount = w.stateBodies.size();
+/// Colours the rows of this step's active contacts (greedy, in activeContacts
+/// order, overflow group last) and leaves in colourOffsets the first row of
+/// each colour: a stable counting sort, so within a colour the rows keep the
+/// contacts' order. prepareContacts then writes each row at its place.
+void colourContacts(WorldState& w) {
+    SolverArrays& s = w.solver;
+    const std::size_t count = w.activeContacts.size();
+    const std::size_t bodyCount = s.stateBodies.size();
+    const int zeroState = static_cast<int>(s.states.size()) - 1;
     const std::size_t words = (bodyCount + 63) / 64;
-    w.colourBits.assign(words * kColourCount, 0u);
-    w.colourCounts.assign(kColourCount + 1, 0);
-    w.constraintColours.resize(count);
+    s.colourBits.assign(words * kColourCount, 0u);
+    s.colourOffsets.assign(kColourCount + 1, 0);
+    s.contactColours.resize(count);
+    int rows = 0;
     for (std::size_t i = 0; i < count; ++i) {
-        const ContactConstraint& cc = w.constraints[i];
-        const bool moveA = static_cast<std::size_t>(cc.a) < bodyCount && (cc.invMassA != 0.0f || cc.invIA != 0.0f);
-        const bool moveB = static_cast<std::size_t>(cc.b) < bodyCount && (cc.invMassB != 0.0f || cc.invIB != 0.0f);
-        const std::size_t wa = static_cast<std::size_t>(cc.a) / 64, wb = static_cast<std::size_t>(cc.b) / 64;
-        const std::uint64_t ma = moveA ? std::uint64_t{1} << (cc.a % 64) : 0u;
-        const std::uint64_t mb = moveB ? std::uint64_t{1} << (cc.b % 64) : 0u;
+        RowBodies rb;
+        if (!contactRowBodies(w, w.contacts[w.activeContacts[i]], zeroState, rb)) {
+            s.contactColours[i] = kNoRow;
+            continue;
+        }
+        ++rows;
+        const bool moveA = static_cast<std::size_t>(rb.a) < bodyCount && (rb.invMassA != 0.0f || rb.invIA != 0.0f);
+        const bool moveB = static_cast<std::size_t>(rb.b) < bodyCount && (rb.invMassB != 0.0f || rb.invIB != 0.0f);
+        const std::size_t wa = static_cast<std::size_t>(rb.a) / 64, wb = static_cast<std::size_t>(rb.b) / 64;
+        const std::uint64_t ma = moveA ? std::uint64_t{1} << (rb.a % 64) : 0u;
+        const std::uint64_t mb = moveB ? std::uint64_t{1} << (rb.b % 64) : 0u;
         int colour = kColourCount;
         for (int c = 0; c < kColourCount; ++c) {
-            std::uint64_t* bits = w.colourBits.data() + static_cast<std::size_t>(c) * words;
+            std::uint64_t* bits = s.colourBits.data() + static_cast<std::size_t>(c) * words;
             if ((moveA && (bits[wa] & ma)) || (moveB && (bits[wb] & mb))) continue;
             if (moveA) bits[wa] |= ma;
             if (moveB) bits[wb] |= mb;
             colour = c;
             break;
         }
-        w.constraintColours[i] = static_cast<std::uint8_t>(colour);
-        ++w.colourCounts[static_cast<std::size_t>(colour)];
+        s.contactColours[i] = static_cast<std::uint8_t>(colour);
+        ++s.colourOffsets[static_cast<std::size_t>(colour)];
     }
-    // Stable counting sort by colour (the overflow group last, in slot order).
+    // Counts to first rows.
     int offset = 0;
-    for (int& n : w.colourCounts) {
-        int c = n;
+    for (int& n : s.colourOffsets) {
+        const int c = n;
         n = offset;
         offset += c;
     }
-    w.constraintScratch.resize(count);
-    for (std::size_t i = 0; i < count; ++i) {
-        int& slot = w.colourCounts[w.constraintColours[i]];
-        w.constraintScratch[static_cast<std::size_t>(slot++)] = w.constraints[i];
-    }
-    w.constraints.swap(w.constraintScratch);
+    s.rowCount = rows;
 }
-
 
 // ---------------------------------------------------------------------------
 // Integration (Tamis and Maggiore (2015) §3.2, semi-implicit Euler)
@@ -196,8 +202,8 @@ void solve(WorldState& w, float dt) {
 
     gatherBodies(w, h);
     const std::size_t n = s.stateBodies.size();
+    colourContacts(w);
     prepareContacts(w, h, soft);
-    colourContacts(s);
     prepareDistanceJoints(w);
 
     if (soft) {
@@ -273,6 +279,49 @@ void solve(WorldState& w, float dt) {
     }
 }
 
+/// Per-step arrays larger than this are freed when the step ends, so that a
+/// world holds only small scratch between steps (Box2D 2.4.1 likewise keeps a
+/// 100 kB stack and allocates beyond it per step). Below it, a world keeps
+/// its arrays and steps without allocating.
+constexpr std::size_t kKeptScratchBytes = 64 * 1024;
+
+template <class T>
+void releaseIfLarge(std::vector<T>& v) {
+    if (v.capacity() * sizeof(T) > kKeptScratchBytes) std::vector<T>().swap(v);
+}
+
+void releaseLargeStepArrays(WorldState& w) {
+    SolverArrays& s = w.solver;
+    releaseIfLarge(s.states);
+    releaseIfLarge(s.integration);
+    releaseIfLarge(s.stateBodies);
+    releaseIfLarge(s.biasV);
+    releaseIfLarge(s.biasW);
+    releaseIfLarge(s.constraints);
+    releaseIfLarge(s.contactColours);
+    releaseIfLarge(s.colourBits);
+    releaseIfLarge(s.distanceJoints);
+    releaseIfLarge(s.deepContactCount);
+    releaseIfLarge(w.activeContacts);
+    releaseIfLarge(w.gatherScratch);
+    releaseIfLarge(w.impactChanged);
+    releaseIfLarge(w.islands.unionParent);
+}
+
+/// The last step's events are dropped when the next one begins; a burst of
+/// them (a level built at once begins every contact) does not hold its
+/// storage for the rest of the run.
+void clearEvents(EventBuffers& e) {
+    e.contactBegin.clear();
+    e.contactEnd.clear();
+    e.sensorBegin.clear();
+    e.sensorEnd.clear();
+    releaseIfLarge(e.contactBegin);
+    releaseIfLarge(e.contactEnd);
+    releaseIfLarge(e.sensorBegin);
+    releaseIfLarge(e.sensorEnd);
+}
+
 using Clock = std::chrono::steady_clock;
 float msSince(Clock::time_point t0) { return std::chrono::duration<float, std::milli>(Clock::now() - t0).count(); }
 
@@ -285,10 +334,7 @@ void stepWorld(WorldState& w, float dt) {
         ~Unlock() { flag = false; }
     } unlock{w.locked};
 
-    w.events.contactBegin.clear();
-    w.events.contactEnd.clear();
-    w.events.sensorBegin.clear();
-    w.events.sensorEnd.clear();
+    clearEvents(w.events);
 
     Profile& profile = w.profile;
     auto t0 = Clock::now();
@@ -315,6 +361,7 @@ void stepWorld(WorldState& w, float dt) {
 
     t = Clock::now();
     updateSleep(w, dt);
+    releaseLargeStepArrays(w);
     profile.sleep = msSince(t);
     profile.step = msSince(t0);
 }

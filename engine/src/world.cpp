@@ -68,10 +68,7 @@ World::~World() = default;
 World::World(World&&) noexcept = default;
 World& World::operator=(World&&) noexcept = default;
 
-detail::WorldState& World::state() const {
-    if (!state_) fail("this World was moved from; it has no state");
-    return *state_;
-}
+void World::throwMovedFrom() { fail("this World was moved from; it has no state"); }
 
 const WorldSettings& World::settings() const { return state().settings; }
 

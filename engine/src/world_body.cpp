@@ -61,12 +61,12 @@ void World::destroyBody(BodyId id) {
     // Joints first (they wake the other body), then shapes with their contacts.
     std::vector<int> joints = w.bodies[b].joints;
     for (int j : joints) detail::destroyJoint(w, j);
-    std::vector<int> shapes = w.bodies[b].shapes;
+    std::vector<int> shapes;
+    for (int s : detail::bodyShapes(w.shapes, w.bodies[b])) shapes.push_back(s);
     for (int s : shapes) detail::destroyShape(w, s);
     detail::removeAwake(w, b);
     detail::leaveIsland(w, b);
     detail::Body& body = w.bodies[b];
-    body.shapes.clear();
     body.contacts.clear();
     body.joints.clear();
     w.bodies.release(b);
@@ -86,7 +86,7 @@ void World::setBodyType(BodyId id, BodyType type) {
     // Simplest correct path: recreate the proxies in the right tree and
     // drop the contacts; the broadphase finds the pairs again next step.
     detail::destroyBodyContacts(w, b, detail::kNullIndex);
-    for (int s : body.shapes) detail::destroyProxy(w, s);
+    for (int s : detail::bodyShapes(w.shapes, body)) detail::destroyProxy(w, s);
     detail::wakeBody(w, b);
     body.type = type;
     if (type == BodyType::static_body) {
@@ -95,7 +95,7 @@ void World::setBodyType(BodyId id, BodyType type) {
         detail::removeAwake(w, b);
         body.awake = false;
     }
-    for (int s : body.shapes) detail::createProxy(w, s);
+    for (int s : detail::bodyShapes(w.shapes, body)) detail::createProxy(w, s);
     detail::updateMass(w, b);
 }
 
@@ -300,7 +300,7 @@ void World::enableSleep(BodyId id, bool flag) {
 std::vector<ShapeId> World::bodyShapes(BodyId id) const {
     const detail::Body& body = state().bodies[state().bodyIndex(id)];
     std::vector<ShapeId> out;
-    for (int s : body.shapes) out.push_back(state().shapeHandle(s));
+    for (int s : detail::bodyShapes(state().shapes, body)) out.push_back(state().shapeHandle(s));
     return out;
 }
 std::vector<JointId> World::bodyJoints(BodyId id) const {

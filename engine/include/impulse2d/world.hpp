@@ -193,8 +193,12 @@ public:
     void draw(DebugDraw& drawer) const;
 
 private:
+    [[noreturn]] static void throwMovedFrom();
     /// The world's state; throws i2d::Error for a moved-from World.
-    detail::WorldState& state() const;
+    detail::WorldState& state() const {
+        if (!state_) throwMovedFrom();
+        return *state_;
+    }
 
     std::unique_ptr<detail::WorldState> state_;
 };
