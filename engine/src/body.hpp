@@ -5,7 +5,7 @@
 //                    damping, forces, links to its shapes, contacts and joints)
 //   BodyState        32 bytes per awake body: what every solver pass reads
 //                    and writes (velocity and the motion since the step began)
-//   BodyIntegration  24 bytes per awake body: the constant inputs of the
+//   BodyIntegration  28 bytes per awake body: the constant inputs of the
 //                    velocity integration, gathered once per step
 #pragma once
 
@@ -76,6 +76,7 @@ struct BodyIntegration {
     float angularDampingFactor = 1.0f;
     bool movedByForces = false;  ///< dynamic; kinematic bodies keep their velocity
 };
+static_assert(sizeof(BodyIntegration) == 28, "the size docs/architecture.md gives");
 
 /// Mass, centre of mass and rotational inertia from the body's shapes
 /// (parallel-axis sum); keeps the velocity of the centre of mass consistent

@@ -698,11 +698,15 @@ void writeMarkdown(const std::vector<SceneResult>& results, const std::vector<Sc
         md << "### Memory\n\nMeasured as the growth of the C library's heap in use (glibc `mallinfo2()`: heap chunks in use plus separately mapped blocks) from "
               "before a world is built to after it has stepped: per body, "
               "10,000 boxes scattered in empty space (no contacts) stepped twice, divided by 10,000 "
-              "(body, shape, broadphase proxy and the solver's per-step arrays); per contact, the same boxes in "
+              "(body, shape, broadphase proxy and what the world keeps between steps); per contact, the same boxes in "
               "touching columns on a ground box stepped twice, minus the scattered figure, divided by the touching "
-              "contacts (contact, manifold and solver rows; speculative contacts that do not touch are counted "
-              "in the cost but not in the divisor). Box2D 2.4.1 takes memory from its block allocator in 16 kB "
-              "chunks, which this counts as allocated.\n\n"
+              "contacts (contact, manifold, pair set; speculative contacts that do not touch are counted "
+              "in the cost but not in the divisor). This is the memory a world holds between steps: Impulse2D "
+              "frees each per-step solver array larger than 64 kB when the step ends (smaller ones are kept, so "
+              "small worlds step without allocating), as Box2D 2.4.1 keeps a 100 kB stack and allocates its "
+              "solver arrays beyond it per step. Box2D 2.4.1 takes memory from its block allocator in 16 kB "
+              "chunks, which this counts as allocated. The testbed keeps no copy of the scene description "
+              "for either engine. `memory_footprint` prints the same figures alone.\n\n"
               "| engine | bytes per body | bytes per touching contact | bodies | touching contacts |\n|---|---|---|---|---|\n";
         for (const MemoryRow& m : memory)
             md << "| " << (m.engine == EngineKind::box2d ? "Box2D 2.4.1" : "Impulse2D") << " | " << fmt("%.0f", m.perBody)
