@@ -82,7 +82,8 @@ constexpr Rot mulRot(Rot q, Rot r) { return {q.c * r.c - q.s * r.s, q.s * r.c + 
 constexpr Rot invMulRot(Rot q, Rot r) { return {q.c * r.c + q.s * r.s, q.c * r.s - q.s * r.c}; }
 
 /// Advance a rotation by the small angle dθ and renormalise. This is the 2D
-/// form of seed 001's eq. 3.2.4 (o += ½ ω o Δt, then normalise): with the
+/// form of eq. 3.2.4 of Tamis and Maggiore (2015), "Constraint based physics
+/// solver" (o += ½ ω o Δt, then normalise): with the
 /// rotation as a unit complex number q, q' = normalise(q + i dθ q).
 inline Rot integrateRotation(Rot q, float deltaAngle) {
     float c = q.c - deltaAngle * q.s;
