@@ -110,12 +110,14 @@ struct WorldSettings {
     float angularSleepTolerance = 2.0f / 180.0f * 3.14159265f;
 };
 
+/// How a body moves.
 enum class BodyType : std::uint8_t {
     static_body,     ///< never moves; infinite mass
     kinematic_body,  ///< moves by its velocity only; infinite mass
     dynamic_body,    ///< moved by forces, contacts and joints
 };
 
+/// Everything World::createBody needs; the defaults make a static body at the origin.
 struct BodyDef {
     BodyType type = BodyType::static_body;
     Vec2 position{};  ///< body origin, world (m)
@@ -124,11 +126,11 @@ struct BodyDef {
     float angularVelocity = 0.0f;  ///< rad/s
     float linearDamping = 0.0f;  ///< 1/s, ≥ 0
     float angularDamping = 0.0f;  ///< 1/s, ≥ 0
-    float gravityScale = 1.0f;
-    bool fixedRotation = false;
-    bool isAwake = true;
-    bool enableSleep = true;
-    std::uintptr_t userData = 0;
+    float gravityScale = 1.0f;  ///< multiplies the world's gravity for this body
+    bool fixedRotation = false;  ///< no rotation (infinite rotational inertia)
+    bool isAwake = true;  ///< false: created asleep (when sleep is enabled)
+    bool enableSleep = true;  ///< false: this body never sleeps
+    std::uintptr_t userData = 0;  ///< any value of the game's; never read by the engine
 };
 
 /// Which shapes may collide. Two shapes collide when each one's category is
@@ -140,19 +142,21 @@ struct Filter {
     std::int32_t groupIndex = 0;
 };
 
+/// The rule above, as the broadphase applies it.
 constexpr bool shouldCollide(const Filter& a, const Filter& b) {
     if (a.groupIndex == b.groupIndex && a.groupIndex != 0) return a.groupIndex > 0;
     return (a.maskBits & b.categoryBits) != 0 && (a.categoryBits & b.maskBits) != 0;
 }
 
+/// Material and flags of a shape, given to the World::create*Shape functions.
 struct ShapeDef {
     float density = 1.0f;      ///< kg/m², ≥ 0 (0 adds no mass)
     float friction = 0.6f;     ///< Coulomb coefficient μ ≥ 0
     float restitution = 0.0f;  ///< coefficient of restitution e ∈ [0, 1]
     Filter filter{};
     bool isSensor = false;     ///< detects overlap, makes no contact
-    bool enableContactEvents = true;
-    bool enableSensorEvents = true;
+    bool enableContactEvents = true;  ///< report contact begin/end events for this shape
+    bool enableSensorEvents = true;   ///< a sensor: report sensor events
     std::uintptr_t userData = 0;
 };
 
@@ -178,22 +182,26 @@ struct DistanceJointDef {
     std::uintptr_t userData = 0;
 };
 
+/// Two shapes began to touch in the last step (manifold at that moment).
 struct ContactBeginEvent {
     ShapeId shapeA{};
     ShapeId shapeB{};
     Manifold manifold{};
 };
 
+/// Two shapes stopped touching (or their contact was destroyed).
 struct ContactEndEvent {
     ShapeId shapeA{};
     ShapeId shapeB{};
 };
 
+/// A shape (`visitor`) began to overlap a sensor shape.
 struct SensorBeginEvent {
     ShapeId sensor{};
     ShapeId visitor{};
 };
 
+/// A shape stopped overlapping a sensor shape.
 struct SensorEndEvent {
     ShapeId sensor{};
     ShapeId visitor{};
@@ -215,6 +223,8 @@ struct QueryFilter {
     std::uint32_t maskBits = 0xFFFFFFFF;
 };
 
+/// A ray hit: the shape, the entry point and the surface's outward normal
+/// there (world), and the fraction t of the translation at which it is reached.
 struct RayResult {
     ShapeId shape{};
     Vec2 point{};
