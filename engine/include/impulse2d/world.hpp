@@ -15,9 +15,9 @@
 // Errors: see error.hpp — a refused call throws i2d::Error and changes nothing.
 // Every call that takes a handle throws i2d::Error for a null, stale
 // (destroyed) or forged handle; this is not repeated below. "Bounded" below
-// means finite with every component in [−1e7, 1e7]. Calls that create,
-// destroy or restructure (marked "locked" below) also throw when made from
-// inside World::draw (a DebugDraw that calls back into its world).
+// means finite with every component in [−1e7, 1e7]. Calls marked "locked"
+// below (those that create, destroy, move or wake things) also throw when
+// made from inside World::draw (a DebugDraw that calls back into its world).
 // Threading: a World is not thread-safe; different worlds may be used from
 // different threads. Determinism: the same build, the same calls in the same
 // order give bit-identical results.
