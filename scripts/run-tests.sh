@@ -1,17 +1,34 @@
 #!/usr/bin/env bash
-# Every test: set up, build, run the whole CTest suite.
-# With --sanitize, afterwards also build the preset "asan" (AddressSanitizer,
-# UndefinedBehaviorSanitizer, LeakSanitizer) in build-asan/ and run every
-# test there (opt-in: it adds a second full build, see docs/robustness.md).
+# Every test: set up, build with warnings as errors, run the whole CTest
+# suite, then build the engine's tests under AddressSanitizer,
+# UndefinedBehaviorSanitizer and LeakSanitizer (preset "asan-engine",
+# build-asan-engine/) and run them (docs/robustness.md, "Sanitizers").
+#   --sanitize   afterwards also build every target under the sanitizers
+#                (preset "asan", build-asan/) and run every test there: a
+#                second full build, opt-in
+#   --no-asan    skip the sanitizer stage of the engine's tests (a quicker
+#                local run; CI runs it)
 set -euo pipefail
 cd "$(dirname "$0")/.."
 sanitize=0
-[ "${1:-}" = "--sanitize" ] && sanitize=1
-scripts/setup.sh
+engine_asan=1
+for arg in "$@"; do
+  case "$arg" in
+    --sanitize) sanitize=1 ;;
+    --no-asan) engine_asan=0 ;;
+    *) echo "usage: scripts/run-tests.sh [--sanitize] [--no-asan]" >&2; exit 2 ;;
+  esac
+done
+scripts/setup.sh -DI2D_WERROR=ON
 jobs=$(nproc 2>/dev/null || echo 2)
 ctest --test-dir build --output-on-failure -j "$jobs"
+if [ $engine_asan = 1 ]; then
+  cmake --preset asan-engine -DI2D_WERROR=ON >/dev/null
+  cmake --build --preset asan-engine >&2
+  ctest --preset asan-engine
+fi
 if [ $sanitize = 1 ]; then
-  cmake --preset asan >/dev/null
+  cmake --preset asan -DI2D_WERROR=ON >/dev/null
   cmake --build --preset asan >&2
   ctest --preset asan
 fi

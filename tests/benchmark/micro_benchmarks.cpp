@@ -355,7 +355,8 @@ BENCHMARK(I2dContactIteration)->Name("i2d/contact_iteration")->UseManualTime()->
 BENCHMARK(B2dContactIteration)->Name("b2d/contact_iteration")->UseManualTime()->Iterations(400);
 
 // ---------------------------------------------------------------------------
-// Impacts. "closed_form": one call of i2d::resolveImpact (seed 000 §5) for a
+// Impacts. "closed_form": one call of i2d::resolveImpact (Baber (2011), "A Correction To Brian
+// Mirtich's Thesis 'Impulse-based Dynamic Simulation of Rigid Body Systems'", §5) for a
 // rotating box corner striking the ground at 2.8 m/s with friction (the
 // counter `case` is the ImpactCase the law took). "velocity_bias": what the sequential-impulse
 // restitution model spends on the same impact, written out here with the

@@ -123,10 +123,12 @@ TEST(HardCases, BodyDeepInsideTheGroundIsPushedOutNotLaunched) {
 // A stack of 20 unit boxes with the top one 100 times heavier than each box
 // below (a 1:100 mass ratio). Known failure, documented in
 // docs/robustness.md: it collapses in about a third of a second in every
-// position-correction mode. The test measures when the top box has dropped
-// by half a box and asserts the collapse stays finite and bounded.
+// position-correction mode. The tests measure when the top box has dropped
+// by half a box and how far it has sunk after 1/6 s, and assert that the
+// collapse stays finite and bounded and comes no sooner than today.
 struct StackResult {
     float fallTime = -1.0f;  ///< s until the top box is 0.5 m below its start, −1 if never
+    float earlySink = 0.0f;  ///< m the top box has sunk after 10 steps (1/6 s)
     float topY = 0.0f;
     float peakSpeed = 0.0f;
     bool finite = false;
@@ -143,6 +145,7 @@ StackResult heavyTopStack() {
         world.step(kDt);
         r.peakSpeed = std::max(r.peakSpeed, maxSpeed(world, boxes));
         if (r.fallTime < 0.0f && world.position(boxes.back()).y < 19.0f) r.fallTime = (step + 1) * kDt;
+        if (step == 9) r.earlySink = 19.5f - world.position(boxes.back()).y;
     }
     r.topY = world.position(boxes.back()).y;
     r.finite = allFinite(world);
@@ -155,16 +158,44 @@ TEST(HardCases, StackOfTwentyWithHeavyTopCollapsesBoundedly) {
                 r.fallTime, r.topY, r.peakSpeed);
     ASSERT_TRUE(r.finite);
     // Free fall from the top box's height gives √(2·10·19.5) = 19.7 m/s; a
-    // collapse may reach it (measured 20.4 m/s: the heavy box lands on
+    // collapse may reach it (measured 20.6 m/s: the heavy box lands on
     // tumbling boxes), an explosion goes far beyond 1.5 times it.
     EXPECT_LT(r.peakSpeed, 30.0f);
 }
 
-// The target; enable once the solver holds a 1:100 ratio.
-TEST(HardCases, DISABLED_StackOfTwentyWithHeavyTopStands) {
+// The target is a stack that stands (the top never drops by half a box, and
+// sinks by no more than the few millimetres of 20 compressed contacts). Until
+// then this test holds today's figures so that a change cannot make the
+// collapse come sooner. Measured at the default settings: the top sinks
+// 0.137 m in the first 1/6 s (a stack of 20 equal boxes: 0.080 m) and has
+// dropped half a box after 0.350 s (21 steps). Asserted with a margin of
+// three steps for compilers and flags that round differently: fall no sooner
+// than 0.30 s (18 steps), and a sink after 1/6 s under 0.16 m.
+//
+// Why it falls: soft_step's contacts are springs whose stiffness is scaled to
+// each contact's effective mass (Box2D v3's mass-independent softness). Under
+// the heavy top every contact carries 100 times the weight its stiffness was
+// scaled for, so each one compresses by centimetres, the compressions of the
+// 20 contacts add up, and the boxes slide off each other's corners. More
+// substeps do not help (8, 16, 32 substeps: 0.37 s); stiffer contacts only
+// delay it (contactHertz 120, capped at 60 Hz with 4 substeps: 0.42 s); rigid
+// contacts solved to convergence nearly hold it (split with 50 velocity
+// iterations: 5.2 s). What would fix it: softness scaled to the load a contact
+// carries (or to the heavier body's mass) instead of its own effective mass,
+// or a block or direct solver for the normal rows of a column of contacts, so
+// that the 1:100 ratio no longer stalls Gauss-Seidel. Then replace the bounds
+// below by the target: fallTime < 0 and topY within 0.05 m of 19.5.
+TEST(HardCases, StackOfTwentyWithHeavyTopFallsNoSoonerThanToday) {
     StackResult r = heavyTopStack();
-    EXPECT_LT(r.fallTime, 0.0f);            // never drops by half a box
-    EXPECT_NEAR(r.topY, 19.5f, 0.05f);      // 20 contacts compress by a few mm each
+    std::printf("[figure] stack 20, top 100x heavier: sank %.3f m in 1/6 s, dropped 0.5 m after %.3f s\n", r.earlySink,
+                r.fallTime);
+    ASSERT_TRUE(r.finite);
+    if (r.fallTime < 0.0f) {
+        std::printf("[figure] the heavy-top stack stands: make its target the assertion\n");
+    } else {
+        EXPECT_GE(r.fallTime, 0.30f);  // measured 0.350 s
+    }
+    EXPECT_LT(r.earlySink, 0.16f);  // measured 0.137 m
 }
 
 // A 10-link chain (distance joints, 1 kg links) hanging from a static anchor

@@ -1,6 +1,7 @@
 // Test-only oracle: marches the 2D impulse equation in the normal impulse.
 //
-// Seed 000 §3.3: while the contact slides, dp/dp_n = n − μ·σ·t (σ the sign of
+// Baber (2011), "A Correction To Brian Mirtich's Thesis 'Impulse-based
+// Dynamic Simulation of Rigid Body Systems'", §3.3: while the contact slides, dp/dp_n = n − μ·σ·t (σ the sign of
 // the slip u·t), and u(p) follows from equation (1) applied to the bodies.
 // §3.4: the normal force does work dW/dp_n = u·n (equation (4)), counted as
 // compression work W_c while u·n < 0 and decompression work W_d while u·n > 0;

@@ -1,7 +1,8 @@
 // Test-only oracle for the 2D impact law: marches the impulse differential
-// equation of seed 000 §3.3–3.7 (specialised to 2D) in small steps of the
+// equation of Baber (2011), "A Correction To Brian Mirtich's Thesis
+// 'Impulse-based Dynamic Simulation of Rigid Body Systems'", §3.3–3.7 (specialised to 2D) in small steps of the
 // normal impulse, as §4 does, instead of using the closed forms of §5.
-// It shares no code with engine/src/impact.cpp; it only reads the same input
+// It shares no code with engine/src/impact_law.cpp; it only reads the same input
 // aggregate.
 #pragma once
 

@@ -1,6 +1,8 @@
-// Tests of the closed-form 2D impact law (seed 000 §5) against hand-worked
-// cases, physical invariants and an independent numerical oracle
-// (impact_oracle.cpp, which marches the impulse equation of §3.3–3.7).
+// Tests of the closed-form 2D impact law of Baber (2011), "A Correction To
+// Brian Mirtich's Thesis 'Impulse-based Dynamic Simulation of Rigid Body
+// Systems'", §5, against hand-worked cases, physical invariants and an
+// independent numerical oracle (impact_oracle.cpp, which marches the impulse
+// equation of §3.3–3.7).
 #include <gtest/gtest.h>
 
 #include <algorithm>
@@ -33,7 +35,7 @@ Vec2d sub(Vec2d a, Vec2d b) { return {a.x - b.x, a.y - b.y}; }
 // Velocity of the contact point of a body: v + ω × r.
 Vec2d pointVelocity(Vec2d v, double w, Vec2d r) { return {v.x - w * r.y, v.y + w * r.x}; }
 
-// Separation velocity u = u_A − u_B (seed §3.2) before or after the impact.
+// Separation velocity u = u_A − u_B (Baber (2011) §3.2) before or after the impact.
 Vec2d separation(const ImpactInput& in) {
     return sub(pointVelocity(in.a.v, in.a.w, in.a.r), pointVelocity(in.b.v, in.b.w, in.b.r));
 }

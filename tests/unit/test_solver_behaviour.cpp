@@ -251,14 +251,15 @@ TEST(SolverBehaviour, EveryPositionCorrectionModeHoldsABoxOnTheGround) {
 }
 
 TEST(SolverBehaviour, SplitPushAddsNoKineticEnergyToAnOverlappingStack) {
-    // Seed 001 §10.2: boxes created overlapping. With the single-frame push
+    // Tamis and Maggiore (2015), "Constraint based physics solver", §10.2:
+    // boxes created overlapping. With the single-frame push
     // factor they separate without keeping the push velocity; with Baumgarte
     // they fly apart. Compare the largest speed reached.
     auto peakSpeed = [](PositionCorrection mode) {
         WorldSettings s;
         s.positionCorrection = mode;
         s.pushFactor = 0.2f;
-        s.maxPushSpeed = 1000.0f;  // uncapped, as in the seed
+        s.maxPushSpeed = 1000.0f;  // uncapped, as in Tamis and Maggiore (2015)
         s.impactModel = ImpactModel::velocity_bias;
         World world(s);
         test::makeGround(world);

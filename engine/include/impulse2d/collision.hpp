@@ -35,6 +35,9 @@ constexpr std::uint16_t makeFeatureId(int a, int b) {
     return static_cast<std::uint16_t>(((a & 0xFF) << 8) | (b & 0xFF));
 }
 
+// One function per pair of shape types (the first shape is A). Each returns
+// pointCount 0 when the shapes are further apart than speculativeDistance (m).
+// None of them validates its input or throws.
 Manifold collideCircles(const Circle& a, const Transform& xfA, const Circle& b, const Transform& xfB, float speculativeDistance);
 Manifold collideCapsuleAndCircle(const Capsule& a, const Transform& xfA, const Circle& b, const Transform& xfB, float speculativeDistance);
 Manifold collideCapsules(const Capsule& a, const Transform& xfA, const Capsule& b, const Transform& xfB, float speculativeDistance);
@@ -45,8 +48,10 @@ Manifold collideSegmentAndCircle(const Segment& a, const Transform& xfA, const C
 Manifold collideSegmentAndCapsule(const Segment& a, const Transform& xfA, const Capsule& b, const Transform& xfB, float speculativeDistance);
 Manifold collideSegmentAndPolygon(const Segment& a, const Transform& xfA, const Polygon& b, const Transform& xfB, float speculativeDistance);
 
-/// Closest points between two convex shapes given as point clouds with radii
-/// (GJK). Used by the collider functions and by queries.
+/// Closest points between the convex hulls of two point sets (GJK), each
+/// placed by its transform; the shapes' radii are not included: subtract
+/// them from `distance`. Used by continuous collision. Throws i2d::Error
+/// when a point set is null or empty.
 struct DistanceResult {
     Vec2 pointA{};   ///< closest point on A's core (before radius), world
     Vec2 pointB{};   ///< closest point on B's core, world

@@ -61,15 +61,24 @@ struct Hull {
 /// non-finite, or when more than kMaxPolygonVertices points are given.
 Hull computeHull(std::span<const Vec2> points);
 
-/// Polygon from a hull (count must be ≥ 3) with a rounding radius ≥ 0.
-/// Returns std::nullopt for a degenerate hull or an invalid radius.
+/// Polygon from a hull (count must be ≥ 3) with a rounding radius ≥ 0 (m):
+/// computes the outward edge normals and the centroid. Returns std::nullopt
+/// for a degenerate hull (too few or too many points, non-finite, repeated,
+/// clockwise or non-convex points, no area) or a negative or non-finite
+/// radius. Never throws.
 std::optional<Polygon> makePolygon(const Hull& hull, float radius = 0.0f);
 
-/// Axis-aligned box with half-extents hx, hy centred on the body origin.
+/// Axis-aligned box with half-extents hx, hy (m) centred on the body origin.
+/// Throws i2d::Error unless hx and hy are finite and > 0.
 Polygon makeBox(float hx, float hy);
-/// Box with half-extents hx, hy centred at `center`, rotated by `angle` (radians).
+/// Box with half-extents hx, hy (m) centred at `center` (m), rotated by
+/// `angle` (radians). Throws i2d::Error unless hx, hy are finite and > 0 and
+/// center and angle are finite.
 Polygon makeOffsetBox(float hx, float hy, Vec2 center, float angle);
-/// Box with rounded corners: the square part has half-extents hx, hy.
+/// Box with rounded corners: the square part has half-extents hx, hy (m), the
+/// corners the rounding radius (m), so the whole box measures 2(hx + radius)
+/// by 2(hy + radius). Throws i2d::Error as makeBox, or when radius is
+/// negative or non-finite.
 Polygon makeRoundedBox(float hx, float hy, float radius);
 
 /// Mass, centre of mass (body frame) and rotational inertia about the centre of mass.
@@ -79,10 +88,14 @@ struct MassData {
     float rotationalInertia = 0.0f;
 };
 
+/// Mass properties of a shape of uniform density (kg/m², in the shape's own
+/// frame). Throws i2d::Error when density is negative or non-finite, and for
+/// a polygon with fewer than 3 or more than 8 vertices or no area.
 MassData computeMass(const Circle& shape, float density);
 MassData computeMass(const Capsule& shape, float density);
 MassData computeMass(const Polygon& shape, float density);
 
+/// Tight world bounding box of a shape placed by the transform xf (m).
 AABB computeAABB(const Circle& shape, const Transform& xf);
 AABB computeAABB(const Capsule& shape, const Transform& xf);
 AABB computeAABB(const Polygon& shape, const Transform& xf);
@@ -104,7 +117,9 @@ struct RayHit {
 };
 
 /// Ray casts in the shape's local frame. A ray starting inside a solid shape
-/// does not hit it (it reports no entry point).
+/// does not hit it (it reports no entry point). A ray with a non-finite or
+/// zero translation, a non-finite origin, or a negative or non-finite
+/// maxFraction hits nothing. Never throws.
 std::optional<RayHit> rayCast(const RayCastInput& input, const Circle& shape);
 std::optional<RayHit> rayCast(const RayCastInput& input, const Capsule& shape);
 std::optional<RayHit> rayCast(const RayCastInput& input, const Polygon& shape);

@@ -1,8 +1,10 @@
-// Impulse2D — the closed-form 2D frictional impact law (seed 000, §5):
-// Baber's correction of Mirtich's impulse-space integration, with Stronge's
-// energetic restitution and stable/unstable sticking, solved in closed form.
+// Impulse2D — the closed-form 2D frictional impact law of Baber (2011), "A
+// Correction To Brian Mirtich's Thesis 'Impulse-based Dynamic Simulation of
+// Rigid Body Systems'", §5: Baber's correction of the impulse-space
+// integration in Mirtich's thesis (1996), with Stronge's energetic
+// restitution and stable/unstable sticking, solved in closed form.
 //
-// Conventions (as in the seed): the unit normal f points from B to A; body A
+// Conventions (as in Baber (2011)): the unit normal f points from B to A; body A
 // receives the impulse +p and body B receives −p; angular velocities are
 // counter-clockwise positive; r is the contact point minus the body's
 // centre of mass. An immovable body has inverse mass and inverse inertia 0.
@@ -34,7 +36,7 @@ struct ImpactInput {
     ImpactBody b{};
 };
 
-/// Which branch of §5 decided the result.
+/// Which branch of Baber (2011) §5 decided the result.
 enum class ImpactCase : std::uint8_t {
     converging_compression,    ///< sliding ray reaches the sticking origin during compression
     converging_decompression,  ///< sliding ray reaches the origin during decompression
@@ -59,7 +61,7 @@ struct ImpactResult {
 /// length differs from 1 by more than 1e-6, e outside [0, 1], μ < 0, a
 /// singular collision matrix K (only possible when both inverse masses are 0:
 /// bodies that can only spin and cannot move the contact point along every
-/// direction; seed 000 §3.2 needs K positive definite), and finite inputs so
+/// direction; Baber (2011) §3.2 needs K positive definite), and finite inputs so
 /// large that the result overflows double precision. An immovable body's
 /// velocity is that of a kinematic pusher: the law conserves or loses energy
 /// in the frame of an immovable body at rest.

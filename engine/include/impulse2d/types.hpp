@@ -2,7 +2,12 @@
 // the world's settings, and the events and query results a world reports.
 //
 // Definitions are plain aggregates with defaults: fill in what differs, e.g.
-//   i2d::BodyDef def{.type = i2d::BodyType::dynamic, .position = {0, 4}};
+//   i2d::BodyDef def{.type = i2d::BodyType::dynamic_body, .position = {0, 4}};
+//
+// Sources cited below: Tamis and Maggiore (2015), "Constraint based physics
+// solver"; Baber (2011), "A Correction To Brian Mirtich's Thesis
+// 'Impulse-based Dynamic Simulation of Rigid Body Systems'"; Catto, Box2D v3
+// and the "Solver2D" blog post (2024). Full references: docs/references.md.
 #pragma once
 
 #include <cstdint>
@@ -15,30 +20,31 @@ namespace i2d {
 
 /// How position error (overlap, joint drift) is corrected.
 enum class PositionCorrection : std::uint8_t {
-    /// Seed 001 §5.2–5.3: the push factor β adds a velocity β·d/Δt (d the
+    /// Tamis and Maggiore (2015) §5.2–5.3: the push factor β adds a velocity β·d/Δt (d the
     /// penetration beyond the slop) to the velocity constraint. Simple, but
     /// the push velocity stays in the body after the overlap is gone.
     baumgarte,
-    /// Seed 001 §8.1, the single-frame push factor: the push is solved on a
+    /// Tamis and Maggiore (2015) §8.1, the single-frame push factor: the push is solved on a
     /// separate pseudo-velocity that moves positions for one step and is then
     /// dropped, so correcting overlap adds no kinetic energy.
     split,
     /// Substepping with soft constraints and a relax pass (the "soft step"
-    /// of Box2D v3): the step is divided into `substeps`, each solving
+    /// of Box2D v3, Catto's "Solver2D"): the step is divided into `substeps`, each solving
     /// spring-damped contacts and joints, then relaxing without the push.
     soft_step,
 };
 
 /// How a contact that begins with an approach speed is resolved.
 enum class ImpactModel : std::uint8_t {
-    /// Seed 000 §5: closed-form 2D frictional impact with Stronge's energetic
+    /// Baber (2011) §5: closed-form 2D frictional impact with Stronge's energetic
     /// restitution, applied before the iterative solver. Never creates energy.
     closed_form,
-    /// Restitution as a velocity bias in the contact solver (seed 001 §8.2), as Box2D does.
+    /// Restitution as a velocity bias in the contact solver (Tamis and Maggiore (2015) §8.2), as Box2D does.
     velocity_bias,
 };
 
-/// Settings of a world. All can be changed between steps with World::settings().
+/// Settings of a world. All can be changed between steps with World::setSettings(),
+/// which checks them (read the current ones with World::settings()).
 struct WorldSettings {
     Vec2 gravity{0.0f, -10.0f};  ///< m/s²
 
@@ -55,14 +61,17 @@ struct WorldSettings {
     /// Substeps per step (soft_step only).
     int substeps = 4;
 
-    /// Push factor β ∈ [0, 1] of seed 001 eq. 5.2.3 (baumgarte and split). Dimensionless.
+    /// Push factor β ∈ [0, 1] of Tamis and Maggiore (2015) eq. 5.2.3 (baumgarte and split).
+    /// Dimensionless.
     float pushFactor = 0.2f;
     /// Penetration allowed without correction (m). Keeps resting contacts
-    /// touching so the narrowphase keeps reporting them (seed 001 §8.1, last note).
+    /// touching so the narrowphase keeps reporting them (Tamis and Maggiore (2015) §8.1, last note).
     float penetrationSlop = 0.005f;
     /// Largest speed used to push overlapping bodies apart (m/s).
     float maxPushSpeed = 3.0f;
-    /// Contact stiffness (Hz) and damping ratio for soft_step.
+    /// Contact stiffness (Hz) and damping ratio for soft_step. The stiffness is
+    /// capped at a quarter of the substep rate, and doubled for contacts with
+    /// a body that cannot move.
     float contactHertz = 30.0f;
     float contactDampingRatio = 10.0f;
     /// Joint stiffness (Hz) and damping ratio for the position error of rigid joints in soft_step
@@ -70,7 +79,9 @@ struct WorldSettings {
     float jointHertz = 60.0f;
     float jointDampingRatio = 2.0f;
 
-    /// Approach speed (m/s) below which a contact gets no restitution.
+    /// Approach speed (m/s) below which a contact gets no restitution
+    /// (velocity_bias; with closed_form, impactThreshold decides which
+    /// contacts are impacts and so bounce).
     float restitutionThreshold = 1.0f;
     /// Approach speed (m/s) above which a new contact is resolved as an impact
     /// by the closed-form law (when impactModel == closed_form).
@@ -85,8 +96,11 @@ struct WorldSettings {
     float maxLinearSpeed = 400.0f;
 
     bool enableWarmStarting = true;
-    /// Sweep bodies that move more than half their thickness in a step against
-    /// static shapes, so they cannot pass through thin walls (continuous.cpp).
+    /// Continuous collision against static shapes: a dynamic body whose points
+    /// may move further than speculativeDistance in a step is swept against
+    /// the static shapes near its path and, if it would touch one, put back to
+    /// its first time of impact (keeping its velocity), so it cannot pass
+    /// through thin walls. Dynamic-versus-dynamic pairs are not swept.
     bool enableContinuous = true;
     bool enableSleep = true;
     /// Seconds an island must rest before it sleeps.
@@ -96,12 +110,14 @@ struct WorldSettings {
     float angularSleepTolerance = 2.0f / 180.0f * 3.14159265f;
 };
 
+/// How a body moves.
 enum class BodyType : std::uint8_t {
     static_body,     ///< never moves; infinite mass
     kinematic_body,  ///< moves by its velocity only; infinite mass
     dynamic_body,    ///< moved by forces, contacts and joints
 };
 
+/// Everything World::createBody needs; the defaults make a static body at the origin.
 struct BodyDef {
     BodyType type = BodyType::static_body;
     Vec2 position{};  ///< body origin, world (m)
@@ -110,11 +126,11 @@ struct BodyDef {
     float angularVelocity = 0.0f;  ///< rad/s
     float linearDamping = 0.0f;  ///< 1/s, ≥ 0
     float angularDamping = 0.0f;  ///< 1/s, ≥ 0
-    float gravityScale = 1.0f;
-    bool fixedRotation = false;
-    bool isAwake = true;
-    bool enableSleep = true;
-    std::uintptr_t userData = 0;
+    float gravityScale = 1.0f;  ///< multiplies the world's gravity for this body
+    bool fixedRotation = false;  ///< no rotation (infinite rotational inertia)
+    bool isAwake = true;  ///< false: created asleep (when sleep is enabled)
+    bool enableSleep = true;  ///< false: this body never sleeps
+    std::uintptr_t userData = 0;  ///< any value of the game's; never read by the engine
 };
 
 /// Which shapes may collide. Two shapes collide when each one's category is
@@ -126,25 +142,27 @@ struct Filter {
     std::int32_t groupIndex = 0;
 };
 
+/// The rule above, as the broadphase applies it.
 constexpr bool shouldCollide(const Filter& a, const Filter& b) {
     if (a.groupIndex == b.groupIndex && a.groupIndex != 0) return a.groupIndex > 0;
     return (a.maskBits & b.categoryBits) != 0 && (a.categoryBits & b.maskBits) != 0;
 }
 
+/// Material and flags of a shape, given to the World::create*Shape functions.
 struct ShapeDef {
     float density = 1.0f;      ///< kg/m², ≥ 0 (0 adds no mass)
     float friction = 0.6f;     ///< Coulomb coefficient μ ≥ 0
     float restitution = 0.0f;  ///< coefficient of restitution e ∈ [0, 1]
     Filter filter{};
     bool isSensor = false;     ///< detects overlap, makes no contact
-    bool enableContactEvents = true;
-    bool enableSensorEvents = true;
+    bool enableContactEvents = true;  ///< report contact begin/end events for this shape
+    bool enableSensorEvents = true;   ///< a sensor: report sensor events
     std::uintptr_t userData = 0;
 };
 
 enum class ShapeType : std::uint8_t { circle, capsule, segment, polygon };
 
-/// Distance constraint of seed 001 §5.2 between two anchor points. Rigid by
+/// Distance constraint of Tamis and Maggiore (2015) §5.2 between two anchor points. Rigid by
 /// default; with enableSpring it becomes a spring of the given frequency and
 /// damping ratio; with enableLimit its length is kept within
 /// [minLength, maxLength] (a rope: enableSpring with hertz 0 and a limit).
@@ -164,22 +182,26 @@ struct DistanceJointDef {
     std::uintptr_t userData = 0;
 };
 
+/// Two shapes began to touch in the last step (manifold at that moment).
 struct ContactBeginEvent {
     ShapeId shapeA{};
     ShapeId shapeB{};
     Manifold manifold{};
 };
 
+/// Two shapes stopped touching (or their contact was destroyed).
 struct ContactEndEvent {
     ShapeId shapeA{};
     ShapeId shapeB{};
 };
 
+/// A shape (`visitor`) began to overlap a sensor shape.
 struct SensorBeginEvent {
     ShapeId sensor{};
     ShapeId visitor{};
 };
 
+/// A shape stopped overlapping a sensor shape.
 struct SensorEndEvent {
     ShapeId sensor{};
     ShapeId visitor{};
@@ -201,6 +223,8 @@ struct QueryFilter {
     std::uint32_t maskBits = 0xFFFFFFFF;
 };
 
+/// A ray hit: the shape, the entry point and the surface's outward normal
+/// there (world), and the fraction t of the translation at which it is reached.
 struct RayResult {
     ShapeId shape{};
     Vec2 point{};

@@ -8,7 +8,16 @@
 //   world.createPolygonShape(box, {.density = 1}, i2d::makeBox(0.5f, 0.5f));
 //   for (int i = 0; i < 60; ++i) world.step(1.0f / 60.0f);
 //
+// Units: SI throughout — metres (m), seconds (s), kilograms (kg), radians
+// (rad, counter-clockwise positive), newtons (N), newton-seconds (N·s).
+// Positions and vectors are in world coordinates unless a name says "local".
+//
 // Errors: see error.hpp — a refused call throws i2d::Error and changes nothing.
+// Every call that takes a handle throws i2d::Error for a null, stale
+// (destroyed) or forged handle; this is not repeated below. "Bounded" below
+// means finite with every component in [−1e7, 1e7]. Calls marked "locked"
+// below (those that create, destroy, move or wake things) also throw when
+// made from inside World::draw (a DebugDraw that calls back into its world).
 // Threading: a World is not thread-safe; different worlds may be used from
 // different threads. Determinism: the same build, the same calls in the same
 // order give bit-identical results.
@@ -32,8 +41,11 @@ struct WorldState;
 
 class World {
 public:
+    /// An empty world with the given settings. Throws i2d::Error when a
+    /// setting is out of range (see setSettings).
     explicit World(const WorldSettings& settings = {});
     ~World();
+    /// A moved-from World may only be assigned to or destroyed.
     World(World&&) noexcept;
     World& operator=(World&&) noexcept;
     World(const World&) = delete;
@@ -45,151 +57,322 @@ public:
     /// value, usually 1/60). Runs: broadphase pairs → narrowphase → impacts →
     /// velocity solve → integrate → position correction → continuous
     /// collision of fast bodies against static shapes → sleep. Events of this step are
-    /// readable afterwards until the next step.
+    /// readable afterwards until the next step; forces applied before it are
+    /// used and then cleared. Throws i2d::Error for dt NaN, ±∞, ≤ 0 (also −0),
+    /// < 1e-6 s or > 1 s, and when called from inside draw (locked).
     void step(float dt);
 
-    /// Current settings; changes apply from the next step. setSettings checks them.
+    /// Current settings; changes made with setSettings apply from the next step.
     const WorldSettings& settings() const;
+    /// Replace all settings at once (locked). Turning enableSleep off wakes
+    /// every sleeping body. Throws i2d::Error, changing nothing, when: gravity
+    /// is not bounded; velocityIterations or substeps is outside [1, 1000],
+    /// positionIterations outside [0, 1000]; pushFactor is outside [0, 1];
+    /// penetrationSlop, maxPushSpeed, restitutionThreshold, impactThreshold,
+    /// speculativeDistance, aabbMargin, timeToSleep or a sleep tolerance is
+    /// negative or non-finite; penetrationSlop > 1 m, speculativeDistance or
+    /// aabbMargin > 10 m; a hertz or damping ratio is outside [0, 1e6];
+    /// maxLinearSpeed is not in (0, 1e7]; positionCorrection or impactModel
+    /// is not one of the enum's values.
     void setSettings(const WorldSettings& settings);
+    /// Set the gravity acceleration (m/s², locked), applied from the next step.
+    /// Does not wake sleeping bodies. Throws i2d::Error unless bounded.
     void setGravity(Vec2 gravity);
+    /// Gravity acceleration (m/s²).
     Vec2 gravity() const;
 
     // ---- Bodies ---------------------------------------------------------
 
+    /// Create a body without shapes (locked); it gets its mass from the shapes
+    /// added later. A static body ignores the def's velocities, a body with
+    /// fixedRotation its angular velocity. With isAwake false (and sleep
+    /// enabled in the world and the def) the body starts asleep. Throws
+    /// i2d::Error when position, angle (rad), linearVelocity (m/s),
+    /// angularVelocity (rad/s) or gravityScale is not bounded, a damping (1/s)
+    /// is negative or non-finite, or the type is not a BodyType value.
     BodyId createBody(const BodyDef& def);
-    /// Destroys the body with its shapes and the joints attached to it.
+    /// Destroys the body with its shapes, their contacts and the joints
+    /// attached to it, waking the bodies at the other end of those joints
+    /// (locked). Touching contacts add their end events to the event buffers.
+    /// The handle becomes stale.
     void destroyBody(BodyId id);
+    /// True when the handle names a live body; never throws.
     bool isValid(BodyId id) const;
 
+    /// Static, kinematic or dynamic.
     BodyType bodyType(BodyId id) const;
+    /// Change the body's type (locked): its contacts are dropped and found
+    /// again by the next step, its mass is recomputed from its shapes (an
+    /// override by setMassData is lost) and it is woken; a body made static
+    /// loses its velocity. Throws i2d::Error for a type that is not a
+    /// BodyType value.
     void setBodyType(BodyId id, BodyType type);
-    /// Body origin (world) and rotation.
+    /// Body origin (world, m).
     Vec2 position(BodyId id) const;
+    /// Body angle (rad, counter-clockwise), in [−π, π].
     float angle(BodyId id) const;
+    /// Body rotation (cosine and sine of the angle).
     Rot rotation(BodyId id) const;
+    /// Body origin and rotation together.
     Transform transform(BodyId id) const;
-    /// Teleport the body (wakes it).
+    /// Teleport the body's origin to `position` (m) at `angle` (rad), keeping
+    /// its velocity (locked). Wakes it and the bodies it touches; moving a
+    /// static body also wakes the bodies near its shapes. Throws i2d::Error
+    /// when position or angle is not bounded.
     void setTransform(BodyId id, Vec2 position, float angle);
-    /// Centre of mass in world and body frames.
+    /// Centre of mass, world frame (m).
     Vec2 worldCenterOfMass(BodyId id) const;
+    /// Centre of mass in the body frame, relative to the body origin (m).
     Vec2 localCenterOfMass(BodyId id) const;
 
+    /// Velocity of the centre of mass (m/s).
     Vec2 linearVelocity(BodyId id) const;
+    /// Angular velocity (rad/s, counter-clockwise).
     float angularVelocity(BodyId id) const;
+    /// Set the velocity of the centre of mass (m/s, locked). Ignored for a
+    /// static body; a non-zero velocity wakes the body. Throws i2d::Error
+    /// unless bounded.
     void setLinearVelocity(BodyId id, Vec2 v);
+    /// Set the angular velocity (rad/s, locked). Ignored for a static body and
+    /// a body with fixed rotation; a non-zero value wakes the body. Throws
+    /// i2d::Error unless bounded.
     void setAngularVelocity(BodyId id, float w);
-    /// Velocity of a world point attached to the body.
+    /// Velocity (m/s) of the world point `worldPoint` (m) if it moved with the
+    /// body: v + ω × (worldPoint − centre of mass).
     Vec2 velocityAtPoint(BodyId id, Vec2 worldPoint) const;
 
-    /// Forces and torques act during the next step, then are cleared.
+    /// Add a force (N) at a world point (m) for the next step, then it is
+    /// cleared (locked). Only dynamic bodies are affected; with wake false a
+    /// sleeping body ignores it. Throws i2d::Error unless force and point are
+    /// bounded.
     void applyForce(BodyId id, Vec2 force, Vec2 worldPoint, bool wake = true);
+    /// applyForce at the centre of mass: no torque.
     void applyForceToCenter(BodyId id, Vec2 force, bool wake = true);
+    /// Add a torque (N·m) for the next step, as applyForce. Throws i2d::Error
+    /// unless bounded.
     void applyTorque(BodyId id, float torque, bool wake = true);
-    /// Impulses change the velocity at once.
+    /// Add an impulse (N·s) at a world point (m): the velocities change at once
+    /// (locked). Only dynamic bodies are affected; with wake false a sleeping
+    /// body ignores it. Throws i2d::Error unless impulse and point are bounded.
     void applyLinearImpulse(BodyId id, Vec2 impulse, Vec2 worldPoint, bool wake = true);
+    /// applyLinearImpulse at the centre of mass: no change of angular velocity.
     void applyLinearImpulseToCenter(BodyId id, Vec2 impulse, bool wake = true);
+    /// Add an angular impulse (N·m·s), as applyLinearImpulse. Throws
+    /// i2d::Error unless bounded.
     void applyAngularImpulse(BodyId id, float impulse, bool wake = true);
 
+    /// Mass (kg): 0 for static and kinematic bodies; 1 for a dynamic body
+    /// whose shapes have no mass.
     float mass(BodyId id) const;
     /// Rotational inertia about the centre of mass (kg·m²).
     float rotationalInertia(BodyId id) const;
+    /// Mass (kg), centre of mass (body frame, m) and rotational inertia about
+    /// it (kg·m²).
     MassData massData(BodyId id) const;
-    /// Override the mass computed from the shapes (mass > 0, inertia ≥ 0 for dynamic bodies).
+    /// Override the mass computed from the shapes (locked). Creating or
+    /// destroying a shape, setDensity, setFixedRotation and setBodyType later
+    /// recompute it from the shapes. Throws i2d::Error for a body that is not
+    /// dynamic; mass ≤ 0, non-finite, or too small to invert; a centre not
+    /// bounded; inertia < 0, non-finite, or positive but too small to invert.
+    /// Inertia 0 means no rotation.
     void setMassData(BodyId id, const MassData& massData);
-    /// Recompute mass properties from the shapes' densities.
+    /// Recompute mass properties from the shapes' densities (locked).
     void resetMassData(BodyId id);
 
+    /// Linear damping c (1/s): each (sub)step of length h scales the velocity
+    /// by 1/(1 + h·c).
     float linearDamping(BodyId id) const;
+    /// Throws i2d::Error when damping (1/s) is negative or non-finite.
     void setLinearDamping(BodyId id, float damping);
+    /// Angular damping (1/s).
     float angularDamping(BodyId id) const;
+    /// Throws i2d::Error when damping (1/s) is negative or non-finite.
     void setAngularDamping(BodyId id, float damping);
+    /// Multiplier of the world's gravity for this body (dimensionless).
     float gravityScale(BodyId id) const;
+    /// Any bounded value (negative makes the body fall up). Throws
+    /// i2d::Error when scale is not bounded.
     void setGravityScale(BodyId id, float scale);
+    /// True when the body cannot rotate (infinite rotational inertia).
     bool isFixedRotation(BodyId id) const;
+    /// Stop (true) or allow (false) the body's rotation (locked): sets the
+    /// angular velocity to 0 when true and recomputes the mass from the shapes
+    /// (an override by setMassData is lost).
     void setFixedRotation(BodyId id, bool flag);
+    /// The value given in BodyDef::userData or by setUserData; never read by
+    /// the engine.
     std::uintptr_t userData(BodyId id) const;
+    /// Store any value with the body (a pointer or an index of the game's).
     void setUserData(BodyId id, std::uintptr_t data);
 
+    /// False for static and sleeping bodies.
     bool isAwake(BodyId id) const;
+    /// Wake the body (and the island it fell asleep with), or put this body to
+    /// sleep at once (locked); ignored for static bodies.
     void setAwake(BodyId id, bool awake);
+    /// Allow (true) or forbid (false) this body to sleep; forbidding wakes it.
     void enableSleep(BodyId id, bool flag);
 
+    /// The body's shapes, in the order they were added.
     std::vector<ShapeId> bodyShapes(BodyId id) const;
+    /// The joints attached to the body, in the order they were created.
     std::vector<JointId> bodyJoints(BodyId id) const;
     /// Every live body, in creation-slot order.
     std::vector<BodyId> bodies() const;
 
     // ---- Shapes ---------------------------------------------------------
 
+    // Every create*Shape attaches a shape given in the body frame (m) to
+    // `body` and recomputes the body's mass from its shapes (locked). A
+    // sleeping body stays asleep. Each throws i2d::Error when the ShapeDef
+    // is out of range — density outside [0, 1e9] kg/m², friction outside
+    // [0, 1e3], restitution outside [0, 1], any of them non-finite — or when
+    // the geometry is refused as listed at each function.
+
+    /// Throws i2d::Error when the centre is not bounded or the radius is not
+    /// in (0, 1e5] m.
     ShapeId createCircleShape(BodyId body, const ShapeDef& def, const Circle& circle);
+    /// Throws i2d::Error when a centre is not bounded, the radius is not in
+    /// (0, 1e5] m, or the centres are no more than kLinearSlop (5 mm) apart
+    /// (use a circle).
     ShapeId createCapsuleShape(BodyId body, const ShapeDef& def, const Capsule& capsule);
+    /// Build the polygon with makePolygon or makeBox. Throws i2d::Error for
+    /// fewer than 3 or more than 8 vertices; a radius outside [0, 1e5] m;
+    /// vertices or centroid not bounded; normals that are not unit length or
+    /// not the outward normals of their edges; an edge shorter than 0.5 mm; a
+    /// polygon that is not convex and counter-clockwise, thinner than 0.5 mm,
+    /// or whose centroid lies outside it.
     ShapeId createPolygonShape(BodyId body, const ShapeDef& def, const Polygon& polygon);
-    /// Segments have no area: they add no mass and suit static bodies.
+    /// Segments have no area: they add no mass and suit static bodies. Throws
+    /// i2d::Error when a point is not bounded or the points are no more than
+    /// kLinearSlop (5 mm) apart.
     ShapeId createSegmentShape(BodyId body, const ShapeDef& def, const Segment& segment);
+    /// Destroy the shape and its contacts and wake its body (locked); with
+    /// updateBodyMass false the body keeps its mass until resetMassData.
     void destroyShape(ShapeId id, bool updateBodyMass = true);
+    /// True when the handle names a live shape; never throws.
     bool isValid(ShapeId id) const;
 
+    /// Circle, capsule, segment or polygon.
     ShapeType shapeType(ShapeId id) const;
+    /// The body the shape is attached to.
     BodyId shapeBody(ShapeId id) const;
+    // The shape's geometry in its body frame. Each throws i2d::Error when the
+    // shape is of another type (see shapeType).
     Circle shapeCircle(ShapeId id) const;
     Capsule shapeCapsule(ShapeId id) const;
     Polygon shapePolygon(ShapeId id) const;
     Segment shapeSegment(ShapeId id) const;
+    /// Density (kg/m²).
     float density(ShapeId id) const;
+    /// Set the density (kg/m², locked); with updateBodyMass the body's mass is
+    /// recomputed at once, otherwise at the next resetMassData or shape change.
+    /// Throws i2d::Error when density is outside [0, 1e9] or non-finite.
     void setDensity(ShapeId id, float density, bool updateBodyMass = true);
+    /// Coulomb friction coefficient μ (dimensionless).
     float friction(ShapeId id) const;
+    /// Contacts that already exist keep the friction mixed when they began
+    /// (μ = √(μa·μb)); contacts that begin later use the new value. Throws i2d::Error when friction is outside [0, 1e3] or non-finite.
     void setFriction(ShapeId id, float friction);
+    /// Coefficient of restitution e (dimensionless).
     float restitution(ShapeId id) const;
+    /// Contacts that already exist keep the restitution mixed when they began
+    /// (e = max(ea, eb)); contacts that begin later use the new value. Throws i2d::Error when restitution is outside [0, 1] or non-finite.
     void setRestitution(ShapeId id, float restitution);
+    /// The shape's collision filter (categories, mask, group).
     Filter filter(ShapeId id) const;
+    /// Change the collision filter (locked): the shape's contacts are dropped
+    /// and the next step looks for its pairs again.
     void setFilter(ShapeId id, const Filter& filter);
+    /// True for a sensor: it reports overlaps and makes no contact (fixed at creation).
     bool isSensor(ShapeId id) const;
+    /// The value given in ShapeDef::userData; never read by the engine.
     std::uintptr_t userData(ShapeId id) const;
+    /// The shape's tight bounding box at its body's current pose (world, m).
     AABB shapeAABB(ShapeId id) const;
 
     // ---- Joints ---------------------------------------------------------
 
+    /// Join two bodies (locked) and wake both; unless collideConnected, their
+    /// existing contacts are dropped. Throws i2d::Error when a body handle is
+    /// null, stale or forged, bodyA == bodyB, an anchor (m) is not bounded,
+    /// length is not in (0, 1e7] m, hertz or dampingRatio is outside
+    /// [0, 1e6] or non-finite, minLength is negative or non-finite, maxLength
+    /// is negative or NaN, or the limit is enabled with minLength > maxLength.
     JointId createDistanceJoint(const DistanceJointDef& def);
+    /// Destroy the joint and wake both its bodies (locked); they may collide
+    /// again from the next step. A joint is also destroyed with either body.
     void destroyJoint(JointId id);
+    /// True when the handle names a live joint; never throws.
     bool isValid(JointId id) const;
+    /// The body given as bodyA when the joint was created.
     BodyId jointBodyA(JointId id) const;
+    /// The body given as bodyB when the joint was created.
     BodyId jointBodyB(JointId id) const;
+    /// The definition the joint was created with, with its current length.
     DistanceJointDef distanceJointDef(JointId id) const;
     /// Current distance between the anchors (m).
     float distanceJointCurrentLength(JointId id) const;
+    /// Set the rest length (m, locked), reset the joint's accumulated impulse
+    /// and wake both bodies. Throws i2d::Error unless length is in (0, 1e7].
     void setDistanceJointLength(JointId id, float length);
-    /// Magnitude of the constraint force over the last step (N).
+    /// Magnitude of the constraint force over the last step in which the
+    /// joint was awake (N): |accumulated impulse| / dt.
     float jointForce(JointId id) const;
 
     // ---- Events of the last step ----------------------------------------
+    // Each buffer holds the events of the last step and is cleared when the
+    // next step begins; a span is valid until then. A contact reports events
+    // when either shape enables contact events; a sensor pair when the
+    // sensor enables sensor events. Destroying a shape or body, creating a
+    // joint (unless collideConnected), changing a filter or a body type add
+    // end events for the touching contacts they drop.
 
+    /// Pairs of shapes that began to touch in the last step, with their manifold.
     std::span<const ContactBeginEvent> contactBeginEvents() const;
+    /// Pairs of shapes that stopped touching in the last step.
     std::span<const ContactEndEvent> contactEndEvents() const;
+    /// Shapes that began to overlap a sensor in the last step.
     std::span<const SensorBeginEvent> sensorBeginEvents() const;
+    /// Shapes that stopped overlapping a sensor in the last step.
     std::span<const SensorEndEvent> sensorEndEvents() const;
 
     // ---- Queries --------------------------------------------------------
+    // Queries read the world and may be called from inside draw. Each throws
+    // i2d::Error when a point, translation or box corner (m) is not bounded.
 
-    /// Closest shape hit by the ray origin → origin + translation.
+    /// Closest shape hit by the ray origin → origin + translation (world, m);
+    /// sensors are skipped, and so is a shape the ray starts inside. On equal
+    /// fractions the shape created in the lower slot wins.
     std::optional<RayResult> rayCastClosest(Vec2 origin, Vec2 translation, const QueryFilter& filter = {}) const;
-    /// Every shape the ray hits, nearest first.
+    /// Every shape the ray hits (sensors skipped), nearest first.
     std::vector<RayResult> rayCastAll(Vec2 origin, Vec2 translation, const QueryFilter& filter = {}) const;
-    /// Shapes whose bounding boxes overlap the box.
+    /// Shapes whose tight bounding boxes overlap the box (sensors included),
+    /// in slot order.
     std::vector<ShapeId> overlapAABB(const AABB& box, const QueryFilter& filter = {}) const;
-    /// Shapes containing the point.
+    /// Solid shapes containing the point, boundary included (segments never;
+    /// sensors included), in slot order.
     std::vector<ShapeId> queryPoint(Vec2 point, const QueryFilter& filter = {}) const;
 
     // ---- Inspection -----------------------------------------------------
 
+    /// Live bodies of every type.
     int bodyCount() const;
+    /// Awake non-static bodies (the ones the next step moves).
     int awakeBodyCount() const;
+    /// Live shapes, sensors included.
     int shapeCount() const;
+    /// Live joints.
     int jointCount() const;
-    /// Contacts whose shapes touch (manifold with at least one point).
+    /// Non-sensor contacts whose shapes touch (manifold with at least one point).
     int contactCount() const;
+    /// The same contacts with their manifolds and accumulated impulses, in slot order.
     std::vector<ContactData> contacts() const;
+    /// Time spent in each stage of the last step (ms).
     const Profile& profile() const;
-    /// Draw every shape, joint and (by the flags) AABB and contact.
+    /// Draw every shape, joint and (by the drawer's flags) AABB and contact,
+    /// in world coordinates. While it runs, the world is locked: a drawer
+    /// that calls a locked function gets i2d::Error.
     void draw(DebugDraw& drawer) const;
 
 private:

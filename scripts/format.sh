@@ -1,0 +1,41 @@
+#!/usr/bin/env bash
+# Formats the C++ sources with clang-format and the repository's .clang-format.
+# Usage: scripts/format.sh            rewrite every tracked .cpp/.hpp in place
+#        scripts/format.sh --check    change nothing; list the files that would
+#                                     change and exit 1 if there are any
+#        scripts/format.sh [--check] FILE...   only these files
+set -euo pipefail
+cd "$(dirname "$0")/.."
+check=0
+if [ "${1:-}" = "--check" ]; then
+  check=1
+  shift
+fi
+clang_format=${CLANG_FORMAT:-clang-format}
+if ! command -v "$clang_format" >/dev/null; then
+  echo "format.sh: $clang_format not found (Debian: apt-get install clang-format)" >&2
+  exit 2
+fi
+if [ $# -gt 0 ]; then
+  files=("$@")
+else
+  mapfile -t files < <(git ls-files -- '*.cpp' '*.hpp')
+fi
+if [ ${#files[@]} -eq 0 ]; then
+  exit 0
+fi
+if [ $check = 0 ]; then
+  "$clang_format" -i --style=file "${files[@]}"
+  exit 0
+fi
+status=0
+for f in "${files[@]}"; do
+  if ! "$clang_format" --style=file --dry-run --Werror "$f" >/dev/null 2>&1; then
+    echo "$f"
+    status=1
+  fi
+done
+if [ $status = 1 ]; then
+  echo "format.sh: the files above are not formatted (run scripts/format.sh)" >&2
+fi
+exit $status
