@@ -2,7 +2,8 @@
 //
 // Every public entry point checks its arguments before touching the world.
 // A call that cannot be honoured (non-finite or out-of-range value, stale or
-// null handle, degenerate geometry, a change while the world is stepping)
+// null handle, another world's handle, degenerate geometry, a change while
+// the world is stepping, a call on a moved-from World)
 // throws i2d::Error and leaves the world exactly as it was. Exceptions were
 // chosen over return codes because a refused call must not be ignored by
 // accident, and over assertions because bad input comes from players and

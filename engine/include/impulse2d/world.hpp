@@ -14,7 +14,8 @@
 //
 // Errors: see error.hpp — a refused call throws i2d::Error and changes nothing.
 // Every call that takes a handle throws i2d::Error for a null, stale
-// (destroyed) or forged handle; this is not repeated below. "Bounded" below
+// (destroyed) or forged handle, and for a handle made by another World; this
+// is not repeated below. "Bounded" below
 // means finite with every component in [−1e7, 1e7]. Calls marked "locked"
 // below (those that create, destroy, move or wake things) also throw when
 // made from inside World::draw (a DebugDraw that calls back into its world).
@@ -45,7 +46,8 @@ public:
     /// setting is out of range (see setSettings).
     explicit World(const WorldSettings& settings = {});
     ~World();
-    /// A moved-from World may only be assigned to or destroyed.
+    /// A moved-from World may only be assigned to or destroyed; any other
+    /// call on it throws i2d::Error.
     World(World&&) noexcept;
     World& operator=(World&&) noexcept;
     World(const World&) = delete;
