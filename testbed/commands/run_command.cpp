@@ -72,12 +72,7 @@ RunOptions parseRunOptions(const std::vector<std::string>& args) {
     return o;
 }
 
-Box2DSettings RunOptions::box2dSettings() const {
-    Box2DSettings b;
-    if (overrides.velocityIterations) b.velocityIterations = *overrides.velocityIterations;
-    if (overrides.positionIterations) b.positionIterations = *overrides.positionIterations;
-    return b;
-}
+Box2DSettings RunOptions::box2dSettings() const { return overrides.box2dSettings(); }
 
 int runRunCommand(const std::vector<std::string>& args, std::ostream& out, std::ostream& err) {
     if (wantsHelp(args)) {
