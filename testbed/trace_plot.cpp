@@ -233,6 +233,7 @@ std::string plotScript(const PlotRequest& r) {
         s += "unset multiplot\n";
     }
     s += term + std::to_string(r.width * 3 / 2) + "," + std::to_string(r.height * 3 / 2) + "\n";
+    s += "set key font ',8'\n";
     s += out("summary.png") + "set multiplot layout 2,2" +
          (r.title.empty() ? std::string() : " title " + quoted(r.title)) + "\n";
     s += axes(kEnergyTitle, "energy (J)") + energy;
