@@ -91,7 +91,9 @@ std::string plotCommand(const PlotRequest& r, const std::vector<Series>& series)
         }
     }
     // No trace has the column: an empty chart that says so, not a gnuplot error.
-    if (first) return "set yrange [-1:1]\nset label 1 'no data' at graph 0.5, 0.5 center\nplot NaN notitle\nunset label 1\n";
+    if (first)
+        return "set yrange [-1:1]\nset label 1 'no data' at graph 0.5, 0.5 center\nplot NaN notitle\n"
+               "unset label 1\n";
     return yRange(r, series) + cmd + "\n";
 }
 
@@ -191,7 +193,7 @@ std::vector<std::string> defaultLabels(const std::vector<TraceInfo>& traces) {
 }
 
 std::vector<PlotChart> plotCharts(const PlotRequest& r) {
-    std::vector<PlotChart> charts{{"energy.png", "change of total energy since step 1 (solid), kinetic energy (dashed)"},
+    std::vector<PlotChart> charts{{"energy.png", "total energy less its value at step 1 (solid), kinetic (dashed)"},
                                   {"penetration.png", "deepest contact"},
                                   {"speed.png", "largest body speed"},
                                   {"joint_error.png", "joint error"}};

@@ -26,7 +26,8 @@ bool finitePose(const BodySample& s) { return std::isfinite(s.x) && std::isfinit
 
 }  // namespace
 
-void drawSimulation(i2d::DebugDraw& dd, const SceneDesc& desc, const Simulation& sim, std::optional<i2d::Color> colour) {
+void drawSimulation(i2d::DebugDraw& dd, const SceneDesc& desc, const Simulation& sim,
+                    std::optional<i2d::Color> colour) {
     const int n = std::min(sim.bodyCount(), static_cast<int>(desc.bodies.size()));
     for (int i = 0; i < n; ++i) {
         const BodyDesc& body = desc.bodies[static_cast<std::size_t>(i)];
