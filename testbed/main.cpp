@@ -6,6 +6,7 @@
 //   testbed render SCENE ...     render frames to PNG (renderer)
 //   testbed view SCENE ...       interactive window (renderer)
 //   testbed impact               evaluate the closed-form impact law on input lines
+//   testbed plot TRACE.csv ...   traces of `run --trace` as PNG charts (gnuplot)
 #include <exception>
 #include <iostream>
 #include <string>
@@ -13,6 +14,7 @@
 
 #include "commands/impact_command.hpp"
 #include "commands/list_command.hpp"
+#include "commands/plot_command.hpp"
 #include "commands/render_command.hpp"
 #include "commands/run_command.hpp"
 #include "commands/view_command.hpp"
@@ -28,6 +30,7 @@ const char* const kHelp =
     "  render    render a scene to PNG frames\n"
     "  view      open a window and run a scene interactively\n"
     "  impact    resolve impacts read from standard input with the closed-form impact law\n"
+    "  plot      draw traces of `run --trace` (one per engine) as PNG charts with gnuplot\n"
     "  help      this text\n"
     "\n"
     "`testbed COMMAND --help` describes each command.\n";
@@ -51,6 +54,7 @@ int main(int argc, char** argv) {
         if (cmd == "run") return tb::runRunCommand(rest, std::cout, std::cerr);
         if (cmd == "render") return tb::runRenderCommand(rest, std::cout, std::cerr);
         if (cmd == "view") return tb::runViewCommand(rest, std::cout, std::cerr);
+        if (cmd == "plot") return tb::runPlotCommand(rest, std::cout, std::cerr);
         if (cmd == "impact") return tb::runImpactCommand(rest, std::cin, std::cout, std::cerr);
     } catch (const std::exception& e) {
         // Whatever a command did not catch itself (out of memory, a bug).

@@ -9,7 +9,8 @@
 
 namespace tb {
 
-RunReport runScene(const SceneDesc& desc, long steps, EngineKind engine, const Box2DSettings& box2d) {
+RunReport runScene(const SceneDesc& desc, long steps, EngineKind engine, const Box2DSettings& box2d,
+                   StepObserver* observer) {
     std::unique_ptr<Simulation> sim = makeSimulation(desc, engine, box2d);
     RunReport rep;
     rep.scene = desc.name;
@@ -49,6 +50,7 @@ RunReport runScene(const SceneDesc& desc, long steps, EngineKind engine, const B
         auto t1 = std::chrono::steady_clock::now();
         ms.push_back(std::chrono::duration<double, std::milli>(t1 - t0).count());
         ++rep.stepsCompleted;
+        if (observer) observer->afterStep(rep.stepsCompleted, *sim);
 
         rep.maxContacts = std::max(rep.maxContacts, sim->touchingContactCount());
         const float penetration = sim->maxPenetration();

@@ -47,9 +47,19 @@ struct RunReport {
     ErrorValue error;
 };
 
+/// Told about the state after every step of runScene (outside the timing),
+/// including the step that left a non-finite state, after which the run stops.
+class StepObserver {
+public:
+    virtual ~StepObserver() = default;
+    /// `step` counts from 1.
+    virtual void afterStep(long step, const Simulation& sim) = 0;
+};
+
 /// Build and step a scene in the given engine (with the overrides already in
-/// desc.settings; `box2d` only matters for EngineKind::box2d).
+/// desc.settings; `box2d` only matters for EngineKind::box2d). `observer`, if
+/// given, sees the state after every step (testbed run --trace).
 RunReport runScene(const SceneDesc& desc, long steps, EngineKind engine = EngineKind::impulse2d,
-                   const Box2DSettings& box2d = {});
+                   const Box2DSettings& box2d = {}, StepObserver* observer = nullptr);
 
 }  // namespace tb

@@ -23,6 +23,13 @@ void SettingsOverrides::applyTo(i2d::WorldSettings& s) const {
     if (sleep) s.enableSleep = *sleep;
 }
 
+Box2DSettings SettingsOverrides::box2dSettings() const {
+    Box2DSettings b;
+    if (velocityIterations) b.velocityIterations = *velocityIterations;
+    if (positionIterations) b.positionIterations = *positionIterations;
+    return b;
+}
+
 bool parseSettingsOption(ArgReader& r, SettingsOverrides& o) {
     if (r.is("--velocity-iterations")) {
         o.velocityIterations = static_cast<int>(r.integer(1, 1000));

@@ -7,6 +7,7 @@
 #include <optional>
 
 #include "cli/arguments.hpp"
+#include "simulation.hpp"
 
 namespace tb {
 
@@ -20,6 +21,10 @@ struct SettingsOverrides {
     std::optional<bool> sleep;
 
     void applyTo(i2d::WorldSettings& settings) const;
+    /// Box2D's iteration counts: --velocity-iterations / --position-iterations
+    /// when given, else Box2D's usual 8 and 3 (the scene's own iteration
+    /// counts are Impulse2D's, per substep, and do not carry over).
+    Box2DSettings box2dSettings() const;
 };
 
 /// Consume the reader's current option (and its value) if it is one of

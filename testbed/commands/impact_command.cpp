@@ -92,6 +92,14 @@ int runImpactCommand(const std::vector<std::string>& args, std::istream& in, std
         out << kImpactHelp;
         return 0;
     }
+    // ... except the scene options, which would otherwise seem to do something.
+    for (const std::string& a : args)
+        if (a == "--compare" || a == "--overlay" || a == "--engine" || a == "--trace")
+            return reportUsageError(err, "impact",
+                                    UsageError(a + " does not apply: `testbed impact` evaluates the impact law on "
+                                                   "single impacts, it has no scene, engine or steps (see "
+                                                   "`testbed render --compare`, `testbed run --trace`)"),
+                                    "(see `testbed impact --help`)\n");
     return runImpactCommand(in, out, err);
 }
 

@@ -19,6 +19,7 @@ struct RunOptions {
     std::optional<long> steps;
     std::optional<double> seconds;
     bool json = false;
+    std::string tracePath;  ///< --trace FILE.csv; empty: no trace
     EngineKind engine = EngineKind::impulse2d;
     SettingsOverrides overrides;
 

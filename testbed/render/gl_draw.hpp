@@ -44,6 +44,8 @@ public:
     const View2D& view() const { return view_; }
     const GlApi& gl() const { return gl_; }
     const DrawStyle& style() const { return style_; }
+    /// Fill opacity of the shapes drawn next (0: outlines only).
+    void setFillAlpha(float alpha) { style_.fillAlpha = alpha; }
     float pixelScale() const { return pixelScale_; }
 
 private:

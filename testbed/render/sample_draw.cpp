@@ -1,0 +1,70 @@
+// Testbed renderer — drawing a Simulation (see sample_draw.hpp).
+#include "render/sample_draw.hpp"
+
+#include <algorithm>
+#include <cmath>
+
+namespace tb {
+
+namespace {
+
+i2d::Color bodyColour(const BodyDesc& body, const BodySample& s) {
+    if (body.def.type == i2d::BodyType::static_body) return {0.45f, 0.55f, 0.45f, 1.0f};
+    if (body.def.type == i2d::BodyType::kinematic_body) return {0.45f, 0.45f, 0.8f, 1.0f};
+    if (!s.awake) return {0.55f, 0.55f, 0.6f, 1.0f};
+    return {0.9f, 0.7f, 0.45f, 1.0f};
+}
+
+i2d::Transform poseOf(const BodySample& s) {
+    i2d::Transform xf;
+    xf.p = {s.x, s.y};
+    xf.q = i2d::makeRot(s.angle);
+    return xf;
+}
+
+bool finitePose(const BodySample& s) { return std::isfinite(s.x) && std::isfinite(s.y) && std::isfinite(s.angle); }
+
+}  // namespace
+
+void drawSimulation(i2d::DebugDraw& dd, const SceneDesc& desc, const Simulation& sim,
+                    std::optional<i2d::Color> colour) {
+    const int n = std::min(sim.bodyCount(), static_cast<int>(desc.bodies.size()));
+    for (int i = 0; i < n; ++i) {
+        const BodyDesc& body = desc.bodies[static_cast<std::size_t>(i)];
+        const BodySample s = sim.sample(i);
+        if (!finitePose(s)) continue;
+        const i2d::Transform xf = poseOf(s);
+        for (const ShapeDesc& shape : body.shapes) {
+            i2d::Color c = colour ? *colour : bodyColour(body, s);
+            if (shape.def.isSensor) c.a = 0.3f;
+            switch (shape.type) {
+                case i2d::ShapeType::circle:
+                    dd.drawSolidCircle(i2d::transformPoint(xf, shape.circle.center), shape.circle.radius,
+                                       i2d::rotate(xf.q, {1.0f, 0.0f}), c);
+                    break;
+                case i2d::ShapeType::capsule:
+                    dd.drawSolidCapsule(i2d::transformPoint(xf, shape.capsule.center1),
+                                        i2d::transformPoint(xf, shape.capsule.center2), shape.capsule.radius, c);
+                    break;
+                case i2d::ShapeType::polygon:
+                    dd.drawSolidPolygon(xf, shape.polygon.vertices, shape.polygon.count, shape.polygon.radius, c);
+                    break;
+                case i2d::ShapeType::segment:
+                    dd.drawSegment(i2d::transformPoint(xf, shape.segment.point1),
+                                   i2d::transformPoint(xf, shape.segment.point2), c);
+                    break;
+            }
+        }
+    }
+    if (!dd.drawJoints) return;
+    for (const DistanceJointDesc& j : desc.joints) {
+        if (j.bodyA < 0 || j.bodyB < 0 || j.bodyA >= n || j.bodyB >= n) continue;
+        const BodySample a = sim.sample(j.bodyA), b = sim.sample(j.bodyB);
+        if (!finitePose(a) || !finitePose(b)) continue;
+        const i2d::Color c = colour ? *colour : i2d::Color{0.8f, 0.3f, 0.8f, 1.0f};
+        dd.drawSegment(i2d::transformPoint(poseOf(a), j.def.localAnchorA),
+                       i2d::transformPoint(poseOf(b), j.def.localAnchorB), c);
+    }
+}
+
+}  // namespace tb
