@@ -72,7 +72,7 @@ void prepareContacts(WorldState& w, float h, bool soft) {
     bool anyDeep = false;
     // Each row goes straight to its place in colour order (solver.cpp coloured
     // the contacts and left each colour's first slot in colourOffsets).
-    s.constraints.resize(s.rowCount);
+    s.constraints.resizeForOverwrite(static_cast<std::size_t>(s.rowCount));
     const std::size_t activeCount = w.activeContacts.size();
 
     for (std::size_t k = 0; k < activeCount; ++k) {

@@ -24,29 +24,30 @@ namespace i2d::detail {
 
 struct WorldState;
 
-/// Solver row data of one contact point.
+/// Solver row data of one contact point. Rows are plain data without
+/// default values: prepareContacts writes every field a pass reads.
 struct ContactPointConstraint {
-    Vec2 rA{}, rB{};              ///< anchors relative to the centres of mass at step start
-    float adjustedSeparation = 0; ///< separation − (rB − rA)·n, so s = (Δ)·n + this
-    float normalMass = 0, tangentMass = 0;
-    float normalImpulse = 0, tangentImpulse = 0;
-    float maxNormalImpulse = 0;
-    float relativeVelocity = 0;   ///< normal approach speed at step start (for restitution)
-    float restitutionBias = 0;    ///< Tamis and Maggiore (2015) eq. 8.2.1 target, baumgarte/split modes
-    float biasImpulse = 0;        ///< split mode: accumulated push impulse
+    Vec2 rA, rB;               ///< anchors relative to the centres of mass at step start
+    float adjustedSeparation;  ///< separation − (rB − rA)·n, so s = (Δ)·n + this
+    float normalMass, tangentMass;
+    float normalImpulse, tangentImpulse;
+    float maxNormalImpulse;
+    float relativeVelocity;    ///< normal approach speed at step start (for restitution)
+    float restitutionBias;     ///< Tamis and Maggiore (2015) eq. 8.2.1 target, baumgarte/split modes
+    float biasImpulse;         ///< split mode: accumulated push impulse
 };
 
 struct ContactConstraint {
-    int contact = kNullIndex;
-    int a = kNullIndex, b = kNullIndex;  ///< state indices; an immovable side uses the zero state
-    Vec2 normal{};
-    float friction = 0, restitution = 0;
-    float invMassA = 0, invIA = 0, invMassB = 0, invIB = 0;
-    float biasRate = 0, massScale = 1, impulseScale = 0;  ///< soft contact coefficients
-    float maxPush = 0;  ///< push speed cap of this contact (m/s), shared among a body's deep contacts
-    bool deepOverlap = false;  ///< a point overlaps by more than kDeepOverlap (contact_solver.cpp)
-    int pointCount = 0;
-    ContactPointConstraint points[2];
+    int contact;
+    int a, b;  ///< state indices; an immovable side uses the zero state
+    Vec2 normal;
+    float friction, restitution;
+    float invMassA, invIA, invMassB, invIB;
+    float biasRate, massScale, impulseScale;  ///< soft contact coefficients
+    float maxPush;     ///< push speed cap of this contact (m/s), shared among a body's deep contacts
+    bool deepOverlap;  ///< a point overlaps by more than kDeepOverlap (contact_solver.cpp)
+    int pointCount;
+    ContactPointConstraint points[2];  ///< the first pointCount are in use
 };
 static_assert(sizeof(ContactConstraint) == 172, "the layout documented above");
 

@@ -290,6 +290,11 @@ void releaseIfLarge(std::vector<T>& v) {
     if (v.capacity() * sizeof(T) > kKeptScratchBytes) std::vector<T>().swap(v);
 }
 
+template <class T>
+void releaseIfLarge(ScratchArray<T>& a) {
+    if (a.capacity() * sizeof(T) > kKeptScratchBytes) a.release();
+}
+
 void releaseLargeStepArrays(WorldState& w) {
     SolverArrays& s = w.solver;
     releaseIfLarge(s.states);

@@ -7,6 +7,7 @@
 #include "body.hpp"
 #include "contact_solver.hpp"
 #include "distance_joint.hpp"
+#include "scratch_array.hpp"
 
 namespace i2d::detail {
 
@@ -20,7 +21,7 @@ struct SolverArrays {
     std::vector<int> stateBodies;              ///< body slot of each state (awake bodies only)
     std::vector<Vec2> biasV;                   ///< split mode pseudo-velocities (zero entry last)
     std::vector<float> biasW;
-    std::vector<ContactConstraint> constraints;  ///< in colour order (solver.cpp)
+    ScratchArray<ContactConstraint> constraints; ///< in colour order (solver.cpp)
     std::vector<std::uint8_t> contactColours;    ///< per active contact: its row's colour, or kNoRow
     std::vector<int> colourOffsets;              ///< per colour: its first row (advanced as rows are placed)
     std::vector<std::uint64_t> colourBits;       ///< per colour, one bit per state
