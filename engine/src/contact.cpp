@@ -203,11 +203,14 @@ void collide(WorldState& w) {
     // island is supported in this very step.
     ++w.stepStamp;
     w.activeContacts.clear();
+    // At most every contact: one allocation when the lists were freed after the last step.
+    w.activeContacts.reserve(static_cast<std::size_t>(w.contacts.count));
     std::vector<int>& scratch = w.gatherScratch;
     const std::vector<int>& awakeBodies = w.islands.awakeBodies;
     std::size_t bodyCursor = 0;
     std::size_t processed = 0;
     scratch.clear();
+    scratch.reserve(static_cast<std::size_t>(w.contacts.count));
     while (bodyCursor < awakeBodies.size()) {
         std::size_t roundBegin = scratch.size();
         for (; bodyCursor < awakeBodies.size(); ++bodyCursor) {

@@ -46,6 +46,7 @@ float boundedIncrement(float& accumulated, float impulse, float lo, float hi) {
 void prepareDistanceJoints(WorldState& w) {
     std::vector<DistanceJointConstraint>& rows = w.solver.distanceJoints;
     rows.clear();
+    rows.reserve(static_cast<std::size_t>(w.joints.count));  // one allocation (the array may have been freed)
     const float warm = w.settings.enableWarmStarting;
     for (int j = 0; j < w.joints.capacity(); ++j) {
         const DistanceJoint& jt = w.joints[j];
