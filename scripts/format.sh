@@ -19,7 +19,11 @@ fi
 if [ $# -gt 0 ]; then
   files=("$@")
 else
-  mapfile -t files < <(git ls-files -- '*.cpp' '*.hpp')
+  if git rev-parse --is-inside-work-tree >/dev/null 2>&1; then
+    mapfile -t files < <(git ls-files -- '*.cpp' '*.hpp')
+  else  # a source tree without git: the project's own folders
+    mapfile -t files < <(find engine testbed tests \( -name '*.cpp' -o -name '*.hpp' \) | sort)
+  fi
 fi
 if [ ${#files[@]} -eq 0 ]; then
   exit 0

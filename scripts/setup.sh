@@ -8,7 +8,8 @@ packages=(build-essential cmake pkg-config
   libbox2d-dev libsdl2-dev libosmesa6-dev libgl-dev libpng-dev nlohmann-json3-dev
   libgtest-dev libgmock-dev libbenchmark-dev
   xvfb xauth gnuplot-nox imagemagick
-  clang libclang-rt-14-dev)  # libFuzzer and the sanitizer runtimes (scripts/fuzz.sh)
+  clang libclang-rt-14-dev  # libFuzzer and the sanitizer runtimes (scripts/fuzz.sh)
+  clang-format)             # scripts/format.sh and the format check test
 missing=()
 for p in "${packages[@]}"; do
   dpkg-query -W -f='${Status}' "$p" 2>/dev/null | grep -q "install ok installed" || missing+=("$p")

@@ -141,8 +141,8 @@ private:
             mass += md.mass;
             mx += double(md.mass) * md.center.x;
             my += double(md.mass) * md.center.y;
-            inertiaOrigin += md.rotationalInertia + double(md.mass) * (double(md.center.x) * md.center.x +
-                                                                       double(md.center.y) * md.center.y);
+            inertiaOrigin += md.rotationalInertia +
+                             double(md.mass) * (double(md.center.x) * md.center.x + double(md.center.y) * md.center.y);
             addShape(body, s, ws);
         }
         if (bd.type == b2_dynamicBody && mass > 0) {

@@ -13,9 +13,7 @@ std::string engineSettingsLabel(EngineKind engine, const i2d::WorldSettings& s, 
     std::string label = std::string(enumName(engine)) + ": " + enumName(s.positionCorrection) + ", ";
     switch (s.positionCorrection) {
         case i2d::PositionCorrection::soft_step: label += std::to_string(s.substeps) + " substeps"; break;
-        case i2d::PositionCorrection::baumgarte:
-            label += std::to_string(s.velocityIterations) + " iterations";
-            break;
+        case i2d::PositionCorrection::baumgarte: label += std::to_string(s.velocityIterations) + " iterations"; break;
         case i2d::PositionCorrection::split:
             label += std::to_string(s.velocityIterations) + " + " + std::to_string(s.positionIterations) +
                      " iterations";

@@ -22,11 +22,16 @@ const char* errorMetricUnit(ErrorMetric m) {
 
 ErrorMetric errorMetricFor(const std::string& scene) {
     static const std::map<std::string, ErrorMetric> table = {
-        {"pyramid100", ErrorMetric::max_excursion},    {"many_pyramids", ErrorMetric::max_excursion},
-        {"many_pyramids_small", ErrorMetric::max_excursion}, {"tall_stack20", ErrorMetric::max_sway},
-        {"tall_stack50", ErrorMetric::max_sway},  {"card_house", ErrorMetric::max_excursion},
-        {"rain1000", ErrorMetric::max_penetration},    {"joint_grid", ErrorMetric::joint_stretch},
-        {"heavy_chain", ErrorMetric::joint_stretch},   {"bounce", ErrorMetric::rebound_error},
+        {"pyramid100", ErrorMetric::max_excursion},
+        {"many_pyramids", ErrorMetric::max_excursion},
+        {"many_pyramids_small", ErrorMetric::max_excursion},
+        {"tall_stack20", ErrorMetric::max_sway},
+        {"tall_stack50", ErrorMetric::max_sway},
+        {"card_house", ErrorMetric::max_excursion},
+        {"rain1000", ErrorMetric::max_penetration},
+        {"joint_grid", ErrorMetric::joint_stretch},
+        {"heavy_chain", ErrorMetric::joint_stretch},
+        {"bounce", ErrorMetric::rebound_error},
         {"pendulum_wave", ErrorMetric::energy_drift},
     };
     auto it = table.find(scene);
@@ -125,9 +130,7 @@ void ErrorTracker::observe(const Simulation& sim, float penetration, float joint
     }
 }
 
-bool errorMetricHasCollapse(ErrorMetric m) {
-    return m == ErrorMetric::max_excursion || m == ErrorMetric::max_sway;
-}
+bool errorMetricHasCollapse(ErrorMetric m) { return m == ErrorMetric::max_excursion || m == ErrorMetric::max_sway; }
 
 ErrorValue ErrorTracker::result(const Simulation& sim) const {
     ErrorValue r{metric_, worst_};

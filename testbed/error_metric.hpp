@@ -92,9 +92,9 @@ private:
     const SceneDesc& desc_;
     ErrorMetric metric_;
     double worst_ = 0.0;
-    std::vector<BodySample> start_;  ///< max_excursion, max_sway: dynamic bodies' start
-    std::vector<int> dynamic_;       ///< their indices
-    std::vector<Ball> balls_;        ///< rebound_error
+    std::vector<BodySample> start_;       ///< max_excursion, max_sway: dynamic bodies' start
+    std::vector<int> dynamic_;            ///< their indices
+    std::vector<Ball> balls_;             ///< rebound_error
     double energy0_ = 0.0, swing_ = 0.0;  ///< energy_drift
 };
 

@@ -67,7 +67,8 @@ const char* engineName(EngineKind kind) { return enumName(kind); }
 std::unique_ptr<Simulation> makeSimulation(const SceneDesc& desc, EngineKind kind, const Box2DSettings& box2d) {
     if (kind == EngineKind::impulse2d) return makeImpulseSimulation(desc);
     if (!box2dAvailable())
-        throw SceneError("this testbed was built without the Box2D 2.4.1 backend (libbox2d-dev not found at configure time)");
+        throw SceneError(
+            "this testbed was built without the Box2D 2.4.1 backend (libbox2d-dev not found at configure time)");
     return makeBox2DSimulation(desc, box2d);
 }
 

@@ -32,9 +32,9 @@ std::string reportToJson(const RunReport& r) {
     j["joint_error"] = {{"max", r.jointErrorMax}, {"final", r.jointErrorFinal}};
     json named = json::object();
     for (const auto& n : r.named)
-        named[n.name] = {{"x0", n.x0},       {"y0", n.y0},     {"angle0", n.angle0}, {"x", n.x},
-                         {"y", n.y},         {"angle", n.angle}, {"vx", n.vx},       {"vy", n.vy},
-                         {"w", n.w},         {"max_dx", n.maxDx}, {"min_y", n.minY}, {"max_y", n.maxY}};
+        named[n.name] = {{"x0", n.x0}, {"y0", n.y0},        {"angle0", n.angle0}, {"x", n.x},
+                         {"y", n.y},   {"angle", n.angle},  {"vx", n.vx},         {"vy", n.vy},
+                         {"w", n.w},   {"max_dx", n.maxDx}, {"min_y", n.minY},    {"max_y", n.maxY}};
     j["named"] = named;
     if (r.engine == EngineKind::box2d) {
         j["settings"] = {{"velocity_iterations", r.box2d.velocityIterations},
@@ -71,7 +71,8 @@ void printReportText(const RunReport& r, std::ostream& out) {
     out << std::setprecision(3) << "  energy   initial " << r.energyInitial << "  final " << r.energyFinal << "  max "
         << r.energyMax << " J\n";
     out << "  displaced (> 0.5 m) " << r.displaced << ", joint error max " << std::setprecision(5) << r.jointErrorMax
-        << " m, final " << r.jointErrorFinal << " m\n" << std::setprecision(3);
+        << " m, final " << r.jointErrorFinal << " m\n"
+        << std::setprecision(3);
     if (r.error.metric != ErrorMetric::none)
         out << "  error: " << errorMetricName(r.error.metric) << " " << std::setprecision(5) << r.error.value << " "
             << errorMetricUnit(r.error.metric) << (r.error.collapsed ? " (collapsed)" : "") << "\n"

@@ -19,13 +19,13 @@ struct RunReport {
     std::vector<std::string> notes;  ///< what the engine could not express of the scene
     i2d::WorldSettings settings;     ///< Impulse2D's settings of the run
     Box2DSettings box2d;             ///< Box2D's iteration counts of the run
-    long steps = 0;            ///< steps requested
-    long stepsCompleted = 0;   ///< fewer when a state went non-finite
+    long steps = 0;                  ///< steps requested
+    long stepsCompleted = 0;         ///< fewer when a state went non-finite
     float dt = 0.0f;
     double msMedian = 0.0, msMin = 0.0, msMax = 0.0;
     int bodies = 0;
     int joints = 0;
-    int contacts = 0;          ///< touching contacts after the last step
+    int contacts = 0;  ///< touching contacts after the last step
     int maxContacts = 0;
     int awakeBodies = 0;
     float maxPenetration = 0.0f;

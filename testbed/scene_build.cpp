@@ -7,7 +7,8 @@ namespace tb {
 namespace {
 
 [[noreturn]] void refused(const SceneDesc& desc, const std::string& where, const i2d::Error& e) {
-    throw SceneError((desc.file.empty() ? desc.name : desc.file) + ": " + where + ": the engine refused it: " + e.what());
+    throw SceneError((desc.file.empty() ? desc.name : desc.file) + ": " + where +
+                     ": the engine refused it: " + e.what());
 }
 
 }  // namespace

@@ -33,13 +33,13 @@ struct Box2DSettings {
 
 /// The state of one body, in the same units and conventions for every engine.
 struct BodySample {
-    float x = 0, y = 0;       ///< body origin, world (m)
-    float angle = 0;          ///< radians, counter-clockwise
-    float vx = 0, vy = 0;     ///< velocity of the centre of mass (m/s)
-    float w = 0;              ///< angular velocity (rad/s)
-    float cx = 0, cy = 0;     ///< centre of mass, world (m)
-    float mass = 0;           ///< kg (0 for static and kinematic bodies)
-    float inertia = 0;        ///< about the centre of mass (kg m²)
+    float x = 0, y = 0;    ///< body origin, world (m)
+    float angle = 0;       ///< radians, counter-clockwise
+    float vx = 0, vy = 0;  ///< velocity of the centre of mass (m/s)
+    float w = 0;           ///< angular velocity (rad/s)
+    float cx = 0, cy = 0;  ///< centre of mass, world (m)
+    float mass = 0;        ///< kg (0 for static and kinematic bodies)
+    float inertia = 0;     ///< about the centre of mass (kg m²)
     float gravityScale = 1;
     bool dynamic = false;
     bool awake = false;

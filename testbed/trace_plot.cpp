@@ -4,9 +4,9 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdlib>
-#include <limits>
 #include <filesystem>
 #include <fstream>
+#include <limits>
 #include <set>
 #include <sstream>
 
@@ -28,8 +28,10 @@ bool startsWith(const std::string& s, const std::string& prefix) { return s.rfin
 std::string quoted(const std::string& s) {
     std::string q = "'";
     for (char c : s) {
-        if (c == '\'') q += "''";
-        else q += c;
+        if (c == '\'')
+            q += "''";
+        else
+            q += c;
     }
     return q + "'";
 }
@@ -81,8 +83,10 @@ std::string plotCommand(const PlotRequest& r, const std::vector<Series>& series)
             std::ostringstream y;
             y.precision(17);
             const double base = s.fromFirst && std::isfinite(info.first[col - 1]) ? info.first[col - 1] : 0.0;
-            if (s.scale == 1.0 && base == 0.0) y << col;
-            else y << "((column(" << col << ")-(" << base << "))*" << s.scale << ")";
+            if (s.scale == 1.0 && base == 0.0)
+                y << col;
+            else
+                y << "((column(" << col << ")-(" << base << "))*" << s.scale << ")";
             cmd += first ? " " : ", \\\n     ";
             first = false;
             cmd += quoted(info.path) + " skip 1 using " + std::to_string(time) + ":" + y.str() +
@@ -144,7 +148,8 @@ TraceInfo readTraceInfo(const std::string& path) {
     if (!std::getline(in, line)) throw TraceReadError("'" + path + "' is empty");
     info.columns = splitCsv(line);
     if (info.column("time[s]") != 2 || info.column("step[count]") != 1)
-        throw TraceReadError("'" + path + "' is not a trace of `testbed run --trace` (its header does not start "
+        throw TraceReadError("'" + path +
+                             "' is not a trace of `testbed run --trace` (its header does not start "
                              "with step[count],time[s])");
     const double nan = std::numeric_limits<double>::quiet_NaN();
     info.first.assign(info.columns.size(), nan);
@@ -179,8 +184,10 @@ std::vector<std::string> defaultLabels(const std::vector<TraceInfo>& traces) {
     for (const TraceInfo& t : traces) {
         std::string label = t.engine;
         const std::string file = std::filesystem::path(t.path).filename().string();
-        if (label.empty()) label = file;
-        else if (engines.count(t.engine) > 1) label += " (" + file + ")";
+        if (label.empty())
+            label = file;
+        else if (engines.count(t.engine) > 1)
+            label += " (" + file + ")";
         if (!t.stopped.empty()) {
             std::ostringstream s;
             s.precision(3);
@@ -210,8 +217,8 @@ std::string plotScript(const PlotRequest& r) {
     const std::string single = term + std::to_string(r.width) + "," + std::to_string(r.height) + "\n";
     const std::string bodyX = r.body + ".x[m]", bodyY = r.body + ".y[m]";
 
-    const std::string energy =
-        plotCommand(r, {{"total_energy[J]", 1.0, false, true, true}, {"kinetic_energy[J]", 1.0, true, false}});
+    const std::string energy = plotCommand(
+        r, {{"total_energy[J]", 1.0, false, true, true}, {"kinetic_energy[J]", 1.0, true, false}});
     const std::string penetration = plotCommand(r, {{"max_penetration[m]", 1000.0}});
     const std::string speed = plotCommand(r, {{"max_speed[m/s]"}});
     const std::string joint = plotCommand(r, {{"joint_error[m]", 1000.0}});
@@ -241,8 +248,10 @@ std::string plotScript(const PlotRequest& r) {
     s += axes(kEnergyTitle, "energy (J)") + energy;
     s += axes("deepest contact", "penetration (mm)") + penetration;
     s += axes("largest body speed", "speed (m/s)") + speed;
-    if (r.body.empty()) s += axes("joint error", "largest joint error (mm)") + joint;
-    else s += axes(r.body + " y", "y (m)") + plotCommand(r, {{bodyY}});
+    if (r.body.empty())
+        s += axes("joint error", "largest joint error (mm)") + joint;
+    else
+        s += axes(r.body + " y", "y (m)") + plotCommand(r, {{bodyY}});
     s += "unset multiplot\nunset output\n";
     return s;
 }

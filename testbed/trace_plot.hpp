@@ -22,8 +22,8 @@ struct TraceInfo {
     std::string engine;                ///< "# engine:" line, empty if absent
     std::string stopped;               ///< "# stopped:" line, empty when the run ended normally
     long rows = 0;
-    double lastTime = 0.0;             ///< time[s] of the last row
-    std::vector<double> first;         ///< the first row's values (NaN where none)
+    double lastTime = 0.0;                 ///< time[s] of the last row
+    std::vector<double> first;             ///< the first row's values (NaN where none)
     std::vector<double> minimum, maximum;  ///< each column's finite range over the rows (NaN: none)
 
     /// 1-based column number of `name` (gnuplot's numbering), 0 when absent.
@@ -42,8 +42,8 @@ struct PlotRequest {
     std::vector<std::string> labels;  ///< one per trace: the legend entries
     std::string body;                 ///< named body to plot (empty: none)
     std::string outDir;
-    std::string title;                ///< prefix of every chart's title
-    int width = 800, height = 450;    ///< one chart; the summary is 1.5 times larger each way
+    std::string title;              ///< prefix of every chart's title
+    int width = 800, height = 450;  ///< one chart; the summary is 1.5 times larger each way
 };
 
 /// Legend entries: the engine line of each trace, or the file name when a

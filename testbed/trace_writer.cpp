@@ -2,9 +2,9 @@
 #include "trace_writer.hpp"
 
 #include <algorithm>
+#include <cerrno>
 #include <cmath>
 #include <cstdio>
-#include <cerrno>
 #include <cstring>
 
 #include "metrics.hpp"
@@ -12,10 +12,9 @@
 namespace tb {
 
 std::vector<std::string> traceColumns(const std::vector<std::string>& namedBodies) {
-    std::vector<std::string> columns{"step[count]",        "time[s]",          "total_energy[J]",
-                                     "kinetic_energy[J]",  "potential_energy[J]", "max_penetration[m]",
-                                     "max_speed[m/s]",     "awake_bodies[count]", "contacts[count]",
-                                     "joint_error[m]"};
+    std::vector<std::string> columns{
+        "step[count]",        "time[s]",        "total_energy[J]",     "kinetic_energy[J]", "potential_energy[J]",
+        "max_penetration[m]", "max_speed[m/s]", "awake_bodies[count]", "contacts[count]",   "joint_error[m]"};
     for (const std::string& name : namedBodies) {
         columns.push_back(name + ".x[m]");
         columns.push_back(name + ".y[m]");

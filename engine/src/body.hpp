@@ -58,21 +58,21 @@ struct Body {
 /// separations it computes free of the round-off of large coordinates, and
 /// the transform is updated once at the end of the step.
 struct BodyState {
-    Vec2 v{};    ///< linear velocity (m/s)
-    float w = 0.0f;  ///< angular velocity (rad/s)
+    Vec2 v{};                    ///< linear velocity (m/s)
+    float w = 0.0f;              ///< angular velocity (rad/s)
     std::uint32_t reserved = 0;  ///< keeps the record at 32 bytes
-    Vec2 dp{};   ///< change of the centre of mass since the step began
-    Rot dq{};    ///< rotation since the step began
+    Vec2 dp{};                   ///< change of the centre of mass since the step began
+    Rot dq{};                    ///< rotation since the step began
 };
 static_assert(sizeof(BodyState) == 32, "BodyState is streamed by every solver pass: keep it at 32 bytes");
 
 /// What the velocity integration of each substep needs besides BodyState,
 /// gathered once per step (forces, gravity and damping do not change within it).
 struct BodyIntegration {
-    Vec2 linearAcceleration{};  ///< gravityScale·g + F/m (m/s²)
-    float torque = 0.0f;        ///< N·m
-    float invInertia = 0.0f;    ///< 1/(kg·m²)
-    float linearDampingFactor = 1.0f;   ///< 1/(1 + h·c), h the substep
+    Vec2 linearAcceleration{};         ///< gravityScale·g + F/m (m/s²)
+    float torque = 0.0f;               ///< N·m
+    float invInertia = 0.0f;           ///< 1/(kg·m²)
+    float linearDampingFactor = 1.0f;  ///< 1/(1 + h·c), h the substep
     float angularDampingFactor = 1.0f;
     bool movedByForces = false;  ///< dynamic; kinematic bodies keep their velocity
 };

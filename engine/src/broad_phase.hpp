@@ -19,10 +19,10 @@ namespace i2d::detail {
 struct WorldState;
 
 struct BroadPhase {
-    DynamicTree staticTree;        ///< shapes of static bodies
-    DynamicTree movingTree;        ///< shapes of kinematic and dynamic bodies
-    std::vector<int> moveBuffer;   ///< shapes whose proxies moved or were created
-    PairSet pairs;                 ///< shape pairs that have a contact
+    DynamicTree staticTree;       ///< shapes of static bodies
+    DynamicTree movingTree;       ///< shapes of kinematic and dynamic bodies
+    std::vector<int> moveBuffer;  ///< shapes whose proxies moved or were created
+    PairSet pairs;                ///< shape pairs that have a contact
 
     /// Puts a moving shape into the move buffer (once).
     void markMoved(Shape& shape, int index) {

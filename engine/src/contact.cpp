@@ -110,7 +110,8 @@ bool updateContact(WorldState& w, int c) {
         if (ct.enableEvents) {
             if (ct.isSensor) {
                 bool aSensor = a.isSensor;
-                SensorBeginEvent ev{w.shapeHandle(aSensor ? ct.shapeA : ct.shapeB), w.shapeHandle(aSensor ? ct.shapeB : ct.shapeA)};
+                SensorBeginEvent ev{w.shapeHandle(aSensor ? ct.shapeA : ct.shapeB),
+                                    w.shapeHandle(aSensor ? ct.shapeB : ct.shapeA)};
                 if (touching)
                     w.events.sensorBegin.push_back(ev);
                 else

@@ -16,7 +16,7 @@ struct WorldState;
 
 struct Contact {
     Manifold manifold{};
-    float normalImpulse[2]{};   ///< accumulated at each manifold point (N·s)
+    float normalImpulse[2]{};  ///< accumulated at each manifold point (N·s)
     float tangentImpulse[2]{};
     float friction = 0.0f, restitution = 0.0f;  ///< mixed from the two shapes
     int shapeA = kNullIndex, shapeB = kNullIndex;

@@ -38,7 +38,6 @@ void sharePushAmongDeepContacts(WorldState& w) {
     }
 }
 
-
 }  // namespace
 
 bool contactRowBodies(const WorldState& w, const Contact& ct, int zeroState, RowBodies& out) {
@@ -105,7 +104,8 @@ void prepareContacts(WorldState& w, float h, bool soft) {
         cc.pointCount = ct.manifold.pointCount;
         cc.maxPush = set.maxPushSpeed;
         cc.deepOverlap = false;
-        for (int j = 0; j < cc.pointCount; ++j) cc.deepOverlap = cc.deepOverlap || ct.manifold.points[j].separation < -kDeepOverlap;
+        for (int j = 0; j < cc.pointCount; ++j)
+            cc.deepOverlap = cc.deepOverlap || ct.manifold.points[j].separation < -kDeepOverlap;
         if (cc.deepOverlap) {
             ++w.solver.deepContactCount[static_cast<std::size_t>(a)];
             ++w.solver.deepContactCount[static_cast<std::size_t>(b)];
@@ -145,7 +145,6 @@ void prepareContacts(WorldState& w, float h, bool soft) {
     }
     if (anyDeep) sharePushAmongDeepContacts(w);
 }
-
 
 void warmStartContacts(WorldState& w) {
     BodyState* states = w.solver.states.data();
@@ -288,7 +287,8 @@ void solveContactPush(WorldState& w, float h) {
         for (int j = 0; j < cc.pointCount; ++j) {
             ContactPointConstraint& cp = cc.points[j];
             float s = cp.adjustedSeparation + dot(cp.rB - cp.rA, n);
-            float target = std::min(set.pushFactor * invH * std::max(-(s + set.penetrationSlop), 0.0f), set.maxPushSpeed);
+            float target = std::min(set.pushFactor * invH * std::max(-(s + set.penetrationSlop), 0.0f),
+                                    set.maxPushSpeed);
             if (target <= 0.0f && cp.biasImpulse == 0.0f) continue;
             Vec2 dv = (vB + cross(wB, cp.rB)) - (vA + cross(wA, cp.rA));
             float impulse = -cp.normalMass * (dot(dv, n) - target);

@@ -32,9 +32,9 @@ struct ContactPointConstraint {
     float normalMass, tangentMass;
     float normalImpulse, tangentImpulse;
     float maxNormalImpulse;
-    float relativeVelocity;    ///< normal approach speed at step start (for restitution)
-    float restitutionBias;     ///< Tamis and Maggiore (2015) eq. 8.2.1 target, baumgarte/split modes
-    float biasImpulse;         ///< split mode: accumulated push impulse
+    float relativeVelocity;  ///< normal approach speed at step start (for restitution)
+    float restitutionBias;   ///< Tamis and Maggiore (2015) eq. 8.2.1 target, baumgarte/split modes
+    float biasImpulse;       ///< split mode: accumulated push impulse
 };
 
 struct ContactConstraint {

@@ -22,8 +22,8 @@
 #include <algorithm>
 #include <cmath>
 
-#include "impulse2d/collision.hpp"
 #include "continuous.hpp"
+#include "impulse2d/collision.hpp"
 #include "world_state.hpp"
 
 namespace i2d::detail {
@@ -49,14 +49,14 @@ constexpr int kMaxAdvances = 30;
 // the static core, or 1 when it does not within the step. A pair already
 // within the target band at t = 0 touches or overlaps: its contact holds it,
 // and sweeping it would stall a body sliding fast along the ground.
-float timeOfImpact(const ShapeCore& moving, const Sweep& sweep, float bound, const ShapeCore& fixed, const Transform& xfFixed,
-                   float target) {
+float timeOfImpact(const ShapeCore& moving, const Sweep& sweep, float bound, const ShapeCore& fixed,
+                   const Transform& xfFixed, float target) {
     const float tolerance = 0.25f * kLinearSlop;
     const float radii = moving.radius + fixed.radius;
     float t = 0.0f;
     for (int i = 0; i < kMaxAdvances; ++i) {
-        const DistanceResult r =
-            shapeDistance(moving.points, moving.count, sweep.at(t), fixed.points, fixed.count, xfFixed);
+        const DistanceResult r = shapeDistance(moving.points, moving.count, sweep.at(t), fixed.points, fixed.count,
+                                               xfFixed);
         const float d = r.distance - radii;
         if (d <= target + tolerance) return i == 0 ? 1.0f : t;
         t += (d - target) / bound;

@@ -40,14 +40,17 @@ void World::draw(DebugDraw& dd) const {
                     break;
                 }
                 case ShapeType::capsule:
-                    dd.drawSolidCapsule(transformPoint(b.xf, sh.geometry.capsule.center1), transformPoint(b.xf, sh.geometry.capsule.center2),
-                                        sh.geometry.capsule.radius, c);
+                    dd.drawSolidCapsule(transformPoint(b.xf, sh.geometry.capsule.center1),
+                                        transformPoint(b.xf, sh.geometry.capsule.center2), sh.geometry.capsule.radius,
+                                        c);
                     break;
                 case ShapeType::polygon:
-                    dd.drawSolidPolygon(b.xf, sh.geometry.polygon.vertices, sh.geometry.polygon.count, sh.geometry.polygon.radius, c);
+                    dd.drawSolidPolygon(b.xf, sh.geometry.polygon.vertices, sh.geometry.polygon.count,
+                                        sh.geometry.polygon.radius, c);
                     break;
                 case ShapeType::segment:
-                    dd.drawSegment(transformPoint(b.xf, sh.geometry.segment.point1), transformPoint(b.xf, sh.geometry.segment.point2), c);
+                    dd.drawSegment(transformPoint(b.xf, sh.geometry.segment.point1),
+                                   transformPoint(b.xf, sh.geometry.segment.point2), c);
                     break;
             }
         }
@@ -82,7 +85,8 @@ void World::draw(DebugDraw& dd) const {
             for (int j = 0; j < ct.manifold.pointCount; ++j) {
                 const ManifoldPoint& mp = ct.manifold.points[j];
                 if (dd.drawContacts)
-                    dd.drawPoint(mp.point, 5.0f, mp.separation < 0.0f ? Color{0.9f, 0.2f, 0.2f, 1.0f} : Color{0.2f, 0.6f, 0.9f, 1.0f});
+                    dd.drawPoint(mp.point, 5.0f,
+                                 mp.separation < 0.0f ? Color{0.9f, 0.2f, 0.2f, 1.0f} : Color{0.2f, 0.6f, 0.9f, 1.0f});
                 if (dd.drawContactNormals)
                     dd.drawSegment(mp.point, mp.point + 0.3f * ct.manifold.normal, {0.9f, 0.9f, 0.3f, 1.0f});
             }

@@ -16,10 +16,10 @@ namespace i2d {
 namespace {
 
 struct SimplexVertex {
-    Vec2 wA;   // support point of A (A's frame)
-    Vec2 wB;   // support point of B (A's frame)
-    Vec2 w;    // wB − wA, a point of the Minkowski difference
-    float a;   // barycentric weight of this vertex in the closest point
+    Vec2 wA;  // support point of A (A's frame)
+    Vec2 wB;  // support point of B (A's frame)
+    Vec2 w;   // wB − wA, a point of the Minkowski difference
+    float a;  // barycentric weight of this vertex in the closest point
     int indexA;
     int indexB;
 };

@@ -133,8 +133,8 @@ void solveDistanceJoints(WorldState& w, float h, SolvePass pass) {
             // A spring: its softness is physical, so it applies in every pass.
             Softness spring = makeSoft(jc.hertz, jc.dampingRatio, h);
             float C = f.length - jc.length;
-            float impulse =
-                -spring.massScale * jc.axialMass * (cdot() + spring.biasRate * C) - spring.impulseScale * jc.impulse;
+            float impulse = -spring.massScale * jc.axialMass * (cdot() + spring.biasRate * C) -
+                            spring.impulseScale * jc.impulse;
             impulse = boundedIncrement(jc.impulse, impulse, -maxImpulse, maxImpulse);
             applyAxial(jc, f, impulse, sA, sB);
         }

@@ -43,14 +43,14 @@ struct DistanceJoint {
 struct DistanceJointConstraint {
     int joint = kNullIndex;
     int a = kNullIndex, b = kNullIndex;  ///< solver body indices; kNullIndex for a body that does not move this step
-    Vec2 rA{}, rB{};          ///< anchors relative to the centres of mass at step start (world)
-    Vec2 deltaCenter{};       ///< centre B − centre A at step start
+    Vec2 rA{}, rB{};                     ///< anchors relative to the centres of mass at step start (world)
+    Vec2 deltaCenter{};                  ///< centre B − centre A at step start
     float axialMass = 0.0f;
     float invMassA = 0, invIA = 0, invMassB = 0, invIB = 0;
     float length = 0, minLength = 0, maxLength = 0;
     float hertz = 0, dampingRatio = 0;
     float impulse = 0, lowerImpulse = 0, upperImpulse = 0;
-    bool rigid = true;        ///< not a spring (or a spring pinned by equal limits)
+    bool rigid = true;  ///< not a spring (or a spring pinned by equal limits)
     bool enableLimit = false;
 };
 

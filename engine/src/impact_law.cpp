@@ -50,8 +50,7 @@ void validate(const ImpactInput& in) {
     const double len = std::sqrt(in.normal.x * in.normal.x + in.normal.y * in.normal.y);
     if (!(std::abs(len - 1.0) <= 1e-6))
         throw Error("resolveImpact: the normal must be a unit vector (length differs from 1 by more than 1e-6)");
-    if (in.restitution < 0.0 || in.restitution > 1.0)
-        throw Error("resolveImpact: restitution e must lie in [0, 1]");
+    if (in.restitution < 0.0 || in.restitution > 1.0) throw Error("resolveImpact: restitution e must lie in [0, 1]");
     if (in.friction < 0.0) throw Error("resolveImpact: friction mu must be >= 0");
 }
 
@@ -124,8 +123,8 @@ ImpactResult resolveImpact(const ImpactInput& in) {
     }
 
     double ux = u0.x, uy = u0.y;
-    double Wc = 0.0, Wd = 0.0;     // work of the normal force in compression / decompression (§3.4)
-    double px = 0.0, py = 0.0;     // impulse so far, rotated frame
+    double Wc = 0.0, Wd = 0.0;  // work of the normal force in compression / decompression (§3.4)
+    double px = 0.0, py = 0.0;  // impulse so far, rotated frame
     const double e2 = e * e;
 
     // k = K·(s, 1): the rate du/dp_y when dp_x/dp_y = s (equation (3) in 2D).

@@ -23,8 +23,8 @@
 #include <algorithm>
 #include <cmath>
 
-#include "impulse2d/impact.hpp"
 #include "impact_stage.hpp"
+#include "impulse2d/impact.hpp"
 #include "world_state.hpp"
 
 namespace i2d::detail {

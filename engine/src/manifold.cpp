@@ -106,9 +106,15 @@ void clipSegments(Vec2 ref1, Vec2 ref2, Vec2 n, float rad1, int idRef1, int idRe
     float s1 = dot(inc1 - ref1, t);
     float s2 = dot(inc2 - ref1, t);
     if (s1 > s2) {  // order the incident vertices along the tangent
-        Vec2 tv = inc1; inc1 = inc2; inc2 = tv;
-        float ts = s1; s1 = s2; s2 = ts;
-        int ti = idInc1; idInc1 = idInc2; idInc2 = ti;
+        Vec2 tv = inc1;
+        inc1 = inc2;
+        inc2 = tv;
+        float ts = s1;
+        s1 = s2;
+        s2 = ts;
+        int ti = idInc1;
+        idInc1 = idInc2;
+        idInc2 = ti;
     }
     const float radius = rad1 + rad2;
     auto emit = [&](Vec2 v, int idR, int idI) {
@@ -443,13 +449,13 @@ Manifold collideCapsulesLocal(Vec2 p1, Vec2 q1, float rA, Vec2 p2, Vec2 q2, floa
                 Vec2 n = alignA >= 0.0f ? nA : -nA;  // A → B
                 // ref2 − ref1 must point along leftPerp(n).
                 bool forward = dot(e1, leftPerp(n)) > 0.0f;
-                clipSegments(forward ? p1 : q1, forward ? q1 : p1, n, rA, forward ? 0 : 1, forward ? 1 : 0, p2, q2, rB, 0,
-                             1, false, false, speculativeDistance, m);
+                clipSegments(forward ? p1 : q1, forward ? q1 : p1, n, rA, forward ? 0 : 1, forward ? 1 : 0, p2, q2, rB,
+                             0, 1, false, false, speculativeDistance, m);
             } else {
                 Vec2 n = alignB >= 0.0f ? -nB : nB;  // B → A (reference is B)
                 bool forward = dot(e2, leftPerp(n)) > 0.0f;
-                clipSegments(forward ? p2 : q2, forward ? q2 : p2, n, rB, forward ? 0 : 1, forward ? 1 : 0, p1, q1, rA, 0,
-                             1, true, false, speculativeDistance, m);
+                clipSegments(forward ? p2 : q2, forward ? q2 : p2, n, rB, forward ? 0 : 1, forward ? 1 : 0, p1, q1, rA,
+                             0, 1, true, false, speculativeDistance, m);
             }
             // Keep the clipped manifold only if its deepest point agrees with
             // the exact closest-point gap; the clip can cut away the closest

@@ -24,8 +24,10 @@ int createShape(WorldState& w, int b, const ShapeDef& def, ShapeType type, const
     // proxy updates visit them in that order).
     Body& body = w.bodies[b];
     sh.prevShape = body.lastShape;
-    if (body.lastShape != kNullIndex) w.shapes[body.lastShape].nextShape = s;
-    else body.firstShape = s;
+    if (body.lastShape != kNullIndex)
+        w.shapes[body.lastShape].nextShape = s;
+    else
+        body.firstShape = s;
     body.lastShape = s;
     createProxy(w, s);
     // A sleeping body stays asleep (a level built asleep stays asleep, as in
@@ -41,10 +43,14 @@ void destroyShape(WorldState& w, int s) {
     destroyProxy(w, s);
     Body& body = w.bodies[b];
     const Shape& sh = w.shapes[s];
-    if (sh.prevShape != kNullIndex) w.shapes[sh.prevShape].nextShape = sh.nextShape;
-    else body.firstShape = sh.nextShape;
-    if (sh.nextShape != kNullIndex) w.shapes[sh.nextShape].prevShape = sh.prevShape;
-    else body.lastShape = sh.prevShape;
+    if (sh.prevShape != kNullIndex)
+        w.shapes[sh.prevShape].nextShape = sh.nextShape;
+    else
+        body.firstShape = sh.nextShape;
+    if (sh.nextShape != kNullIndex)
+        w.shapes[sh.nextShape].prevShape = sh.prevShape;
+    else
+        body.lastShape = sh.prevShape;
     w.shapes.release(s);
 }
 

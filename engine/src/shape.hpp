@@ -7,9 +7,9 @@
 #include <cstdint>
 #include <optional>
 
+#include "body.hpp"
 #include "dynamic_tree.hpp"
 #include "impulse2d/geometry.hpp"
-#include "body.hpp"
 #include "impulse2d/types.hpp"
 #include "slot_array.hpp"
 

@@ -21,11 +21,11 @@ struct SolverArrays {
     std::vector<int> stateBodies;              ///< body slot of each state (awake bodies only)
     std::vector<Vec2> biasV;                   ///< split mode pseudo-velocities (zero entry last)
     std::vector<float> biasW;
-    ScratchArray<ContactConstraint> constraints; ///< in colour order (solver.cpp)
-    std::vector<std::uint8_t> contactColours;    ///< per active contact: its row's colour, or kNoRow
-    std::vector<int> colourOffsets;              ///< per colour: its first row (advanced as rows are placed)
-    std::vector<std::uint64_t> colourBits;       ///< per colour, one bit per state
-    int rowCount = 0;                            ///< contact rows this step
+    ScratchArray<ContactConstraint> constraints;  ///< in colour order (solver.cpp)
+    std::vector<std::uint8_t> contactColours;     ///< per active contact: its row's colour, or kNoRow
+    std::vector<int> colourOffsets;               ///< per colour: its first row (advanced as rows are placed)
+    std::vector<std::uint64_t> colourBits;        ///< per colour, one bit per state
+    int rowCount = 0;                             ///< contact rows this step
     std::vector<DistanceJointConstraint> distanceJoints;
     std::vector<int> deepContactCount;  ///< per state: contacts overlapping deeper than kDeepOverlap
 };

@@ -57,8 +57,7 @@ inline void requireNonNegative(float v, const char* name) {
 }
 inline void requireInRange(float v, float lo, float hi, const char* name) {
     requireFinite(v, name);
-    if (v < lo || v > hi)
-        fail(std::string(name) + " must be in [" + shortNumber(lo) + ", " + shortNumber(hi) + "]");
+    if (v < lo || v > hi) fail(std::string(name) + " must be in [" + shortNumber(lo) + ", " + shortNumber(hi) + "]");
 }
 inline void requireUnitInterval(float v, const char* name) {
     requireFinite(v, name);

@@ -4,8 +4,8 @@
 #include <algorithm>
 
 #include "impulse2d/world.hpp"
-#include "validation.hpp"
 #include "joint.hpp"
+#include "validation.hpp"
 #include "world_state.hpp"
 
 namespace i2d {

@@ -14,7 +14,8 @@ bool passes(const Filter& f, const QueryFilter& q) {
     return (f.categoryBits & q.maskBits) != 0 && (f.maskBits & q.categoryBits) != 0;
 }
 
-std::optional<RayHit> castShape(const detail::Shape& sh, const Transform& xf, Vec2 origin, Vec2 translation, float maxFraction) {
+std::optional<RayHit> castShape(const detail::Shape& sh, const Transform& xf, Vec2 origin, Vec2 translation,
+                                float maxFraction) {
     RayCastInput in{invTransformPoint(xf, origin), invRotate(xf.q, translation), maxFraction};
     std::optional<RayHit> hit = detail::shapeRayCast(sh, in);
     if (hit) {
@@ -27,7 +28,8 @@ std::optional<RayHit> castShape(const detail::Shape& sh, const Transform& xf, Ve
 // Shapes of both trees whose fat box overlaps `box`, that pass the filter and
 // the exact test `accept`, as handles in slot order (independent of tree shape).
 template <class Accept>
-std::vector<ShapeId> shapesInBox(const detail::WorldState& w, const AABB& box, const QueryFilter& filter, Accept accept) {
+std::vector<ShapeId> shapesInBox(const detail::WorldState& w, const AABB& box, const QueryFilter& filter,
+                                 Accept accept) {
     std::vector<int> found;
     auto visit = [&](int s) {
         const detail::Shape& sh = w.shapes[s];

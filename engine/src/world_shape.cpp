@@ -53,12 +53,14 @@ ShapeId World::createCapsuleShape(BodyId body, const ShapeDef& def, const Capsul
 }
 
 ShapeId World::createPolygonShape(BodyId body, const ShapeDef& def, const Polygon& p) {
-    if (p.count < 3 || p.count > kMaxPolygonVertices) fail("polygon must have 3 to 8 vertices (build it with makePolygon)");
+    if (p.count < 3 || p.count > kMaxPolygonVertices)
+        fail("polygon must have 3 to 8 vertices (build it with makePolygon)");
     requireInRange(p.radius, 0.0f, detail::kMaxRadius, "polygon radius");
     for (int i = 0; i < p.count; ++i) {
         requireBounded(p.vertices[i], "polygon vertex");
         requireFinite(p.normals[i], "polygon normal");
-        if (std::abs(lengthSquared(p.normals[i]) - 1.0f) > 1.0e-3f) fail("polygon normals must be unit length (build it with makePolygon)");
+        if (std::abs(lengthSquared(p.normals[i]) - 1.0f) > 1.0e-3f)
+            fail("polygon normals must be unit length (build it with makePolygon)");
     }
     requireBounded(p.centroid, "polygon centroid");
     // Each edge at least kMinPolygonFeature long, with its outward normal:
@@ -81,7 +83,8 @@ ShapeId World::createPolygonShape(BodyId body, const ShapeDef& def, const Polygo
     for (int i = 0; i < p.count; ++i) {
         float deepest = 0.0f;
         for (int j = 0; j < p.count; ++j) deepest = std::min(deepest, dot(p.normals[i], p.vertices[j] - p.vertices[i]));
-        if (deepest > -detail::kMinPolygonFeature) fail("polygon is degenerate: thinner than 0.0005 m (collinear vertices)");
+        if (deepest > -detail::kMinPolygonFeature)
+            fail("polygon is degenerate: thinner than 0.0005 m (collinear vertices)");
     }
     Polygon core = p;
     core.radius = 0.0f;

@@ -74,15 +74,14 @@ ordered resolveOne(const json& j, const std::string& where) {
         throw InputError(where + ": " + e.what());
     }
     return ordered{{"a", {{"v", {r.vA.x, r.vA.y}}, {"w", r.wA}}},
-                {"b", {{"v", {r.vB.x, r.vB.y}}, {"w", r.wB}}},
-                {"impulse", {r.impulse.x, r.impulse.y}},
-                {"case", i2d::toString(r.kind)}};
+                   {"b", {{"v", {r.vB.x, r.vB.y}}, {"w", r.wB}}},
+                   {"impulse", {r.impulse.x, r.impulse.y}},
+                   {"case", i2d::toString(r.kind)}};
 }
 
-const char* const kImpactHelp =
-    "usage: testbed impact < INPUT\n\n"
-    "Resolve impacts read from standard input with the closed-form impact law;\n"
-    "see the impact law's documentation for the line format.\n";
+const char* const kImpactHelp = "usage: testbed impact < INPUT\n\n"
+                                "Resolve impacts read from standard input with the closed-form impact law;\n"
+                                "see the impact law's documentation for the line format.\n";
 
 }  // namespace
 

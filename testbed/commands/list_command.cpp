@@ -10,10 +10,9 @@
 
 namespace tb {
 
-const char* const kListHelp =
-    "usage: testbed list [--assets DIR]\n"
-    "\n"
-    "Print the shipped scenes, one per line: NAME, then its description.\n";
+const char* const kListHelp = "usage: testbed list [--assets DIR]\n"
+                              "\n"
+                              "Print the shipped scenes, one per line: NAME, then its description.\n";
 
 int runListCommand(const std::vector<std::string>& args, std::ostream& out, std::ostream& err) {
     if (wantsHelp(args)) {

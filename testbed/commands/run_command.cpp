@@ -58,7 +58,7 @@ RunOptions parseRunOptions(const std::vector<std::string>& args) {
             if (o.tracePath.empty()) throw UsageError("--trace: expected a file path, got ''");
         } else if (r.is("--compare") || r.is("--overlay")) {
             throw UsageError(r.current() + " is an option of `testbed render`; `testbed run` runs one engine "
-                             "(--engine), and --trace records it over time for `testbed plot`");
+                                           "(--engine), and --trace records it over time for `testbed plot`");
         } else if (r.isOption()) {
             r.rejectUnknownOption();
         } else if (o.scene.empty()) {

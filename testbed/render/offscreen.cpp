@@ -49,7 +49,8 @@ Image OffscreenRenderer::render(const View2D& view, const std::function<void(GlD
 
 Image OffscreenRenderer::renderWorld(const i2d::World& world, const View2D& view, const WorldDrawFlags& flags,
                                      const std::string& caption) {
-    return render(view, [&](GlDraw& d) { drawWorld(d, world, flags); }, caption);
+    return render(
+        view, [&](GlDraw& d) { drawWorld(d, world, flags); }, caption);
 }
 
 }  // namespace tb

@@ -19,9 +19,19 @@ void* osmesaProc(const char* name) { return reinterpret_cast<void*>(OSMesaGetPro
 
 OsmesaTarget::OsmesaTarget(int width, int height) : impl_(std::make_unique<Impl>()), width_(width), height_(height) {
     if (width <= 0 || height <= 0 || width > 16384 || height > 16384)
-        throw std::runtime_error("offscreen target: invalid size " + std::to_string(width) + "x" + std::to_string(height));
-    const int attribs[] = {OSMESA_FORMAT, OSMESA_RGBA, OSMESA_DEPTH_BITS, 0, OSMESA_STENCIL_BITS, 0,
-                           OSMESA_ACCUM_BITS, 0, OSMESA_PROFILE, OSMESA_COMPAT_PROFILE, 0};
+        throw std::runtime_error("offscreen target: invalid size " + std::to_string(width) + "x" +
+                                 std::to_string(height));
+    const int attribs[] = {OSMESA_FORMAT,
+                           OSMESA_RGBA,
+                           OSMESA_DEPTH_BITS,
+                           0,
+                           OSMESA_STENCIL_BITS,
+                           0,
+                           OSMESA_ACCUM_BITS,
+                           0,
+                           OSMESA_PROFILE,
+                           OSMESA_COMPAT_PROFILE,
+                           0};
     impl_->context = OSMesaCreateContextAttribs(attribs, nullptr);
     if (!impl_->context) impl_->context = OSMesaCreateContextExt(OSMESA_RGBA, 0, 0, 0, nullptr);
     if (!impl_->context) throw std::runtime_error("offscreen target: OSMesa could not create a context");
@@ -31,7 +41,8 @@ OsmesaTarget::OsmesaTarget(int width, int height) : impl_(std::make_unique<Impl>
     if (!gl_.load(&osmesaProc, &missing)) {
         OSMesaDestroyContext(impl_->context);
         impl_->context = nullptr;
-        throw std::runtime_error(std::string("offscreen target: OSMesa lacks ") + (missing ? missing : "a GL function"));
+        throw std::runtime_error(std::string("offscreen target: OSMesa lacks ") +
+                                 (missing ? missing : "a GL function"));
     }
 }
 

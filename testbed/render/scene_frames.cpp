@@ -5,8 +5,8 @@
 #include <cmath>
 #include <cstdio>
 #include <filesystem>
-#include <string>
 #include <stdexcept>
+#include <string>
 
 #include "render/frame_writer.hpp"
 #include "scene.hpp"
@@ -17,7 +17,8 @@ namespace {
 
 std::string captionFor(const Scene& scene, int step) {
     char buf[160];
-    std::snprintf(buf, sizeof buf, "%s  t = %.2f s  step %d", scene.desc.name.empty() ? "scene" : scene.desc.name.c_str(),
+    std::snprintf(buf, sizeof buf, "%s  t = %.2f s  step %d",
+                  scene.desc.name.empty() ? "scene" : scene.desc.name.c_str(),
                   static_cast<double>(step) * static_cast<double>(scene.desc.dt), step);
     return buf;
 }

@@ -30,9 +30,9 @@ struct RenderOptions {
 
 struct RenderResult {
     std::vector<std::string> framePaths;
-    std::string sheetPath;    ///< empty when not written
-    std::string gifPath;      ///< empty when not written
-    std::string gifMessage;   ///< why the GIF is missing, or how it was made
+    std::string sheetPath;   ///< empty when not written
+    std::string gifPath;     ///< empty when not written
+    std::string gifMessage;  ///< why the GIF is missing, or how it was made
 };
 
 /// Steps `scene` and writes the frames, sheet and GIF into options.outDir

@@ -10,12 +10,12 @@
 #include <optional>
 #include <stdexcept>
 
+#include "enum_names.hpp"
 #include "render/camera.hpp"
 #include "render/gl_draw.hpp"
 #include "render/offscreen.hpp"
 #include "render/png_io.hpp"
 #include "render/text.hpp"
-#include "enum_names.hpp"
 #include "scene.hpp"
 #include "scene_build.hpp"
 
@@ -148,8 +148,8 @@ void ViewerController::apply(ViewerAction action) {
         case A::cyclePositionCorrection:
             changeSettings([](i2d::WorldSettings& s) {
                 s.positionCorrection = s.positionCorrection == PC::baumgarte ? PC::split
-                                       : s.positionCorrection == PC::split ? PC::soft_step
-                                                                            : PC::baumgarte;
+                                       : s.positionCorrection == PC::split   ? PC::soft_step
+                                                                             : PC::baumgarte;
             });
             break;
         case A::toggleImpactModel:
@@ -160,13 +160,18 @@ void ViewerController::apply(ViewerAction action) {
             break;
         case A::toggleSleep: changeSettings([](i2d::WorldSettings& s) { s.enableSleep = !s.enableSleep; }); break;
         case A::moreIterations:
-            changeSettings([](i2d::WorldSettings& s) { s.velocityIterations = std::min(s.velocityIterations + 1, 100); });
+            changeSettings(
+                [](i2d::WorldSettings& s) { s.velocityIterations = std::min(s.velocityIterations + 1, 100); });
             break;
         case A::fewerIterations:
             changeSettings([](i2d::WorldSettings& s) { s.velocityIterations = std::max(s.velocityIterations - 1, 1); });
             break;
-        case A::moreSubsteps: changeSettings([](i2d::WorldSettings& s) { s.substeps = std::min(s.substeps + 1, 64); }); break;
-        case A::fewerSubsteps: changeSettings([](i2d::WorldSettings& s) { s.substeps = std::max(s.substeps - 1, 1); }); break;
+        case A::moreSubsteps:
+            changeSettings([](i2d::WorldSettings& s) { s.substeps = std::min(s.substeps + 1, 64); });
+            break;
+        case A::fewerSubsteps:
+            changeSettings([](i2d::WorldSettings& s) { s.substeps = std::max(s.substeps - 1, 1); });
+            break;
         case A::toggleContacts: flags_.contacts = !flags_.contacts; break;
         case A::toggleAabbs: flags_.aabbs = !flags_.aabbs; break;
         case A::toggleJoints: flags_.joints = !flags_.joints; break;

@@ -84,8 +84,9 @@ i2d::Filter parseFilter(const json& j, const Loc& loc) {
 }
 
 ShapeDesc parseShape(const json& j, const Loc& loc) {
-    Obj o(j, loc, {"comment", "type", "density", "friction", "restitution", "filter", "sensor",
-                   "enable_contact_events", "enable_sensor_events"});
+    Obj o(j, loc,
+          {"comment", "type", "density", "friction", "restitution", "filter", "sensor", "enable_contact_events",
+           "enable_sensor_events"});
     const std::string type = o.reqStr("type");
     ShapeDesc s;
     if (type == "box") {
@@ -116,8 +117,9 @@ ShapeDesc parseShape(const json& j, const Loc& loc) {
 
 // A body object; templates (inside generators) may not set name or position.
 BodyDesc parseBody(const json& j, const Loc& loc, bool isTemplate) {
-    Obj o(j, loc, {"comment", "type", "angle", "linear_velocity", "angular_velocity", "linear_damping",
-                   "angular_damping", "gravity_scale", "fixed_rotation", "awake", "enable_sleep", "shapes"});
+    Obj o(j, loc,
+          {"comment", "type", "angle", "linear_velocity", "angular_velocity", "linear_damping", "angular_damping",
+           "gravity_scale", "fixed_rotation", "awake", "enable_sleep", "shapes"});
     if (!isTemplate) o.allow({"name", "position"});
     if (isTemplate) {
         for (const char* k : {"name", "position"})

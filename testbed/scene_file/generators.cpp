@@ -45,14 +45,14 @@ void expandGenerator(const json& j, const Loc& loc, Builder& bld) {
         for (std::int64_t r = 0; r < rows; ++r)
             for (std::int64_t c = 0; c < cols; ++c)
                 local.push_back({static_cast<float>(c) * sp.x, static_cast<float>(r) * sp.y});
-    } else {  // pyramid
+    } else {                                           // pyramid
         std::int64_t base = o.reqInt("base", 1, 700);  // 700 → 245,350 bodies, just under the body limit
         i2d::Vec2 sp = o.reqVec("spacing", kMaxSize);
         for (std::int64_t r = 0; r < base; ++r) {
             std::int64_t n = base - r;
             for (std::int64_t c = 0; c < n; ++c)
-                local.push_back({(static_cast<float>(c) - 0.5f * static_cast<float>(n - 1)) * sp.x,
-                                 static_cast<float>(r) * sp.y});
+                local.push_back(
+                    {(static_cast<float>(c) - 0.5f * static_cast<float>(n - 1)) * sp.x, static_cast<float>(r) * sp.y});
         }
     }
     std::int64_t cx = 1, cy = 1;
@@ -93,7 +93,8 @@ void expandGenerator(const json& j, const Loc& loc, Builder& bld) {
     std::int64_t k = 0;
     for (std::int64_t qy = 0; qy < cy; ++qy) {
         for (std::int64_t qx = 0; qx < cx; ++qx) {
-            i2d::Vec2 off = origin + i2d::Vec2{static_cast<float>(qx) * copyStep.x, static_cast<float>(qy) * copyStep.y};
+            i2d::Vec2 off = origin +
+                            i2d::Vec2{static_cast<float>(qx) * copyStep.x, static_cast<float>(qy) * copyStep.y};
             for (const i2d::Vec2& p : local) {
                 BodyDesc b = tmpl;
                 b.def.position = off + p;

@@ -29,8 +29,9 @@ void parseJointOptions(const Obj& o, PendingJoint& pj) {
 }
 
 PendingJoint parseJoint(const json& j, const Loc& loc) {
-    Obj o(j, loc, {"comment", "type", "body_a", "body_b", "anchor_a", "anchor_b", "length", "spring", "limit",
-                   "collide_connected"});
+    Obj o(j, loc,
+          {"comment", "type", "body_a", "body_b", "anchor_a", "anchor_b", "length", "spring", "limit",
+           "collide_connected"});
     o.checkUnknown();
     o.str("comment", "");
     std::string type = o.str("type", "distance");

@@ -80,14 +80,18 @@ public:
     }
     Loc at(const char* k) const { return loc_.key(k); }
 
-    double num(const char* k, double def, const Range& r) const { return has(k) ? checkNumber(j_.at(k), at(k), r) : def; }
+    double num(const char* k, double def, const Range& r) const {
+        return has(k) ? checkNumber(j_.at(k), at(k), r) : def;
+    }
     double reqNum(const char* k, const Range& r) const { return checkNumber(get(k), at(k), r); }
     float f(const char* k, float def, const Range& r) const { return static_cast<float>(num(k, def, r)); }
     float reqF(const char* k, const Range& r) const { return static_cast<float>(reqNum(k, r)); }
     std::int64_t integer(const char* k, std::int64_t def, std::int64_t lo, std::int64_t hi) const {
         return has(k) ? checkInt(j_.at(k), at(k), lo, hi) : def;
     }
-    std::int64_t reqInt(const char* k, std::int64_t lo, std::int64_t hi) const { return checkInt(get(k), at(k), lo, hi); }
+    std::int64_t reqInt(const char* k, std::int64_t lo, std::int64_t hi) const {
+        return checkInt(get(k), at(k), lo, hi);
+    }
     bool boolean(const char* k, bool def) const {
         if (!has(k)) return def;
         const json& v = j_.at(k);
@@ -111,10 +115,12 @@ public:
     i2d::Vec2 reqVec(const char* k, double maxAbs) const { return vec2(get(k), at(k), maxAbs); }
 
     static i2d::Vec2 vec2(const json& v, const Loc& loc, double maxAbs) {
-        if (!v.is_array() || v.size() != 2) fail(loc, "expected an array of 2 numbers [x, y], got " + typeName(v) +
-                                                          (v.is_array() ? " of " + std::to_string(v.size()) : ""));
+        if (!v.is_array() || v.size() != 2)
+            fail(loc, "expected an array of 2 numbers [x, y], got " + typeName(v) +
+                          (v.is_array() ? " of " + std::to_string(v.size()) : ""));
         Range r{-maxAbs, maxAbs};
-        return {static_cast<float>(checkNumber(v[0], loc.at(0), r)), static_cast<float>(checkNumber(v[1], loc.at(1), r))};
+        return {static_cast<float>(checkNumber(v[0], loc.at(0), r)),
+                static_cast<float>(checkNumber(v[1], loc.at(1), r))};
     }
 
 private:

@@ -93,7 +93,8 @@ SceneDesc parseSceneDesc(const std::string& text, const std::string& file, const
         int a = pj.refA ? bld.resolve(*pj.refA, pj.refALoc) : pj.indexA;
         int b = pj.refB ? bld.resolve(*pj.refB, pj.refBLoc) : pj.indexB;
         if (a == b) fail(pj.loc, "a joint needs two different bodies (both are body " + std::to_string(a) + ")");
-        if (bld.bodies[a].def.type != i2d::BodyType::dynamic_body && bld.bodies[b].def.type != i2d::BodyType::dynamic_body)
+        if (bld.bodies[a].def.type != i2d::BodyType::dynamic_body &&
+            bld.bodies[b].def.type != i2d::BodyType::dynamic_body)
             fail(pj.loc, "a joint needs at least one dynamic body");
         if (!pj.hasLength) {
             float len = i2d::distance(worldPoint(bld.bodies[a], pj.def.localAnchorA),

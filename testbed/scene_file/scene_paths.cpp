@@ -29,7 +29,8 @@ std::string resolveScenePath(const std::string& nameOrPath, const std::string& a
     std::string dir = assetsDir.empty() ? defaultAssetsDir() : assetsDir;
     if (dir.empty())
         throw SceneError(nameOrPath + ": no assets directory found (give --assets DIR or a path to a scene file)");
-    for (const fs::path& p : {fs::path(dir) / "scenes" / (nameOrPath + ".json"), fs::path(dir) / (nameOrPath + ".json")})
+    for (const fs::path& p :
+         {fs::path(dir) / "scenes" / (nameOrPath + ".json"), fs::path(dir) / (nameOrPath + ".json")})
         if (fs::is_regular_file(p, ec)) return p.string();
     throw SceneError(nameOrPath + ": no such scene in " + (fs::path(dir) / "scenes").string() +
                      " (see `testbed list`)");

@@ -5,12 +5,32 @@
 namespace tb::scene_file {
 
 i2d::WorldSettings parseWorld(const json& j, const Loc& loc) {
-    Obj o(j, loc, {"comment", "gravity", "position_correction", "impact_model", "velocity_iterations",
-                   "position_iterations", "substeps", "push_factor", "penetration_slop", "max_push_speed",
-                   "contact_hertz", "contact_damping_ratio", "joint_hertz", "joint_damping_ratio",
-                   "restitution_threshold", "impact_threshold", "speculative_distance", "aabb_margin",
-                   "max_linear_speed", "enable_warm_starting", "enable_continuous", "enable_sleep", "time_to_sleep",
-                   "linear_sleep_tolerance", "angular_sleep_tolerance"});
+    Obj o(j, loc,
+          {"comment",
+           "gravity",
+           "position_correction",
+           "impact_model",
+           "velocity_iterations",
+           "position_iterations",
+           "substeps",
+           "push_factor",
+           "penetration_slop",
+           "max_push_speed",
+           "contact_hertz",
+           "contact_damping_ratio",
+           "joint_hertz",
+           "joint_damping_ratio",
+           "restitution_threshold",
+           "impact_threshold",
+           "speculative_distance",
+           "aabb_margin",
+           "max_linear_speed",
+           "enable_warm_starting",
+           "enable_continuous",
+           "enable_sleep",
+           "time_to_sleep",
+           "linear_sleep_tolerance",
+           "angular_sleep_tolerance"});
     o.checkUnknown();
     o.str("comment", "");
     i2d::WorldSettings s;

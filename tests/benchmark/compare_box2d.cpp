@@ -77,13 +77,15 @@ double staticField(int staticCount, int steps) {
     int made = 0;
     for (int i = 0; i < side && made < staticCount; ++i) {
         for (int j = 0; j < side && made < staticCount; ++j, ++made) {
-            i2d::BodyId b = world.createBody({.position = {static_cast<float>(i) * 3.0f + 10.0f, static_cast<float>(j) * 3.0f}});
+            i2d::BodyId b = world.createBody(
+                {.position = {static_cast<float>(i) * 3.0f + 10.0f, static_cast<float>(j) * 3.0f}});
             world.createPolygonShape(b, {}, i2d::makeBox(0.5f, 0.5f));
         }
     }
     i2d::BodyId ground = world.createBody({});
     world.createPolygonShape(ground, {}, i2d::makeOffsetBox(5.0f, 0.5f, {0, -0.5f}, 0));
-    i2d::BodyId body = world.createBody({.type = i2d::BodyType::dynamic_body, .position = {0, 50.0f}, .enableSleep = false});
+    i2d::BodyId body = world.createBody(
+        {.type = i2d::BodyType::dynamic_body, .position = {0, 50.0f}, .enableSleep = false});
     world.createPolygonShape(body, {}, i2d::makeBox(0.5f, 0.5f));
     auto t0 = Clock::now();
     for (int i = 0; i < steps; ++i) world.step(1.0f / 60.0f);
@@ -101,9 +103,12 @@ int main(int argc, char** argv) {
     float seconds = 10.0f;
     int base = 100, repeats = 3;
     for (int i = 1; i + 1 < argc; i += 2) {
-        if (!std::strcmp(argv[i], "--seconds")) seconds = std::strtof(argv[i + 1], nullptr);
-        else if (!std::strcmp(argv[i], "--base")) base = std::atoi(argv[i + 1]);
-        else if (!std::strcmp(argv[i], "--repeats")) repeats = std::atoi(argv[i + 1]);
+        if (!std::strcmp(argv[i], "--seconds"))
+            seconds = std::strtof(argv[i + 1], nullptr);
+        else if (!std::strcmp(argv[i], "--base"))
+            base = std::atoi(argv[i + 1]);
+        else if (!std::strcmp(argv[i], "--repeats"))
+            repeats = std::atoi(argv[i + 1]);
     }
     const int steps = static_cast<int>(seconds * 60.0f);
     std::vector<double> ti, tb;
@@ -123,10 +128,10 @@ int main(int argc, char** argv) {
         field.push_back(staticField(10000, 600));
     }
     std::printf("{\"pyramid\":{\"base\":%d,\"boxes\":%d,\"seconds\":%.1f,\n", base, base * (base + 1) / 2, seconds);
-    std::printf(" \"impulse2d\":{\"ms_per_step\":%.3f,\"top_drop\":%.4f,\"top_drift\":%.4f,\"top_max_sway\":%.4f},\n", mi, ri.drop,
-                ri.drift, ri.maxSway);
-    std::printf(" \"box2d_8_3\":{\"ms_per_step\":%.3f,\"top_drop\":%.4f,\"top_drift\":%.4f,\"top_max_sway\":%.4f},\n", mb, rb.drop,
-                rb.drift, rb.maxSway);
+    std::printf(" \"impulse2d\":{\"ms_per_step\":%.3f,\"top_drop\":%.4f,\"top_drift\":%.4f,\"top_max_sway\":%.4f},\n",
+                mi, ri.drop, ri.drift, ri.maxSway);
+    std::printf(" \"box2d_8_3\":{\"ms_per_step\":%.3f,\"top_drop\":%.4f,\"top_drift\":%.4f,\"top_max_sway\":%.4f},\n",
+                mb, rb.drop, rb.drift, rb.maxSway);
     std::printf(" \"time_ratio\":%.3f},\n", mi / mb);
     double a = median(alone), f = median(field);
     std::printf("\"static_field\":{\"alone_ms\":%.5f,\"with_10000_static_ms\":%.5f,\"ratio\":%.2f}}\n", a, f, f / a);

@@ -13,7 +13,7 @@
 #include "footprint.hpp"
 
 namespace {
-std::size_t g_newBytes = 0;   // bytes currently allocated through operator new
+std::size_t g_newBytes = 0;  // bytes currently allocated through operator new
 std::size_t g_newPeak = 0;
 }  // namespace
 
@@ -34,8 +34,8 @@ void operator delete(void* p, std::size_t) noexcept { operator delete(p); }
 namespace {
 
 struct Held {
-    std::size_t held = 0;     ///< heap growth from before building to after the steps (mallinfo2)
-    std::size_t stepPeak = 0; ///< most operator-new bytes above the built world's during the steps
+    std::size_t held = 0;      ///< heap growth from before building to after the steps (mallinfo2)
+    std::size_t stepPeak = 0;  ///< most operator-new bytes above the built world's during the steps
     int contacts = 0;
 };
 

@@ -87,7 +87,8 @@ void I2dTreeMoveQuery(benchmark::State& state) {
         ++k;
     }
     benchmark::DoNotOptimize(found);
-    state.counters["overlaps_per_query"] = static_cast<double>(found) / static_cast<double>(std::max<std::size_t>(k, 1));
+    state.counters["overlaps_per_query"] = static_cast<double>(found) /
+                                           static_cast<double>(std::max<std::size_t>(k, 1));
 }
 
 struct B2QueryCounter {
@@ -109,9 +110,12 @@ void B2dTreeMoveQuery(benchmark::State& state) {
         return a;
     };
     // Box2D fattens by b2_aabbExtension itself; give it the unfattened box.
-    auto inner = [](i2d::AABB b) { return i2d::AABB{{b.lower.x + 0.1f, b.lower.y + 0.1f}, {b.upper.x - 0.1f, b.upper.y - 0.1f}}; };
+    auto inner = [](i2d::AABB b) {
+        return i2d::AABB{{b.lower.x + 0.1f, b.lower.y + 0.1f}, {b.upper.x - 0.1f, b.upper.y - 0.1f}};
+    };
     std::vector<int> proxies;
-    for (int i = 0; i < n; ++i) proxies.push_back(tree.CreateProxy(toB2(inner(c.boxes[static_cast<std::size_t>(i)])), nullptr));
+    for (int i = 0; i < n; ++i)
+        proxies.push_back(tree.CreateProxy(toB2(inner(c.boxes[static_cast<std::size_t>(i)])), nullptr));
     B2QueryCounter counter;
     std::size_t k = 0;
     for (auto _ : state) {
@@ -124,7 +128,8 @@ void B2dTreeMoveQuery(benchmark::State& state) {
         ++k;
     }
     benchmark::DoNotOptimize(counter.found);
-    state.counters["overlaps_per_query"] = static_cast<double>(counter.found) / static_cast<double>(std::max<std::size_t>(k, 1));
+    state.counters["overlaps_per_query"] = static_cast<double>(counter.found) /
+                                           static_cast<double>(std::max<std::size_t>(k, 1));
 }
 
 BENCHMARK(I2dTreeMoveQuery)->Name("i2d/tree_move_query")->Arg(1000)->Arg(10000);
@@ -199,9 +204,9 @@ void BM_B2dPolygonCircle(benchmark::State& s) {
 
 void polygonCase(int which, i2d::Transform& xb) {
     switch (which) {
-        case 0: xb = placed(0.1f, 0.98f, 0.02f); break;    // overlap, box on box
-        case 1: xb = placed(0.1f, 1.005f, 0.02f); break;   // speculative, box above box
-        default: xb = placed(1.001f, 0.0f, 0.0f); break;   // side by side, unrotated
+        case 0: xb = placed(0.1f, 0.98f, 0.02f); break;   // overlap, box on box
+        case 1: xb = placed(0.1f, 1.005f, 0.02f); break;  // speculative, box above box
+        default: xb = placed(1.001f, 0.0f, 0.0f); break;  // side by side, unrotated
     }
 }
 void BM_I2dPolygons(benchmark::State& s) {
@@ -406,7 +411,8 @@ void I2dVelocityBiasImpact(benchmark::State& state) {
     float check = 0.0f;
     for (auto _ : state) {
         // Our manifold normal points from the ground (A) to the box (B).
-        BiasBody b{{static_cast<float>(in.a.v.x), static_cast<float>(in.a.v.y)}, static_cast<float>(in.a.w), 1.0f, 6.0f};
+        BiasBody b{
+            {static_cast<float>(in.a.v.x), static_cast<float>(in.a.v.y)}, static_cast<float>(in.a.w), 1.0f, 6.0f};
         benchmark::DoNotOptimize(b);
         const i2d::Vec2 n{0.0f, 1.0f}, t = i2d::rightPerp(n);
         const i2d::Vec2 r{static_cast<float>(in.a.r.x), static_cast<float>(in.a.r.y)};

@@ -26,9 +26,12 @@
 int main(int argc, char** argv) {
     int base = 100, warmup = 30, steps = 10;
     for (int i = 1; i + 1 < argc; i += 2) {
-        if (!std::strcmp(argv[i], "--base")) base = std::atoi(argv[i + 1]);
-        else if (!std::strcmp(argv[i], "--warmup")) warmup = std::atoi(argv[i + 1]);
-        else if (!std::strcmp(argv[i], "--steps")) steps = std::atoi(argv[i + 1]);
+        if (!std::strcmp(argv[i], "--base"))
+            base = std::atoi(argv[i + 1]);
+        else if (!std::strcmp(argv[i], "--warmup"))
+            warmup = std::atoi(argv[i + 1]);
+        else if (!std::strcmp(argv[i], "--steps"))
+            steps = std::atoi(argv[i + 1]);
     }
     i2d::WorldSettings s;
     s.enableSleep = false;
@@ -40,6 +43,7 @@ int main(int argc, char** argv) {
     for (int i = 0; i < steps; ++i) world.step(1.0f / 60.0f);
     CALLGRIND_STOP_INSTRUMENTATION;
     const i2d::Vec2 p = world.position(top);
-    std::printf("{\"base\":%d,\"steps\":%d,\"top_drop\":%.4f,\"top_dx\":%.4f}\n", base, warmup + steps, p0.y - p.y, p.x - p0.x);
+    std::printf("{\"base\":%d,\"steps\":%d,\"top_drop\":%.4f,\"top_dx\":%.4f}\n", base, warmup + steps, p0.y - p.y,
+                p.x - p0.x);
     return 0;
 }

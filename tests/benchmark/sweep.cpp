@@ -196,27 +196,15 @@ std::vector<ScenePlan> plans(bool quick) {
         return p;
     };
     if (quick)
-        return {P("pyramid100", 1.0, 1, 0),
-                P("many_pyramids_small", 2.0, 1, 0),
-                P("tall_stack20", 5.0, 1, 0),
-                P("tall_stack50", 5.0, 1, 0),
-                P("rain1000", 3.0, 1, 0),
-                P("joint_grid", 3.0, 1, 0),
-                P("heavy_chain", 5.0, 1, 0),
-                P("card_house", 5.0, 1, 0, cardNote),
-                P("bounce", 3.0, 1, 0),
-                P("pendulum_wave", 10.0, 1, 0)};
-    return {P("pyramid100", 3.0, 2, 2),
-            P("many_pyramids", 1.5, 2, 1),
-            P("many_pyramids_small", 4.0, 3, 2),
-            P("tall_stack20", 10.0, 3, 2),
-            P("tall_stack50", 10.0, 3, 2),
-            P("rain1000", 5.0, 3, 2),
-            P("joint_grid", 5.0, 3, 2),
-            P("heavy_chain", 10.0, 3, 2),
-            P("card_house", 10.0, 3, 2, cardNote),
-            P("bounce", 4.0, 3, 2),
-            P("pendulum_wave", 30.0, 3, 2)};
+        return {P("pyramid100", 1.0, 1, 0),   P("many_pyramids_small", 2.0, 1, 0),
+                P("tall_stack20", 5.0, 1, 0), P("tall_stack50", 5.0, 1, 0),
+                P("rain1000", 3.0, 1, 0),     P("joint_grid", 3.0, 1, 0),
+                P("heavy_chain", 5.0, 1, 0),  P("card_house", 5.0, 1, 0, cardNote),
+                P("bounce", 3.0, 1, 0),       P("pendulum_wave", 10.0, 1, 0)};
+    return {P("pyramid100", 3.0, 2, 2),    P("many_pyramids", 1.5, 2, 1), P("many_pyramids_small", 4.0, 3, 2),
+            P("tall_stack20", 10.0, 3, 2), P("tall_stack50", 10.0, 3, 2), P("rain1000", 5.0, 3, 2),
+            P("joint_grid", 5.0, 3, 2),    P("heavy_chain", 10.0, 3, 2),  P("card_house", 10.0, 3, 2, cardNote),
+            P("bounce", 4.0, 3, 2),        P("pendulum_wave", 30.0, 3, 2)};
 }
 
 // ------------------------------------------------------------- progress --
@@ -232,8 +220,8 @@ public:
         const double left = frac > 0.01 ? elapsed * (1.0 - frac) / frac : 0.0;
         std::string bar(static_cast<std::size_t>(filled), '#');
         bar.resize(width, '.');
-        std::fprintf(stderr, "\r[%s] %3d%%  %4.0f s, ~%4.0f s left  %-44.44s", bar.c_str(), static_cast<int>(frac * 100),
-                     elapsed, left, what.c_str());
+        std::fprintf(stderr, "\r[%s] %3d%%  %4.0f s, ~%4.0f s left  %-44.44s", bar.c_str(),
+                     static_cast<int>(frac * 100), elapsed, left, what.c_str());
         std::fflush(stderr);
     }
     void finish() { std::fprintf(stderr, "\n"); }
@@ -245,10 +233,10 @@ private:
 
 /// Rough cost of one run, in arbitrary units, to weigh the progress bar.
 double runCost(const Point& p, int bodies, long steps) {
-    double iters = p.engine == EngineKind::box2d
-                       ? p.velocityIterations + p.positionIterations
-                       : (p.correction == i2d::PositionCorrection::soft_step ? p.substeps * 3.0
-                                                                             : p.velocityIterations + p.positionIterations);
+    double iters = p.engine == EngineKind::box2d ? p.velocityIterations + p.positionIterations
+                                                 : (p.correction == i2d::PositionCorrection::soft_step
+                                                        ? p.substeps * 3.0
+                                                        : p.velocityIterations + p.positionIterations);
     return (4.0 + iters) * (bodies + 50) * static_cast<double>(steps);
 }
 
@@ -294,7 +282,9 @@ std::vector<std::size_t> interleavedOrder(const std::vector<Point>& pts, int rep
     std::sort(keyed.begin(), keyed.end());
     std::vector<std::size_t> order;
     for (const auto& k : keyed) order.push_back(k.second);
-    if (!order.empty()) std::rotate(order.begin(), order.begin() + static_cast<long>(repeat) % static_cast<long>(order.size()), order.end());
+    if (!order.empty())
+        std::rotate(order.begin(), order.begin() + static_cast<long>(repeat) % static_cast<long>(order.size()),
+                    order.end());
     return order;
 }
 
@@ -441,19 +431,20 @@ void writeCsv(const std::vector<SceneResult>& results, const std::string& path) 
               << (p.engine == EngineKind::box2d ? "" : correctionName(p.correction)) << ','
               << (p.engine == EngineKind::box2d ? 0 : p.substeps) << ',' << p.velocityIterations << ','
               << p.positionIterations << ',' << (p.engine == EngineKind::box2d ? 0 : p.stiffness) << ','
-              << (p.engine == EngineKind::box2d ? "" : p.impact == i2d::ImpactModel::closed_form ? "closed_form" : "velocity_bias")
-              << ',' << (p.reference ? 1 : 0) << ',' << r.plan.seconds << ',' << r.steps << ','
-              << p.ms.size() << ',' << p.msMedian << ',' << *mn << ',' << *mx << ',' << r.metric << ',' << p.error << ','
-              << r.unit << ',' << (p.collapsed ? 1 : 0) << ',' << (p.nan ? 1 : 0) << ',' << p.displaced << ','
-              << p.maxPenetration << ',' << p.jointError << ',' << r.bodies << '\n';
+              << (p.engine == EngineKind::box2d               ? ""
+                  : p.impact == i2d::ImpactModel::closed_form ? "closed_form"
+                                                              : "velocity_bias")
+              << ',' << (p.reference ? 1 : 0) << ',' << r.plan.seconds << ',' << r.steps << ',' << p.ms.size() << ','
+              << p.msMedian << ',' << *mn << ',' << *mx << ',' << r.metric << ',' << p.error << ',' << r.unit << ','
+              << (p.collapsed ? 1 : 0) << ',' << (p.nan ? 1 : 0) << ',' << p.displaced << ',' << p.maxPenetration << ','
+              << p.jointError << ',' << r.bodies << '\n';
         }
 }
 
 /// Error floor of the log-scale plots (an exact 0 has no place on them).
 constexpr double kPlotFloor = 1e-6;
 
-void writePlots(const std::vector<SceneResult>& results, const std::vector<ScalingRow>& scaling,
-                const Options& o) {
+void writePlots(const std::vector<SceneResult>& results, const std::vector<ScalingRow>& scaling, const Options& o) {
     namespace fs = std::filesystem;
     const std::string dataDir = o.out + "/plot";
     fs::create_directories(dataDir);
@@ -481,15 +472,23 @@ void writePlots(const std::vector<SceneResult>& results, const std::vector<Scali
            << "set title '" << r.plan.name << ": " << r.metric << " against time per step (" << num(r.plan.seconds)
            << " s runs, sleeping off)'\n"
            << "set ylabel '" << r.metric << (r.unit == "1" ? "" : " (" + r.unit + ")") << ", log scale'\n"
-           << "plot '" << d << "_impulse2d.dat' using 1:2 with points pt 7 ps 1.2 lc rgb '#1f77b4' title 'Impulse2D settings', \\\n"
-           << "     '" << d << "_impulse2d_front.dat' using 1:2 with steps lw 2 lc rgb '#1f77b4' title 'Impulse2D front', \\\n"
-           << "     '" << d << "_impulse2d.dat' using ($4 == 1 ? $1 : 1/0):2 with points pt 6 ps 3 lw 2 lc rgb '#1f77b4' title 'Impulse2D defaults', \\\n"
-           << "     '" << d << "_impulse2d_front.dat' using 1:2:3 with labels offset 0,1 font 'sans,8' tc rgb '#1f77b4' notitle";
+           << "plot '" << d
+           << "_impulse2d.dat' using 1:2 with points pt 7 ps 1.2 lc rgb '#1f77b4' title 'Impulse2D settings', \\\n"
+           << "     '" << d
+           << "_impulse2d_front.dat' using 1:2 with steps lw 2 lc rgb '#1f77b4' title 'Impulse2D front', \\\n"
+           << "     '" << d
+           << "_impulse2d.dat' using ($4 == 1 ? $1 : 1/0):2 with points pt 6 ps 3 lw 2 lc rgb '#1f77b4' title 'Impulse2D defaults', \\\n"
+           << "     '" << d
+           << "_impulse2d_front.dat' using 1:2:3 with labels offset 0,1 font 'sans,8' tc rgb '#1f77b4' notitle";
         if (hasBox2D)
-            gp << ", \\\n     '" << d << "_box2d.dat' using 1:2 with points pt 5 ps 1.2 lc rgb '#d62728' title 'Box2D 2.4.1 iterations', \\\n"
-               << "     '" << d << "_box2d_front.dat' using 1:2 with steps lw 2 dt 2 lc rgb '#d62728' title 'Box2D front', \\\n"
-               << "     '" << d << "_box2d.dat' using ($4 == 1 ? $1 : 1/0):2 with points pt 4 ps 3 lw 2 lc rgb '#d62728' title 'Box2D 8/3', \\\n"
-               << "     '" << d << "_box2d.dat' using 1:2:3 with labels offset 0,-1 font 'sans,8' tc rgb '#d62728' notitle";
+            gp << ", \\\n     '" << d
+               << "_box2d.dat' using 1:2 with points pt 5 ps 1.2 lc rgb '#d62728' title 'Box2D 2.4.1 iterations', \\\n"
+               << "     '" << d
+               << "_box2d_front.dat' using 1:2 with steps lw 2 dt 2 lc rgb '#d62728' title 'Box2D front', \\\n"
+               << "     '" << d
+               << "_box2d.dat' using ($4 == 1 ? $1 : 1/0):2 with points pt 4 ps 3 lw 2 lc rgb '#d62728' title 'Box2D 8/3', \\\n"
+               << "     '" << d
+               << "_box2d.dat' using 1:2:3 with labels offset 0,-1 font 'sans,8' tc rgb '#d62728' notitle";
         gp << "\n";
     }
     if (!scaling.empty()) {
@@ -499,8 +498,10 @@ void writePlots(const std::vector<SceneResult>& results, const std::vector<Scali
            << "set title 'ms per step against body count (columns of 10 boxes, sleeping off)'\n"
            << "set xlabel 'dynamic bodies (log scale)'\nset ylabel 'ms per step (median, log scale)'\n"
            << "set key top left box opaque\n"
-           << "plot '" << dataDir << "/scaling.dat' using 1:2 with linespoints pt 7 lw 2 lc rgb '#1f77b4' title 'Impulse2D defaults', \\\n"
-           << "     '" << dataDir << "/scaling.dat' using 1:3 with linespoints pt 5 lw 2 dt 2 lc rgb '#d62728' title 'Box2D 2.4.1 8/3'\n";
+           << "plot '" << dataDir
+           << "/scaling.dat' using 1:2 with linespoints pt 7 lw 2 lc rgb '#1f77b4' title 'Impulse2D defaults', \\\n"
+           << "     '" << dataDir
+           << "/scaling.dat' using 1:3 with linespoints pt 5 lw 2 dt 2 lc rgb '#d62728' title 'Box2D 2.4.1 8/3'\n";
     }
 }
 
@@ -508,7 +509,6 @@ void writePlots(const std::vector<SceneResult>& results, const std::vector<Scali
 
 // The markdown is long but plain: one function, in the order of the document.
 namespace {
-
 
 std::string machineLine() {
     std::string cpu = "unknown CPU";
@@ -523,7 +523,6 @@ std::string machineLine() {
       << "one thread, g++ " << __GNUC__ << "." << __GNUC_MINOR__ << " Release build (-O3)";
     return s.str();
 }
-
 
 /// Why a scene's front is not at or below Box2D's, where the data say so;
 /// filled from what the sweep showed (see docs/performance.md).
@@ -561,8 +560,8 @@ const std::map<std::string, std::string>& shortfallNotes() {
 }
 
 void writeMarkdown(const std::vector<SceneResult>& results, const std::vector<ScalingRow>& scaling,
-                   const std::vector<MemoryRow>& memory, const std::vector<IdleRow>& idle,
-                   const Options& o, double sweepSeconds) {
+                   const std::vector<MemoryRow>& memory, const std::vector<IdleRow>& idle, const Options& o,
+                   double sweepSeconds) {
     std::ofstream md(o.out + "/generated.md");
     md << "## Speed against error (generated)\n\n"
        << "Generated by `scripts/performance.sh" << (o.quick ? " --quick" : "") << "` (the `sweep` program in "
@@ -603,11 +602,12 @@ void writeMarkdown(const std::vector<SceneResult>& results, const std::vector<Sc
         int below = 0;
         for (const Point* p : bf)
             if (bestWithin(r.points, EngineKind::impulse2d, p->msMedian) <= errorOf(*p)) ++below;
-        md << "| " << r.plan.name << " | " << r.bodies << " | " << num(r.plan.seconds) << " s × " << r.plan.repeats << " | "
-           << (a ? num(a->msMedian) : "–") << " | " << (b ? num(b->msMedian) : "–") << " | "
+        md << "| " << r.plan.name << " | " << r.bodies << " | " << num(r.plan.seconds) << " s × " << r.plan.repeats
+           << " | " << (a ? num(a->msMedian) : "–") << " | " << (b ? num(b->msMedian) : "–") << " | "
            << (a && b ? "**" + fmt("%.2f", a->msMedian / b->msMedian) + "**" : "–") << " | "
            << (a ? errText(*a, r.unit) : "–") << " | " << (b ? errText(*b, r.unit) : "–") << " | "
-           << (bf.empty() ? std::string("no Box2D run") : std::to_string(below) + " of " + std::to_string(bf.size()) + " Box2D front points")
+           << (bf.empty() ? std::string("no Box2D run")
+                          : std::to_string(below) + " of " + std::to_string(bf.size()) + " Box2D front points")
            << " |\n";
     }
     md << "\n";
@@ -620,11 +620,12 @@ void writeMarkdown(const std::vector<SceneResult>& results, const std::vector<Sc
         if (!a || !b) break;
         const double ratio = a->msMedian / b->msMedian;
         md << "**Bar: pyramid100.** At its defaults Impulse2D's pyramid " << (a->collapsed ? "**collapses**" : "stands")
-           << " (" << (a->collapsed ? "" : "fewer than 1% of the boxes end more than 0.5 m sideways; ") << "largest excursion "
-           << num(a->error) << " m; " << a->displaced << " boxes end more than 0.5 m from their start, sinking included) and costs **" << fmt("%.2f", ratio) << "×** Box2D 2.4.1's time at 8/3 in the same run (bar: ≤ 0.5×: "
-           << (ratio <= 0.5 ? "met" : "**not met**") << "); Box2D's pyramid at 8/3 "
-           << (b->collapsed ? "does not hold" : "stands") << " (largest excursion " << num(b->error) << " m; "
-           << b->displaced << " boxes end more than 0.5 m from their start).\n\n";
+           << " (" << (a->collapsed ? "" : "fewer than 1% of the boxes end more than 0.5 m sideways; ")
+           << "largest excursion " << num(a->error) << " m; " << a->displaced
+           << " boxes end more than 0.5 m from their start, sinking included) and costs **" << fmt("%.2f", ratio)
+           << "×** Box2D 2.4.1's time at 8/3 in the same run (bar: ≤ 0.5×: " << (ratio <= 0.5 ? "met" : "**not met**")
+           << "); Box2D's pyramid at 8/3 " << (b->collapsed ? "does not hold" : "stands") << " (largest excursion "
+           << num(b->error) << " m; " << b->displaced << " boxes end more than 0.5 m from their start).\n\n";
     }
 
     md << "### Per scene\n\n";
@@ -633,17 +634,17 @@ void writeMarkdown(const std::vector<SceneResult>& results, const std::vector<Sc
         const Point* b = reference(r.points, EngineKind::box2d);
         auto af = front(r.points, EngineKind::impulse2d);
         auto bf = front(r.points, EngineKind::box2d);
-        md << "#### " << r.plan.name << "\n\n![" << r.plan.name << ": " << r.metric << " against ms per step](images/perf_"
-           << r.plan.name << ".png)\n\n";
+        md << "#### " << r.plan.name << "\n\n![" << r.plan.name << ": " << r.metric
+           << " against ms per step](images/perf_" << r.plan.name << ".png)\n\n";
         md << r.description << " (" << r.bodies << " bodies; " << num(r.plan.seconds) << " s per run, "
            << r.plan.repeats << (r.plan.repeats == 1 ? " repeat" : " repeats") << "; metric `" << r.metric << "`). ";
         if (a && b) {
-            md << "At its defaults Impulse2D takes " << num(a->msMedian) << " ms per step, " << fmt("%.2f", a->msMedian / b->msMedian)
-               << "× Box2D's " << num(b->msMedian) << " ms at 8/3, with error " << errText(*a, r.unit) << " against "
-               << errText(*b, r.unit) << ". ";
+            md << "At its defaults Impulse2D takes " << num(a->msMedian) << " ms per step, "
+               << fmt("%.2f", a->msMedian / b->msMedian) << "× Box2D's " << num(b->msMedian)
+               << " ms at 8/3, with error " << errText(*a, r.unit) << " against " << errText(*b, r.unit) << ". ";
         } else if (a) {
-            md << "At its defaults Impulse2D takes " << num(a->msMedian) << " ms per step with error " << errText(*a, r.unit)
-               << ". " << r.plan.box2dNote << " ";
+            md << "At its defaults Impulse2D takes " << num(a->msMedian) << " ms per step with error "
+               << errText(*a, r.unit) << ". " << r.plan.box2dNote << " ";
         }
         if (!af.empty()) {
             const Point* cheap = af.front();
@@ -655,8 +656,9 @@ void writeMarkdown(const std::vector<SceneResult>& results, const std::vector<Sc
         if (!bf.empty()) {
             const Point* cheap = bf.front();
             const Point* best = bf.back();
-            md << "; Box2D's from " << settingsLabel(*cheap) << " (" << num(cheap->msMedian) << " ms, " << errText(*cheap, r.unit)
-               << ") to " << settingsLabel(*best) << " (" << num(best->msMedian) << " ms, " << errText(*best, r.unit) << "). ";
+            md << "; Box2D's from " << settingsLabel(*cheap) << " (" << num(cheap->msMedian) << " ms, "
+               << errText(*cheap, r.unit) << ") to " << settingsLabel(*best) << " (" << num(best->msMedian) << " ms, "
+               << errText(*best, r.unit) << "). ";
             std::vector<const Point*> above;
             for (const Point* p : bf)
                 if (!(bestWithin(r.points, EngineKind::impulse2d, p->msMedian) <= errorOf(*p))) above.push_back(p);
@@ -671,7 +673,8 @@ void writeMarkdown(const std::vector<SceneResult>& results, const std::vector<Sc
                     const double mine = bestWithin(r.points, EngineKind::impulse2d, p->msMedian);
                     md << (k ? "; " : "") << "Box2D " << settingsLabel(*p) << " (" << num(p->msMedian) << " ms, "
                        << errText(*p, r.unit) << ") against Impulse2D's best within that time: "
-                       << (std::isfinite(mine) ? num(mine) + (r.unit == "1" ? "" : " " + r.unit) : "no setting that fast");
+                       << (std::isfinite(mine) ? num(mine) + (r.unit == "1" ? "" : " " + r.unit)
+                                               : "no setting that fast");
                 }
                 md << ".";
                 auto it = shortfallNotes().find(r.plan.name);
@@ -690,8 +693,9 @@ void writeMarkdown(const std::vector<SceneResult>& results, const std::vector<Sc
               "| dynamic bodies | Impulse2D ms/step | Box2D ms/step | ratio | Impulse2D µs per body | Box2D µs per body |\n"
               "|---|---|---|---|---|---|\n";
         for (const ScalingRow& s : scaling)
-            md << "| " << s.bodies << " | " << num(s.ms[0]) << " | " << num(s.ms[1]) << " | " << fmt("%.2f", s.ms[0] / s.ms[1])
-               << " | " << num(1000.0 * s.ms[0] / s.bodies) << " | " << num(1000.0 * s.ms[1] / s.bodies) << " |\n";
+            md << "| " << s.bodies << " | " << num(s.ms[0]) << " | " << num(s.ms[1]) << " | "
+               << fmt("%.2f", s.ms[0] / s.ms[1]) << " | " << num(1000.0 * s.ms[0] / s.bodies) << " | "
+               << num(1000.0 * s.ms[1] / s.bodies) << " |\n";
         md << "\n";
     }
     if (!memory.empty()) {
@@ -709,8 +713,9 @@ void writeMarkdown(const std::vector<SceneResult>& results, const std::vector<Sc
               "for either engine. `memory_footprint` prints the same figures alone.\n\n"
               "| engine | bytes per body | bytes per touching contact | bodies | touching contacts |\n|---|---|---|---|---|\n";
         for (const MemoryRow& m : memory)
-            md << "| " << (m.engine == EngineKind::box2d ? "Box2D 2.4.1" : "Impulse2D") << " | " << fmt("%.0f", m.perBody)
-               << " | " << fmt("%.0f", m.perContact) << " | " << m.bodies << " | " << m.contacts << " |\n";
+            md << "| " << (m.engine == EngineKind::box2d ? "Box2D 2.4.1" : "Impulse2D") << " | "
+               << fmt("%.0f", m.perBody) << " | " << fmt("%.0f", m.perContact) << " | " << m.bodies << " | "
+               << m.contacts << " |\n";
         md << "\n";
     }
     if (!idle.empty()) {
@@ -722,8 +727,9 @@ void writeMarkdown(const std::vector<SceneResult>& results, const std::vector<Sc
               "| world | Impulse2D ms/step | ratio | awake | Box2D ms/step | ratio | awake |\n|---|---|---|---|---|---|---|\n";
         const double base0 = idle.front().ms[0], base1 = idle.front().ms[1];
         for (const IdleRow& r : idle)
-            md << "| " << r.world << " | " << num(r.ms[0]) << " | " << fmt("%.2f", r.ms[0] / base0) << " | " << r.awake[0]
-               << " | " << num(r.ms[1]) << " | " << fmt("%.2f", r.ms[1] / base1) << " | " << r.awake[1] << " |\n";
+            md << "| " << r.world << " | " << num(r.ms[0]) << " | " << fmt("%.2f", r.ms[0] / base0) << " | "
+               << r.awake[0] << " | " << num(r.ms[1]) << " | " << fmt("%.2f", r.ms[1] / base1) << " | " << r.awake[1]
+               << " |\n";
         md << "\n";
     }
 }
@@ -741,17 +747,23 @@ int main(int argc, char** argv) {
             }
             return argv[++i];
         };
-        if (a == "--quick") o.quick = true;
-        else if (a == "--no-scaling") o.scaling = false;
-        else if (a == "--out") o.out = next();
-        else if (a == "--images") o.images = next();
-        else if (a == "--assets") o.assets = next();
+        if (a == "--quick")
+            o.quick = true;
+        else if (a == "--no-scaling")
+            o.scaling = false;
+        else if (a == "--out")
+            o.out = next();
+        else if (a == "--images")
+            o.images = next();
+        else if (a == "--assets")
+            o.assets = next();
         else if (a == "--scenes") {
             std::stringstream ss(next());
             for (std::string s; std::getline(ss, s, ',');) o.scenes.push_back(s);
         } else {
-            std::fprintf(stderr,
-                         "usage: sweep [--quick] [--out DIR] [--images DIR] [--assets DIR] [--scenes a,b,...] [--no-scaling]\n");
+            std::fprintf(
+                stderr,
+                "usage: sweep [--quick] [--out DIR] [--images DIR] [--assets DIR] [--scenes a,b,...] [--no-scaling]\n");
             return a == "--help" || a == "-h" ? 0 : 2;
         }
     }
@@ -793,7 +805,8 @@ int main(int argc, char** argv) {
         for (int rep = 0; rep < r.plan.repeats; ++rep)
             for (std::size_t k : interleavedOrder(r.points, rep)) {
                 Point& p = r.points[k];
-                progress.advance(0.0, r.plan.name + " " + std::string(tb::engineName(p.engine)) + " " + settingsLabel(p));
+                progress.advance(0.0,
+                                 r.plan.name + " " + std::string(tb::engineName(p.engine)) + " " + settingsLabel(p));
                 tb::RunReport rep_ = runPoint(descs[s], p, r.steps);
                 p.ms.push_back(rep_.msMedian);
                 if (rep == 0) {
@@ -842,17 +855,17 @@ int main(int argc, char** argv) {
             const std::size_t scattered = heldBytes(columnsScene(memBodies, false), kind, 2, nullptr);
             const std::size_t columns = heldBytes(columnsScene(memBodies, true), kind, 2, &m.contacts);
             m.perBody = static_cast<double>(scattered) / memBodies;
-            m.perContact = m.contacts > 0 ? (static_cast<double>(columns) - static_cast<double>(scattered)) / m.contacts : 0.0;
+            m.perContact = m.contacts > 0 ? (static_cast<double>(columns) - static_cast<double>(scattered)) / m.contacts
+                                          : 0.0;
             memory.push_back(m);
         }
         // Long enough that the resting columns sleep for most of the run
         // (the median step is then a step with them asleep).
         const long idleSteps = 300;
         const int idleRepeats = o.quick ? 1 : 3;
-        const std::pair<const char*, tb::SceneDesc> worlds[] = {
-            {"100 awake alone", idleScene(0, false)},
-            {"+ 10,000 static", idleScene(10000, false)},
-            {"+ 10,000 sleeping", idleScene(10000, true)}};
+        const std::pair<const char*, tb::SceneDesc> worlds[] = {{"100 awake alone", idleScene(0, false)},
+                                                                {"+ 10,000 static", idleScene(10000, false)},
+                                                                {"+ 10,000 sleeping", idleScene(10000, true)}};
         std::vector<double> ms[3][2];
         int awake[3][2] = {};
         for (int rep = 0; rep < idleRepeats; ++rep)
@@ -879,11 +892,13 @@ int main(int argc, char** argv) {
         std::ofstream m(o.out + "/memory.csv");
         m << "engine,bytes_per_body,bytes_per_touching_contact,bodies,touching_contacts\n";
         for (const MemoryRow& r : memory)
-            m << tb::engineName(r.engine) << ',' << r.perBody << ',' << r.perContact << ',' << r.bodies << ',' << r.contacts << '\n';
+            m << tb::engineName(r.engine) << ',' << r.perBody << ',' << r.perContact << ',' << r.bodies << ','
+              << r.contacts << '\n';
         std::ofstream id(o.out + "/idle.csv");
         id << "world,impulse2d_ms_per_step,box2d_ms_per_step,impulse2d_awake,box2d_awake\n";
         for (const IdleRow& r : idle)
-            id << '"' << r.world << "\"," << r.ms[0] << ',' << r.ms[1] << ',' << r.awake[0] << ',' << r.awake[1] << '\n';
+            id << '"' << r.world << "\"," << r.ms[0] << ',' << r.ms[1] << ',' << r.awake[0] << ',' << r.awake[1]
+               << '\n';
     }
     writePlots(results, scaling, o);
     writeMarkdown(results, scaling, memory, idle, o, seconds);

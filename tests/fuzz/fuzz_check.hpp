@@ -7,12 +7,12 @@
 
 #include <impulse2d/impulse2d.hpp>
 
-#define I2D_FUZZ_CHECK(cond)                                                              \
-    do {                                                                                  \
-        if (!(cond)) {                                                                    \
-            std::fprintf(stderr, "%s:%d: property violated: %s\n", __FILE__, __LINE__, #cond); \
-            std::abort();                                                                 \
-        }                                                                                 \
+#define I2D_FUZZ_CHECK(cond)                                                                                           \
+    do {                                                                                                               \
+        if (!(cond)) {                                                                                                 \
+            std::fprintf(stderr, "%s:%d: property violated: %s\n", __FILE__, __LINE__, #cond);                         \
+            std::abort();                                                                                              \
+        }                                                                                                              \
     } while (false)
 
 namespace i2d::fuzz {

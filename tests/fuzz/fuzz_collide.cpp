@@ -27,9 +27,7 @@ struct AnyShape {
 };
 
 float size(fuzz::ByteReader& in) { return in.real(0.01f, 5.0f); }
-Vec2 point(fuzz::ByteReader& in, float r) {
-    return {in.real(-r, r), in.real(-r, r)};
-}
+Vec2 point(fuzz::ByteReader& in, float r) { return {in.real(-r, r), in.real(-r, r)}; }
 
 AnyShape makeShape(fuzz::ByteReader& in, Kind kind) {
     AnyShape s;
@@ -66,9 +64,20 @@ AnyShape makeShape(fuzz::ByteReader& in, Kind kind) {
 // The shape as GJK sees it: core points and radius.
 int corePoints(const AnyShape& s, Vec2* out, float& radius) {
     switch (s.kind) {
-        case kCircle: out[0] = s.circle.center; radius = s.circle.radius; return 1;
-        case kCapsule: out[0] = s.capsule.center1; out[1] = s.capsule.center2; radius = s.capsule.radius; return 2;
-        case kSegment: out[0] = s.segment.point1; out[1] = s.segment.point2; radius = 0.0f; return 2;
+        case kCircle:
+            out[0] = s.circle.center;
+            radius = s.circle.radius;
+            return 1;
+        case kCapsule:
+            out[0] = s.capsule.center1;
+            out[1] = s.capsule.center2;
+            radius = s.capsule.radius;
+            return 2;
+        case kSegment:
+            out[0] = s.segment.point1;
+            out[1] = s.segment.point2;
+            radius = 0.0f;
+            return 2;
         case kPolygon:
             for (int i = 0; i < s.polygon.count; ++i) out[i] = s.polygon.vertices[i];
             radius = s.polygon.radius;
@@ -99,9 +108,9 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
     fuzz::ByteReader in(data, size);
     // The pairs the narrowphase dispatches: A's kind ≥ B's kind (circle <
     // capsule < polygon), segments only as A and never against segments.
-    static constexpr Kind kPairs[][2] = {{kCircle, kCircle},   {kCapsule, kCircle},  {kCapsule, kCapsule},
-                                         {kPolygon, kCircle},  {kPolygon, kCapsule}, {kPolygon, kPolygon},
-                                         {kSegment, kCircle},  {kSegment, kCapsule}, {kSegment, kPolygon}};
+    static constexpr Kind kPairs[][2] = {{kCircle, kCircle},  {kCapsule, kCircle},  {kCapsule, kCapsule},
+                                         {kPolygon, kCircle}, {kPolygon, kCapsule}, {kPolygon, kPolygon},
+                                         {kSegment, kCircle}, {kSegment, kCapsule}, {kSegment, kPolygon}};
     const auto& pair = kPairs[in.integer<int>(0, 8)];
     const AnyShape a = makeShape(in, pair[0]);
     const AnyShape b = makeShape(in, pair[1]);

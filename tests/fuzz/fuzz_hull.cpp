@@ -28,8 +28,7 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
             // Any float at all, NaN and infinities included.
             points.push_back({in.anyFloat(), in.anyFloat()});
         } else {
-            points.push_back({offset.x + scale * in.real(-1.0f, 1.0f),
-                              offset.y + scale * in.real(-1.0f, 1.0f)});
+            points.push_back({offset.x + scale * in.real(-1.0f, 1.0f), offset.y + scale * in.real(-1.0f, 1.0f)});
         }
     }
     const Hull hull = computeHull(points);
@@ -48,10 +47,11 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
         Vec2 e = normalize(b - a);
         for (Vec2 p : points) {
             if (cross(e, p - a) < -tol) {
-                std::fprintf(stderr, "point (%.9g, %.9g) is %.9g outside edge (%.9g, %.9g)-(%.9g, %.9g); tol %.9g\n", p.x, p.y,
-                             -cross(e, p - a), a.x, a.y, b.x, b.y, tol);
+                std::fprintf(stderr, "point (%.9g, %.9g) is %.9g outside edge (%.9g, %.9g)-(%.9g, %.9g); tol %.9g\n",
+                             p.x, p.y, -cross(e, p - a), a.x, a.y, b.x, b.y, tol);
                 for (Vec2 q : points) std::fprintf(stderr, "  input (%.9g, %.9g)\n", q.x, q.y);
-                for (int k = 0; k < hull.count; ++k) std::fprintf(stderr, "  hull (%.9g, %.9g)\n", hull.points[k].x, hull.points[k].y);
+                for (int k = 0; k < hull.count; ++k)
+                    std::fprintf(stderr, "  hull (%.9g, %.9g)\n", hull.points[k].x, hull.points[k].y);
             }
             I2D_FUZZ_CHECK(cross(e, p - a) >= -tol);
         }
@@ -59,7 +59,8 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
     auto poly = makePolygon(hull);
     I2D_FUZZ_CHECK(poly.has_value());
     MassData md = computeMass(*poly, 1.0f);
-    I2D_FUZZ_CHECK(isFinite(md.mass) && md.mass > 0.0f && isFinite(md.rotationalInertia) && md.rotationalInertia >= 0.0f);
+    I2D_FUZZ_CHECK(isFinite(md.mass) && md.mass > 0.0f && isFinite(md.rotationalInertia) &&
+                   md.rotationalInertia >= 0.0f);
     I2D_FUZZ_CHECK(isFinite(md.center) && containsPoint(*poly, md.center));
 
     // The world takes what makePolygon built unless it is thinner than its

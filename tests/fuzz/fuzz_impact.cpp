@@ -53,7 +53,8 @@ void dump(const ImpactInput& in) {
         std::fprintf(stderr, "%s: invMass %.17g invInertia %.17g r (%.17g, %.17g) v (%.17g, %.17g) w %.17g\n", name,
                      b.invMass, b.invInertia, b.r.x, b.r.y, b.v.x, b.v.y, b.w);
     };
-    std::fprintf(stderr, "e %.17g mu %.17g normal (%.17g, %.17g)\n", in.restitution, in.friction, in.normal.x, in.normal.y);
+    std::fprintf(stderr, "e %.17g mu %.17g normal (%.17g, %.17g)\n", in.restitution, in.friction, in.normal.x,
+                 in.normal.y);
     body("a", in.a);
     body("b", in.b);
 }

@@ -75,8 +75,16 @@ struct Driver {
         ShapeDef def{.density = maybeBad(0.0f, 10.0f), .friction = range(0.0f, 1.5f), .restitution = range(0.0f, 1.0f)};
         def.isSensor = in.integer(0, 9) == 0;
         switch (in.integer(0, 3)) {
-            case 0: attempt([&] { world.createCircleShape(b, def, {vec(1.0f), maybeBad(0.02f, 3.0f)}); }, __LINE__); break;
-            case 1: attempt([&] { world.createCapsuleShape(b, def, {vec(1.0f), vec(1.0f), maybeBad(0.02f, 1.0f)}); }, __LINE__); break;
+            case 0:
+                attempt([&] { world.createCircleShape(b, def, {vec(1.0f), maybeBad(0.02f, 3.0f)}); }, __LINE__);
+                break;
+            case 1:
+                attempt(
+                    [&] {
+                        world.createCapsuleShape(b, def, {vec(1.0f), vec(1.0f), maybeBad(0.02f, 1.0f)});
+                    },
+                    __LINE__);
+                break;
             case 2: {
                 std::vector<Vec2> pts;
                 int n = in.integer(3, 8);
@@ -98,7 +106,9 @@ struct Driver {
     void createBody() {
         if (live.size() >= 64) return;
         int t = in.integer(0, 9);
-        BodyDef def{.type = t == 0 ? BodyType::static_body : t == 1 ? BodyType::kinematic_body : BodyType::dynamic_body,
+        BodyDef def{.type = t == 0   ? BodyType::static_body
+                            : t == 1 ? BodyType::kinematic_body
+                                     : BodyType::dynamic_body,
                     .position = {maybeBad(-20.0f, 20.0f), range(-2.0f, 30.0f)},
                     .angle = range(-4.0f, 4.0f),
                     .linearVelocity = vec(20.0f),
@@ -150,22 +160,46 @@ struct Driver {
         BodyId b = pickLive();
         if (trace) std::fprintf(stderr, "body %u:\n", b.index1);
         switch (in.integer(0, 12)) {
-            case 0: attempt([&] { world.applyLinearImpulse(b, {maybeBad(-50, 50), maybeBad(-50, 50)}, vec(30.0f)); }, __LINE__); break;
-            case 1: attempt([&] { world.applyForceToCenter(b, {maybeBad(-1e3f, 1e3f), maybeBad(-1e3f, 1e3f)}); }, __LINE__); break;
+            case 0:
+                attempt(
+                    [&] {
+                        world.applyLinearImpulse(b, {maybeBad(-50, 50), maybeBad(-50, 50)}, vec(30.0f));
+                    },
+                    __LINE__);
+                break;
+            case 1:
+                attempt([&] { world.applyForceToCenter(b, {maybeBad(-1e3f, 1e3f), maybeBad(-1e3f, 1e3f)}); }, __LINE__);
+                break;
             case 2: attempt([&] { world.applyTorque(b, maybeBad(-100, 100)); }, __LINE__); break;
             case 3: attempt([&] { world.applyAngularImpulse(b, maybeBad(-10, 10)); }, __LINE__); break;
-            case 4: attempt([&] { world.setLinearVelocity(b, {maybeBad(-50, 50), maybeBad(-50, 50)}); }, __LINE__); break;
+            case 4:
+                attempt([&] { world.setLinearVelocity(b, {maybeBad(-50, 50), maybeBad(-50, 50)}); }, __LINE__);
+                break;
             case 5: attempt([&] { world.setAngularVelocity(b, maybeBad(-50, 50)); }, __LINE__); break;
-            case 6: attempt([&] { world.setTransform(b, {maybeBad(-20, 20), maybeBad(-2, 30)}, maybeBad(-4, 4)); }, __LINE__); break;
+            case 6:
+                attempt(
+                    [&] {
+                        world.setTransform(b, {maybeBad(-20, 20), maybeBad(-2, 30)}, maybeBad(-4, 4));
+                    },
+                    __LINE__);
+                break;
             case 7: attempt([&] { world.setBodyType(b, static_cast<BodyType>(in.integer(0, 2))); }, __LINE__); break;
             case 8: attempt([&] { world.setAwake(b, in.flag()); }, __LINE__); break;
             case 9: {
                 auto shapes = world.bodyShapes(b);
-                if (!shapes.empty()) world.destroyShape(shapes[in.integer<std::size_t>(0, shapes.size() - 1)]);
-                else addShape(b);
+                if (!shapes.empty())
+                    world.destroyShape(shapes[in.integer<std::size_t>(0, shapes.size() - 1)]);
+                else
+                    addShape(b);
                 break;
             }
-            case 10: attempt([&] { world.setMassData(b, {maybeBad(0.01f, 100), vec(1.0f), maybeBad(0.0f, 100)}); }, __LINE__); break;
+            case 10:
+                attempt(
+                    [&] {
+                        world.setMassData(b, {maybeBad(0.01f, 100), vec(1.0f), maybeBad(0.0f, 100)});
+                    },
+                    __LINE__);
+                break;
             case 11: attempt([&] { world.setGravityScale(b, maybeBad(-2, 2)); }, __LINE__); break;
             default: attempt([&] { world.setFixedRotation(b, in.flag()); }, __LINE__); break;
         }
@@ -184,10 +218,17 @@ struct Driver {
             return;
         }
         if (live.size() < 2) return;
-        DistanceJointDef def{.bodyA = pickLive(), .bodyB = pickLive(), .localAnchorA = vec(0.5f), .localAnchorB = vec(0.5f),
-                             .length = maybeBad(0.1f, 5.0f), .enableSpring = in.flag(),
-                             .hertz = range(0.0f, 10.0f), .dampingRatio = range(0.0f, 2.0f), .enableLimit = in.flag(),
-                             .minLength = range(0.0f, 2.0f), .maxLength = range(2.0f, 6.0f)};
+        DistanceJointDef def{.bodyA = pickLive(),
+                             .bodyB = pickLive(),
+                             .localAnchorA = vec(0.5f),
+                             .localAnchorB = vec(0.5f),
+                             .length = maybeBad(0.1f, 5.0f),
+                             .enableSpring = in.flag(),
+                             .hertz = range(0.0f, 10.0f),
+                             .dampingRatio = range(0.0f, 2.0f),
+                             .enableLimit = in.flag(),
+                             .minLength = range(0.0f, 2.0f),
+                             .maxLength = range(2.0f, 6.0f)};
         attempt([&] { joints.push_back(world.createDistanceJoint(def)); }, __LINE__);
     }
 
@@ -253,7 +294,10 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
             case 5: d.poke(); break;
             case 6: d.joint(); break;
             case 7: d.settings(); break;
-            default: d.step(); ++steps; break;
+            default:
+                d.step();
+                ++steps;
+                break;
         }
     }
     for (int i = 0; i < 10; ++i) d.step();

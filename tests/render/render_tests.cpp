@@ -157,9 +157,9 @@ TEST(Image, ContactSheetPlacesThumbnailsInAGrid) {
     tb::Image sheet = tb::contactSheet(frames, 3, 32, 4, 0x000000FFu);
     EXPECT_EQ(sheet.width, 4 + 3 * (32 + 4));
     EXPECT_EQ(sheet.height, 4 + 2 * (18 + 4));
-    EXPECT_EQ(sheet.pixel(4 + 10, 4 + 5)[1], 255);             // frame 0: green
-    EXPECT_EQ(sheet.pixel(4 + 36 + 10, 4 + 5)[0], 255);        // frame 1: red
-    EXPECT_EQ(sheet.pixel(4 + 36 + 10, 4 + 22 + 5)[0], 0);     // frame 4 (row 2, col 2): green
+    EXPECT_EQ(sheet.pixel(4 + 10, 4 + 5)[1], 255);          // frame 0: green
+    EXPECT_EQ(sheet.pixel(4 + 36 + 10, 4 + 5)[0], 255);     // frame 1: red
+    EXPECT_EQ(sheet.pixel(4 + 36 + 10, 4 + 22 + 5)[0], 0);  // frame 4 (row 2, col 2): green
     EXPECT_EQ(sheet.pixel(4 + 36 + 10, 4 + 22 + 5)[1], 255);
     EXPECT_EQ(sheet.pixel(sheet.width - 2, sheet.height - 2)[1], 0);  // empty cell: background
 }
@@ -416,7 +416,8 @@ TEST(ViewCommand, BadArgumentsAreUsageErrors) {
 }
 
 TEST(Viewer, TakesAScreenshotUnderXvfbAndQuits) {
-    if (tb::findInPath("xvfb-run").empty()) GTEST_SKIP() << "xvfb-run is not installed (Debian package xvfb): no X server to open the viewer on";
+    if (tb::findInPath("xvfb-run").empty())
+        GTEST_SKIP() << "xvfb-run is not installed (Debian package xvfb): no X server to open the viewer on";
     fs::path shot = workDir("view") / "shot.png";
     std::string cmd = std::string("xvfb-run -a -s '-screen 0 1280x1024x24' '") + TB_VIEW_PROBE +
                       "' --size 640x360 --frames 5 --screenshot '" + shot.string() + "'";

@@ -87,9 +87,10 @@ int main(int argc, char** argv) {
         }
         const long endKiB = residentKiB();
         const bool grew = endKiB - warmKiB > allowedGrowthKiB;
-        std::printf("%s: %ld steps (%.0f s), sleep %s, finite %s, RSS start %ld KiB, after warm-up %ld KiB, end %ld KiB, peak %ld KiB%s\n",
-                    name.c_str(), steps, steps * desc.dt, desc.settings.enableSleep ? "on" : "off", finite ? "yes" : "NO",
-                    startKiB, warmKiB, endKiB, peakKiB, grew ? "  GREW" : "");
+        std::printf(
+            "%s: %ld steps (%.0f s), sleep %s, finite %s, RSS start %ld KiB, after warm-up %ld KiB, end %ld KiB, peak %ld KiB%s\n",
+            name.c_str(), steps, steps * desc.dt, desc.settings.enableSleep ? "on" : "off", finite ? "yes" : "NO",
+            startKiB, warmKiB, endKiB, peakKiB, grew ? "  GREW" : "");
         std::fflush(stdout);
         if (!finite || grew) ++failures;
     }

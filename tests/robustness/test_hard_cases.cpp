@@ -26,7 +26,8 @@ float maxSpeed(const World& world, const std::vector<BodyId>& bodies) {
 
 bool allFinite(const World& world) {
     for (BodyId b : world.bodies())
-        if (!isFinite(world.position(b)) || !isFinite(world.linearVelocity(b)) || !std::isfinite(world.angularVelocity(b)))
+        if (!isFinite(world.position(b)) || !isFinite(world.linearVelocity(b)) ||
+            !std::isfinite(world.angularVelocity(b)))
             return false;
     return true;
 }
@@ -65,8 +66,9 @@ PileResult pileOfHundred(PositionCorrection mode) {
 
 TEST(HardCases, HundredBoxesAtOnePointSeparateAndRestWithSplitImpulses) {
     PileResult r = pileOfHundred(PositionCorrection::split);
-    std::printf("[figure] 100 boxes at one point, split: peak speed %.2f m/s, asleep after %.2f s, closest centres %.3f m\n",
-                r.peakSpeed, r.restTime, r.minDistance);
+    std::printf(
+        "[figure] 100 boxes at one point, split: peak speed %.2f m/s, asleep after %.2f s, closest centres %.3f m\n",
+        r.peakSpeed, r.restTime, r.minDistance);
     ASSERT_TRUE(r.finite);
     // 20 m/s: the speed of a free fall from 20 m, four times the height at
     // which the boxes are created; faster would be energy from the solver,
@@ -110,8 +112,9 @@ TEST(HardCases, BodyDeepInsideTheGroundIsPushedOutNotLaunched) {
     }
     ASSERT_TRUE(allFinite(world));
     const float finalY = world.position(box).y;
-    std::printf("[figure] box 0.9 m deep in the ground: peak upward speed %.3f m/s, highest centre %.4f m, final %.4f m\n",
-                peakUp, topY, finalY);
+    std::printf(
+        "[figure] box 0.9 m deep in the ground: peak upward speed %.3f m/s, highest centre %.4f m, final %.4f m\n",
+        peakUp, topY, finalY);
     // Resting on top: centre at the half-extent 0.5 m, within 1 cm (slop 5 mm plus soft-contact sag).
     EXPECT_NEAR(finalY, 0.5f, 0.01f);
     // Not launched: never more than 5 cm above its resting height, and never
@@ -154,8 +157,9 @@ StackResult heavyTopStack() {
 
 TEST(HardCases, StackOfTwentyWithHeavyTopCollapsesBoundedly) {
     StackResult r = heavyTopStack();
-    std::printf("[figure] stack 20, top 100x heavier: top dropped 0.5 m after %.2f s, top at y %.3f after 10 s, peak speed %.2f m/s\n",
-                r.fallTime, r.topY, r.peakSpeed);
+    std::printf(
+        "[figure] stack 20, top 100x heavier: top dropped 0.5 m after %.2f s, top at y %.3f after 10 s, peak speed %.2f m/s\n",
+        r.fallTime, r.topY, r.peakSpeed);
     ASSERT_TRUE(r.finite);
     // Free fall from the top box's height gives √(2·10·19.5) = 19.7 m/s; a
     // collapse may reach it (measured 20.6 m/s: the heavy box lands on
@@ -209,7 +213,8 @@ TEST(HardCases, ChainHoldsABodyAThousandTimesHeavier) {
     std::vector<JointId> joints;
     BodyId previous = anchor;
     for (int i = 0; i < 10; ++i) {
-        BodyId link = world.createBody({.type = BodyType::dynamic_body, .position = {0.0f, 20.0f - linkLength * (i + 1)}});
+        BodyId link = world.createBody(
+            {.type = BodyType::dynamic_body, .position = {0.0f, 20.0f - linkLength * (i + 1)}});
         // 1 kg: capsule area 2·r·L + π r² with r = 0.05, L = 0.4 is 0.0479 m².
         world.createCapsuleShape(link, {.density = 1.0f / 0.0478540f}, {{0.0f, -0.2f}, {0.0f, 0.2f}, 0.05f});
         joints.push_back(world.createDistanceJoint({.bodyA = previous, .bodyB = link, .length = linkLength}));
@@ -218,12 +223,13 @@ TEST(HardCases, ChainHoldsABodyAThousandTimesHeavier) {
     }
     BodyId heavy = world.createBody({.type = BodyType::dynamic_body, .position = {0.0f, 20.0f - linkLength * 11}});
     world.createCircleShape(heavy, {.density = 1.0f}, {{0.0f, 0.0f}, 0.5f});
-    world.setMassData(heavy, {.mass = 1000.0f, .center = {}, .rotationalInertia = 125.0f});  // 1000 kg, a solid disc of r 0.5
+    world.setMassData(heavy,
+                      {.mass = 1000.0f, .center = {}, .rotationalInertia = 125.0f});  // 1000 kg, a solid disc of r 0.5
     joints.push_back(world.createDistanceJoint({.bodyA = previous, .bodyB = heavy, .length = linkLength}));
     world.applyLinearImpulseToCenter(heavy, {5000.0f, 0.0f});  // 5 m/s sideways
 
-    float worstStretch = 0.0f;   // largest relative length error of one joint
-    float worstTotal = 0.0f;     // largest relative error of the anchor–heavy distance
+    float worstStretch = 0.0f;  // largest relative length error of one joint
+    float worstTotal = 0.0f;    // largest relative error of the anchor–heavy distance
     for (int step = 0; step < 10 * 60; ++step) {
         world.step(kDt);
         float total = 0.0f;
@@ -235,8 +241,9 @@ TEST(HardCases, ChainHoldsABodyAThousandTimesHeavier) {
         worstTotal = std::max(worstTotal, std::abs(total - 11 * linkLength) / (11 * linkLength));
     }
     ASSERT_TRUE(allFinite(world));
-    std::printf("[figure] chain of 10 x 1 kg holding 1000 kg, 10 s swinging: worst joint stretch %.2f%%, worst chain length error %.2f%%\n",
-                100.0f * worstStretch, 100.0f * worstTotal);
+    std::printf(
+        "[figure] chain of 10 x 1 kg holding 1000 kg, 10 s swinging: worst joint stretch %.2f%%, worst chain length error %.2f%%\n",
+        100.0f * worstStretch, 100.0f * worstTotal);
     // Known weakness, documented in docs/robustness.md: at 4 substeps the
     // chain stretches to about three times its length (joint 214%, chain
     // 194% measured) and then holds there; at 8 or more substeps ~50%.
@@ -255,7 +262,8 @@ bool tunnels(float speed, bool continuous) {
     World world(WorldSettings{.gravity = {0.0f, 0.0f}, .enableContinuous = continuous});
     BodyId wall = world.createBody({.position = {5.0f, 0.0f}});
     world.createPolygonShape(wall, {}, makeBox(0.05f, 2.0f));  // 10 cm thick
-    BodyId ball = world.createBody({.type = BodyType::dynamic_body, .position = {0.0f, 0.0f}, .linearVelocity = {speed, 0.0f}});
+    BodyId ball = world.createBody(
+        {.type = BodyType::dynamic_body, .position = {0.0f, 0.0f}, .linearVelocity = {speed, 0.0f}});
     world.createCircleShape(ball, {}, {{0.0f, 0.0f}, 0.05f});  // 10 cm across
     for (int step = 0; step < 120; ++step) {
         world.step(kDt);
@@ -295,8 +303,8 @@ TEST(HardCases, WorldFarFromTheOriginBehavesLikeAtTheOrigin) {
         const int base = 10;
         for (int row = 0; row < base; ++row)
             for (int i = 0; i < base - row; ++i)
-                boxes.push_back(test::makeBox(
-                    world, offset + Vec2{(i - 0.5f * (base - row - 1)) * 1.05f, 0.5f + row * 1.0f}));
+                boxes.push_back(
+                    test::makeBox(world, offset + Vec2{(i - 0.5f * (base - row - 1)) * 1.05f, 0.5f + row * 1.0f}));
         for (int step = 0; step < 5 * 60; ++step) world.step(kDt);
         std::vector<Vec2> relative;
         for (BodyId b : boxes) relative.push_back(world.position(b) - offset);
@@ -306,7 +314,8 @@ TEST(HardCases, WorldFarFromTheOriginBehavesLikeAtTheOrigin) {
     const std::vector<Vec2> far = settle({1.0e4f, 0.0f});
     float worst = 0.0f;
     for (std::size_t i = 0; i < near.size(); ++i) worst = std::max(worst, distance(near[i], far[i]));
-    std::printf("[figure] pyramid of 55 boxes at x = 0 and x = 1e4 m after 5 s: largest position difference %.4f m\n", worst);
+    std::printf("[figure] pyramid of 55 boxes at x = 0 and x = 1e4 m after 5 s: largest position difference %.4f m\n",
+                worst);
     // 1 cm: ten times the float spacing at 1e4 m (0.98 mm), the resolution
     // with which the far world can even place a box.
     EXPECT_LT(worst, 0.01f);

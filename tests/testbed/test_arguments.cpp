@@ -37,11 +37,16 @@ TEST(ArgReader, WalksOptionsValuesAndPlainArguments) {
     double seconds = 1;
     bool json = false;
     while (r.next()) {
-        if (r.is("--steps")) steps = r.integer(0, 100);
-        else if (r.is("--seconds")) seconds = r.number(-1, 1);
-        else if (r.is("--json")) json = true;
-        else if (r.isOption()) r.rejectUnknownOption();
-        else plain.push_back(r.current());
+        if (r.is("--steps"))
+            steps = r.integer(0, 100);
+        else if (r.is("--seconds"))
+            seconds = r.number(-1, 1);
+        else if (r.is("--json"))
+            json = true;
+        else if (r.isOption())
+            r.rejectUnknownOption();
+        else
+            plain.push_back(r.current());
     }
     EXPECT_EQ(steps, 12);
     EXPECT_EQ(seconds, 0.0);

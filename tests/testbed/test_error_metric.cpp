@@ -55,12 +55,10 @@ tb::BodyDesc bodyDesc(const std::string& name, i2d::BodyType type, float restitu
 
 TEST(ErrorMetric, EveryBenchmarkSceneReportsItsMetricInTheJson) {
     const std::vector<std::pair<std::string, std::string>> expected = {
-        {"pyramid100", "max_excursion"},    {"many_pyramids", "max_excursion"},
-        {"many_pyramids_small", "max_excursion"}, {"tall_stack20", "max_sway"},
-        {"tall_stack50", "max_sway"},       {"card_house", "max_excursion"},
-        {"rain1000", "max_penetration"},    {"joint_grid", "joint_stretch"},
-        {"heavy_chain", "joint_stretch"},   {"bounce", "rebound_error"},
-        {"pendulum_wave", "energy_drift"},
+        {"pyramid100", "max_excursion"}, {"many_pyramids", "max_excursion"}, {"many_pyramids_small", "max_excursion"},
+        {"tall_stack20", "max_sway"},    {"tall_stack50", "max_sway"},       {"card_house", "max_excursion"},
+        {"rain1000", "max_penetration"}, {"joint_grid", "joint_stretch"},    {"heavy_chain", "joint_stretch"},
+        {"bounce", "rebound_error"},     {"pendulum_wave", "energy_drift"},
     };
     for (const auto& [scene, metric] : expected) {
         std::ostringstream out, err;
@@ -116,7 +114,8 @@ TEST(ErrorMetric, ReboundErrorFromTheApexOfTheFirstRebound) {
     tb::ErrorTracker t(desc, tb::ErrorMetric::rebound_error);
     t.start(sim);
     // (y, vy) after each step: fall, touch, rise to 2.5, fall again lower than the start of the rise.
-    const float path[][2] = {{4, -4}, {2, -8}, {1, -2}, {1.2f, 3}, {2.0f, 2}, {2.5f, 0.5f}, {2.4f, -1}, {0.5f, -6}, {3.0f, 6}};
+    const float path[][2] = {{4, -4},      {2, -8},    {1, -2},    {1.2f, 3}, {2.0f, 2},
+                             {2.5f, 0.5f}, {2.4f, -1}, {0.5f, -6}, {3.0f, 6}};
     for (const auto& p : path) {
         sim.bodies[1].y = p[0];
         sim.bodies[1].vy = p[1];

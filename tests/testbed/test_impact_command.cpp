@@ -23,10 +23,9 @@ CommandRun run(const std::string& input) {
 
 // The DecompressionEnded hand case of test_impact.cpp: a particle sliding on
 // the ground, μ = 1/4, e = 1/2, v = (1, −2): v' = (1/4, 1), p = (−3/4, 3).
-const char* kOne =
-    R"({"e":0.5,"mu":0.25,"normal":[0,1],)"
-    R"("a":{"inv_mass":1,"inv_inertia":0,"r":[0,0],"v":[1,-2],"w":0},)"
-    R"("b":{"inv_mass":0,"inv_inertia":0,"r":[0,0],"v":[0,0],"w":0}})";
+const char* kOne = R"({"e":0.5,"mu":0.25,"normal":[0,1],)"
+                   R"("a":{"inv_mass":1,"inv_inertia":0,"r":[0,0],"v":[1,-2],"w":0},)"
+                   R"("b":{"inv_mass":0,"inv_inertia":0,"r":[0,0],"v":[0,0],"w":0}})";
 
 }  // namespace
 
@@ -61,14 +60,14 @@ TEST(ImpactCommand, InvalidInputFails) {
         return s;
     };
     for (const std::string& bad : {
-             std::string("{\"e\":0.5,"),                        // malformed JSON
-             replaced("\"e\":0.5,", ""),                        // missing field
-             replaced("\"e\":0.5,", "\"e\":0.5,\"x\":1,"),      // unknown field
-             replaced("\"mu\":0.25", "\"mu\":\"0.25\""),        // wrong type
+             std::string("{\"e\":0.5,"),                          // malformed JSON
+             replaced("\"e\":0.5,", ""),                          // missing field
+             replaced("\"e\":0.5,", "\"e\":0.5,\"x\":1,"),        // unknown field
+             replaced("\"mu\":0.25", "\"mu\":\"0.25\""),          // wrong type
              replaced("\"normal\":[0,1]", "\"normal\":[0,1,2]"),  // wrong length
-             replaced("\"normal\":[0,1]", "\"normal\":[0,2]"),  // resolveImpact refuses
-             replaced("\"e\":0.5", "\"e\":1.5"),                // resolveImpact refuses
-             std::string("[") + one + ",3]",                    // bad element in an array
+             replaced("\"normal\":[0,1]", "\"normal\":[0,2]"),    // resolveImpact refuses
+             replaced("\"e\":0.5", "\"e\":1.5"),                  // resolveImpact refuses
+             std::string("[") + one + ",3]",                      // bad element in an array
          }) {
         const CommandRun r = run(bad);
         EXPECT_NE(r.code, 0) << bad;

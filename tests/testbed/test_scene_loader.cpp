@@ -106,7 +106,8 @@ TEST(SceneLoader, NonFiniteAndHugeNumbers) {
 
 TEST(SceneLoader, MissingRequiredField) {
     expectError(R"({"description": "no bodies"})", {"missing required field 'bodies'"});
-    expectError(scene(R"({"shapes": [{"type": "circle"}]})"), {"bodies[0].shapes[0]", "missing required field 'radius'"});
+    expectError(scene(R"({"shapes": [{"type": "circle"}]})"),
+                {"bodies[0].shapes[0]", "missing required field 'radius'"});
     expectError(scene(R"({"shapes": [{"radius": 1}]})"), {"bodies[0].shapes[0]", "missing required field 'type'"});
     expectError(scene(kBall, R"("joints": [{"body_a": "ball"}], )"), {"joints[0]", "missing required field 'body_b'"});
 }
@@ -121,8 +122,9 @@ TEST(SceneLoader, UnknownBodyInJoint) {
     expectError(scene(two, R"("joints": [{"body_a": "anchor", "body_b": "ball", "anchor_b": [0, 2]}], )"),
                 {"joints[0]", "anchors are 0 m apart"});
     // Chain attachments are resolved the same way.
-    expectError(scene(R"({"generator": "chain", "count": 2, "step": [1, 0], "body": {}, "attach_start": {"body": "nail"}})"),
-                {"bodies[0].attach_start.body", "unknown body name 'nail'"});
+    expectError(
+        scene(R"({"generator": "chain", "count": 2, "step": [1, 0], "body": {}, "attach_start": {"body": "nail"}})"),
+        {"bodies[0].attach_start.body", "unknown body name 'nail'"});
 }
 
 TEST(SceneLoader, DegenerateGeometry) {
@@ -134,7 +136,8 @@ TEST(SceneLoader, DegenerateGeometry) {
                 {"bodies[0].shapes[0].points", "3 to 8 points"});
     expectError(scene(R"({"shapes": [{"type": "segment", "point1": [0, 0], "point2": [0, 0]}]})"),
                 {"bodies[0].shapes[0].point2", "closer than 0.005 m"});
-    expectError(scene(R"({"shapes": [{"type": "box", "hx": 0, "hy": 1}]})"), {"bodies[0].shapes[0].hx", "out of range"});
+    expectError(scene(R"({"shapes": [{"type": "box", "hx": 0, "hy": 1}]})"),
+                {"bodies[0].shapes[0].hx", "out of range"});
 }
 
 TEST(SceneLoader, DuplicateBodyNameAndTemplateName) {
@@ -181,7 +184,7 @@ TEST(SceneLoader, GeneratorsExpand) {
     const tb::DistanceJointDesc& attach = d.joints[7];
     EXPECT_EQ(attach.bodyA, 0);
     EXPECT_EQ(attach.bodyB, 13);
-    EXPECT_NEAR(attach.def.length, 0.2f, 1e-5f);  // (−0.6, 10) to link0's (−0.4, 10)
+    EXPECT_NEAR(attach.def.length, 0.2f, 1e-5f);       // (−0.6, 10) to link0's (−0.4, 10)
     EXPECT_NEAR(d.joints[8].def.length, 0.2f, 1e-5f);  // 0.4 → 0.6 between link0 and link1
 }
 
@@ -221,11 +224,28 @@ TEST(SceneLoader, MissingFileAndUnknownScene) {
 
 TEST(ShippedScenes, ListedWithDescriptions) {
     auto scenes = tb::listScenes(kAssets);
-    std::vector<std::string> expected = {"stack5", "stack5_overlap", "funnel", "pendulum_wave", "pendulum_grid",
-                                         "pyramid20", "pyramid100", "tall_stack20", "tall_stack50", "card_house",
-                                         "dominoes", "newtons_cradle", "bridge", "heavy_chain", "rain1000",
-                                         "many_pyramids", "many_pyramids_small", "joint_grid", "bullets",
-                                         "spinning_rod", "incline", "bounce"};
+    std::vector<std::string> expected = {"stack5",
+                                         "stack5_overlap",
+                                         "funnel",
+                                         "pendulum_wave",
+                                         "pendulum_grid",
+                                         "pyramid20",
+                                         "pyramid100",
+                                         "tall_stack20",
+                                         "tall_stack50",
+                                         "card_house",
+                                         "dominoes",
+                                         "newtons_cradle",
+                                         "bridge",
+                                         "heavy_chain",
+                                         "rain1000",
+                                         "many_pyramids",
+                                         "many_pyramids_small",
+                                         "joint_grid",
+                                         "bullets",
+                                         "spinning_rod",
+                                         "incline",
+                                         "bounce"};
     for (const auto& name : expected) {
         auto it = std::find_if(scenes.begin(), scenes.end(), [&](const auto& s) { return s.first == name; });
         ASSERT_NE(it, scenes.end()) << name;

@@ -117,8 +117,8 @@ TEST(RunCommand, Box2DReportHasTheSameFields) {
 }
 
 TEST(RunCommand, Box2DIterationsFromTheCommandLine) {
-    tb::RunOptions o = tb::parseRunOptions({"x", "--engine", "box2d", "--velocity-iterations", "16",
-                                            "--position-iterations", "6"});
+    tb::RunOptions o = tb::parseRunOptions(
+        {"x", "--engine", "box2d", "--velocity-iterations", "16", "--position-iterations", "6"});
     EXPECT_EQ(o.engine, tb::EngineKind::box2d);
     EXPECT_EQ(o.box2dSettings().velocityIterations, 16);
     EXPECT_EQ(o.box2dSettings().positionIterations, 6);

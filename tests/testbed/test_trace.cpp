@@ -220,9 +220,8 @@ TEST(Plot, TwoTracesGiveChartsWithOneLinePerEngine) {
         if (std::string(engine) == "box2d" && !tb::box2dAvailable()) continue;
         const std::string csv = (dir / (std::string(engine) + ".csv")).string();
         std::ostringstream out, err;
-        ASSERT_EQ(tb::runRunCommand({"stack5", "--steps", "60", "--engine", engine, "--trace", csv, "--assets",
-                                     kAssets},
-                                    out, err),
+        ASSERT_EQ(tb::runRunCommand(
+                      {"stack5", "--steps", "60", "--engine", engine, "--trace", csv, "--assets", kAssets}, out, err),
                   0)
             << err.str();
         traces.push_back(csv);
@@ -231,8 +230,8 @@ TEST(Plot, TwoTracesGiveChartsWithOneLinePerEngine) {
     args.insert(args.end(), {"--out", (dir / "plots").string(), "--size", "640x360"});
     std::ostringstream out, err;
     ASSERT_EQ(tb::runPlotCommand(args, out, err), 0) << err.str();
-    for (const char* file : {"energy.png", "penetration.png", "speed.png", "joint_error.png", "body_bottom.png",
-                             "summary.png"}) {
+    for (const char* file :
+         {"energy.png", "penetration.png", "speed.png", "joint_error.png", "body_bottom.png", "summary.png"}) {
         const fs::path png = dir / "plots" / file;
         ASSERT_TRUE(fs::exists(png)) << png;
         std::ifstream in(png, std::ios::binary);

@@ -12,7 +12,7 @@ namespace i2d_test {
 
 struct OracleResult {
     bool colliding = false;
-    i2d::Vec2d impulse{};   ///< received by A, world frame
+    i2d::Vec2d impulse{};  ///< received by A, world frame
     i2d::Vec2d vA{}, vB{};
     double wA = 0.0, wB = 0.0;
     /// Step in the normal impulse used by the final pass (N·s). The oracle's
@@ -20,9 +20,9 @@ struct OracleResult {
     /// the exact one by h·d with 0 ≤ h < step and d = dp/dp_n of the final
     /// segment (|d| ≤ sqrt(1 + μ²)).
     double step = 0.0;
-    int steps = 0;          ///< steps taken by the final pass
+    int steps = 0;                 ///< steps taken by the final pass
     bool reachedSticking = false;  ///< slip became 0 at some point
-    bool failed = false;    ///< the march did not end (should never happen)
+    bool failed = false;           ///< the march did not end (should never happen)
 };
 
 /// March the impact with about `targetSteps` steps over the whole impulse.

@@ -24,8 +24,8 @@ Shot shootAtWall(float speed, float radius, bool continuous, float dt = 1.0f / 6
     World world(s);
     BodyId wall = world.createBody({.position = {10.05f, 0.0f}});
     world.createPolygonShape(wall, {}, makeBox(0.05f, 5.0f));
-    BodyId bullet = world.createBody({.type = BodyType::dynamic_body, .position = {0.0f, 0.3f},
-                                      .linearVelocity = {speed, 0.0f}});
+    BodyId bullet = world.createBody(
+        {.type = BodyType::dynamic_body, .position = {0.0f, 0.3f}, .linearVelocity = {speed, 0.0f}});
     world.createCircleShape(bullet, {.density = 4.0f}, {{0.0f, 0.0f}, radius});
     Shot shot;
     for (int i = 0; i < 120; ++i) {
@@ -63,8 +63,8 @@ TEST(Continuous, FastSlidingIsNotStalled) {
     s.enableSleep = false;
     World world(s);
     test::makeGround(world, 100.0f, 0.0f);
-    BodyId box = world.createBody({.type = BodyType::dynamic_body, .position = {-50.0f, 0.1f},
-                                   .linearVelocity = {30.0f, 0.0f}});
+    BodyId box = world.createBody(
+        {.type = BodyType::dynamic_body, .position = {-50.0f, 0.1f}, .linearVelocity = {30.0f, 0.0f}});
     world.createPolygonShape(box, {.friction = 0.0f}, makeBox(0.1f, 0.1f));
     for (int i = 0; i < 30; ++i) world.step(1.0f / 60.0f);
     // Frictionless, horizontal: the exact travel is 30 · 0.5 = 15 m; allow 1%.
@@ -82,8 +82,10 @@ float spinningRodFurthestX(bool continuous) {
     World world(s);
     BodyId wall = world.createBody({.position = {5.02f, 0.0f}});
     world.createPolygonShape(wall, {}, makeBox(0.02f, 20.0f));
-    BodyId rod = world.createBody({.type = BodyType::dynamic_body, .position = {0.0f, 0.0f},
-                                   .linearVelocity = {20.0f, 0.0f}, .angularVelocity = 60.0f});
+    BodyId rod = world.createBody({.type = BodyType::dynamic_body,
+                                   .position = {0.0f, 0.0f},
+                                   .linearVelocity = {20.0f, 0.0f},
+                                   .angularVelocity = 60.0f});
     const Polygon shape = makeBox(1.0f, 0.02f);
     world.createPolygonShape(rod, {}, shape);
     float furthest = -1.0e30f;

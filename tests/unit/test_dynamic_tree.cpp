@@ -99,7 +99,8 @@ TEST(DynamicTree, WorldPairsMatchBruteForceOnRandomMovingBodies) {
     i2d::World world({.gravity = {0, 0}});
     std::vector<i2d::BodyId> bodies;
     for (int i = 0; i < 200; ++i) {
-        i2d::BodyId b = world.createBody({.type = i2d::BodyType::dynamic_body, .position = {pos(rng), pos(rng)},
+        i2d::BodyId b = world.createBody({.type = i2d::BodyType::dynamic_body,
+                                          .position = {pos(rng), pos(rng)},
                                           .linearVelocity = {vel(rng), vel(rng)}});
         world.createCircleShape(b, {.filter = {.groupIndex = -1}}, {{0, 0}, 0.5f});
         bodies.push_back(b);

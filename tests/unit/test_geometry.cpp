@@ -301,7 +301,8 @@ TEST(Mass, CapsuleDecomposition) {
     //   πr⁴/4 + L·∫x' + (L²/4)·πr²/2, with ∫x' = 2r³/3 over the half-disk.
     double mRect = rho * 2.0 * r * L;
     double Irect = mRect * (double(L) * L + 4.0 * r * r) / 12.0;
-    double Jcaps = 2.0 * (kPi * std::pow(r, 4) / 4.0 + L * 2.0 * std::pow(r, 3) / 3.0 + L * L / 4.0 * kPi * r * r / 2.0);
+    double Jcaps = 2.0 *
+                   (kPi * std::pow(r, 4) / 4.0 + L * 2.0 * std::pow(r, 3) / 3.0 + L * L / 4.0 * kPi * r * r / 2.0);
     double m = mRect + rho * kPi * r * r;
     EXPECT_NEAR(md.mass, m, kRel * m);
     EXPECT_NEAR(md.center.x, 0.0f, 1e-6f);

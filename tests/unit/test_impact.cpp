@@ -7,11 +7,11 @@
 
 #include <algorithm>
 #include <cmath>
-#include <string>
-#include <utility>
 #include <limits>
 #include <random>
 #include <sstream>
+#include <string>
+#include <utility>
 #include <vector>
 
 #include "impulse2d/error.hpp"
@@ -25,7 +25,6 @@ using i2d::ImpactCase;
 using i2d::ImpactInput;
 using i2d::ImpactResult;
 using i2d::Vec2d;
-
 
 double dot(Vec2d a, Vec2d b) { return a.x * b.x + a.y * b.y; }
 double cross(Vec2d a, Vec2d b) { return a.x * b.y - a.y * b.x; }
@@ -399,8 +398,8 @@ TEST(ImpactRandom, AgreesWithOracle) {
         worstRatio = std::max(worstRatio, err / tol);
         // Same path: the slip reaches 0 exactly in the branches that say so.
         const bool sticks = r.kind == ImpactCase::converging_compression ||
-                            r.kind == ImpactCase::converging_decompression ||
-                            r.kind == ImpactCase::stable_sticking || r.kind == ImpactCase::unstable_sticking;
+                            r.kind == ImpactCase::converging_decompression || r.kind == ImpactCase::stable_sticking ||
+                            r.kind == ImpactCase::unstable_sticking;
         EXPECT_EQ(o.reachedSticking, sticks) << "case " << i << " kind " << i2d::toString(r.kind);
     }
     // Every colliding branch must have been exercised by the random set.
@@ -503,7 +502,8 @@ TEST(ImpactRandom, FrictionlessIsNewtonRestitution) {
                    1e-12 * (norm(in.b.v) + in.b.invMass * std::abs(j)), "vB");
         // Newton: the normal separation velocity becomes −e times the approach one.
         EXPECT_NEAR(dot(separation(in, r), n), -in.restitution * dot(separation(in), n),
-                    1e-11 * (std::abs(dot(separation(in), n)) + 10.0)) << "case " << i;
+                    1e-11 * (std::abs(dot(separation(in), n)) + 10.0))
+            << "case " << i;
     }
 }
 

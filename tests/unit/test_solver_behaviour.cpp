@@ -90,17 +90,22 @@ TEST(SolverBehaviour, ChainHoldsAHundredTimesHeavierWeight) {
     auto join = [&](BodyId body, Vec2 anchor) {
         Vec2 pa = transformPoint(world.transform(prev), prevAnchor);
         Vec2 pb = transformPoint(world.transform(body), anchor);
-        joints.push_back(world.createDistanceJoint(
-            {.bodyA = prev, .bodyB = body, .localAnchorA = prevAnchor, .localAnchorB = anchor, .length = length(pb - pa)}));
+        joints.push_back(world.createDistanceJoint({.bodyA = prev,
+                                                    .bodyB = body,
+                                                    .localAnchorA = prevAnchor,
+                                                    .localAnchorB = anchor,
+                                                    .length = length(pb - pa)}));
     };
     for (int i = 0; i < 20; ++i) {
-        BodyId link = world.createBody({.type = BodyType::dynamic_body, .position = {0.0f, 19.7f - 0.5f * static_cast<float>(i)}});
+        BodyId link = world.createBody(
+            {.type = BodyType::dynamic_body, .position = {0.0f, 19.7f - 0.5f * static_cast<float>(i)}});
         world.createPolygonShape(link, {.density = 6.25f, .filter = noSelf}, makeBox(0.1f, 0.2f));
         join(link, {0.0f, 0.2f});
         prev = link;
         prevAnchor = {0.0f, -0.2f};
     }
-    BodyId weight = world.createBody({.type = BodyType::dynamic_body, .position = {0.0f, 9.4f}, .linearVelocity = {3.0f, 0.0f}});
+    BodyId weight = world.createBody(
+        {.type = BodyType::dynamic_body, .position = {0.0f, 9.4f}, .linearVelocity = {3.0f, 0.0f}});
     world.createPolygonShape(weight, {.density = 100.0f}, makeBox(0.5f, 0.5f));
     join(weight, {0.0f, 0.5f});
     float stretch = 0.0f;
@@ -146,9 +151,10 @@ TEST(SolverBehaviour, SameCallsGiveBitIdenticalState) {
         World world;
         test::makeGround(world);
         for (int i = 0; i < 30; ++i) {
-            BodyId b = world.createBody({.type = BodyType::dynamic_body,
-                                         .position = {0.3f * static_cast<float>(i % 5), 1.0f + 1.1f * static_cast<float>(i)},
-                                         .angle = 0.1f * static_cast<float>(i)});
+            BodyId b = world.createBody(
+                {.type = BodyType::dynamic_body,
+                 .position = {0.3f * static_cast<float>(i % 5), 1.0f + 1.1f * static_cast<float>(i)},
+                 .angle = 0.1f * static_cast<float>(i)});
             if (i % 2)
                 world.createCircleShape(b, {.restitution = 0.3f}, {{0, 0}, 0.4f});
             else
@@ -237,7 +243,8 @@ TEST(SolverBehaviour, BodiesCreatedAsleepStayAsleepUntilTouched) {
 }
 
 TEST(SolverBehaviour, EveryPositionCorrectionModeHoldsABoxOnTheGround) {
-    for (PositionCorrection mode : {PositionCorrection::baumgarte, PositionCorrection::split, PositionCorrection::soft_step}) {
+    for (PositionCorrection mode :
+         {PositionCorrection::baumgarte, PositionCorrection::split, PositionCorrection::soft_step}) {
         WorldSettings s;
         s.positionCorrection = mode;
         World world(s);
@@ -264,7 +271,8 @@ TEST(SolverBehaviour, SplitPushAddsNoKineticEnergyToAnOverlappingStack) {
         World world(s);
         test::makeGround(world);
         std::vector<BodyId> boxes;
-        for (int i = 0; i < 5; ++i) boxes.push_back(test::makeBox(world, {0.0f, 0.6f + 1.6f * static_cast<float>(i)}, 1.2f, 1.2f / 5.76f));
+        for (int i = 0; i < 5; ++i)
+            boxes.push_back(test::makeBox(world, {0.0f, 0.6f + 1.6f * static_cast<float>(i)}, 1.2f, 1.2f / 5.76f));
         float peak = 0.0f;
         for (int i = 0; i < 60; ++i) {
             world.step(kDt);

@@ -193,7 +193,8 @@ TEST(WorldApi, RayCastsAndQueries) {
 TEST(WorldApi, FilteredShapesDoNotCollide) {
     World world;
     BodyId ground = world.createBody({});
-    world.createPolygonShape(ground, {.filter = {.categoryBits = 1, .maskBits = 0xFFFF}}, makeOffsetBox(10, 1, {0, -1}, 0));
+    world.createPolygonShape(ground, {.filter = {.categoryBits = 1, .maskBits = 0xFFFF}},
+                             makeOffsetBox(10, 1, {0, -1}, 0));
     BodyId ghost = world.createBody({.type = BodyType::dynamic_body, .position = {0, 1}});
     world.createCircleShape(ghost, {.filter = {.categoryBits = 2, .maskBits = 0xFFFF & ~1u}}, {{0, 0}, 0.5f});
     for (int i = 0; i < 60; ++i) world.step(1.0f / 60.0f);

@@ -77,7 +77,8 @@ TEST(WorldImpacts, NewtonsCradlePassesTheMomentumAlong) {
     std::vector<BodyId> balls;
     for (int i = 0; i < 5; ++i) {
         // Touching neighbours (centres 1 m apart, radius 0.5); the first ball starts 1 m back.
-        BodyId b = world.createBody({.type = BodyType::dynamic_body, .position = {static_cast<float>(i) - (i == 0 ? 1.0f : 0.0f), 0}});
+        BodyId b = world.createBody(
+            {.type = BodyType::dynamic_body, .position = {static_cast<float>(i) - (i == 0 ? 1.0f : 0.0f), 0}});
         world.createCircleShape(b, {.friction = 0.0f, .restitution = 1.0f}, {{0, 0}, 0.5f});
         balls.push_back(b);
     }
@@ -85,7 +86,8 @@ TEST(WorldImpacts, NewtonsCradlePassesTheMomentumAlong) {
     for (int i = 0; i < 60; ++i) world.step(1.0f / 60.0f);
     // One ball in, one ball out: the elastic law between equal masses swaps
     // velocities exactly, and the sweep passes it down the line (float rounding).
-    for (int i = 0; i < 4; ++i) EXPECT_NEAR(world.linearVelocity(balls[static_cast<std::size_t>(i)]).x, 0.0f, 1e-4f) << i;
+    for (int i = 0; i < 4; ++i)
+        EXPECT_NEAR(world.linearVelocity(balls[static_cast<std::size_t>(i)]).x, 0.0f, 1e-4f) << i;
     EXPECT_NEAR(world.linearVelocity(balls[4]).x, 2.0f, 1e-4f);
 }
 
@@ -121,8 +123,11 @@ TEST(WorldImpacts, ObliqueSpinningRodGainsEnergyOnlyUnderTheBiasModel) {
         world.createPolygonShape(ground, {.friction = 1.46f, .restitution = 0.96f}, makeOffsetBox(50, 1, {0, -1}, 0));
         const float angle = 1.47f, hx = 0.33f, hy = 0.05f;
         float lowest = std::abs(std::sin(angle)) * hx + std::abs(std::cos(angle)) * hy;
-        BodyId rod = world.createBody({.type = BodyType::dynamic_body, .position = {0, lowest + 0.001f}, .angle = angle,
-                                       .linearVelocity = {-4.23f, -3.72f}, .angularVelocity = 13.68f});
+        BodyId rod = world.createBody({.type = BodyType::dynamic_body,
+                                       .position = {0, lowest + 0.001f},
+                                       .angle = angle,
+                                       .linearVelocity = {-4.23f, -3.72f},
+                                       .angularVelocity = 13.68f});
         world.createPolygonShape(rod, {.friction = 1.46f, .restitution = 0.96f}, makeBox(hx, hy));
         double k0 = kineticEnergy(world, rod), peak = k0;
         for (int i = 0; i < 20; ++i) {
@@ -133,6 +138,6 @@ TEST(WorldImpacts, ObliqueSpinningRodGainsEnergyOnlyUnderTheBiasModel) {
     };
     double bias = peakRatio(ImpactModel::velocity_bias);
     double law = peakRatio(ImpactModel::closed_form);
-    EXPECT_GT(bias, 1.05);           // the bias model creates over 5 % energy here
-    EXPECT_LE(law, 1.0 + 1e-5);      // the law never does (float rounding of ½mv²)
+    EXPECT_GT(bias, 1.05);       // the bias model creates over 5 % energy here
+    EXPECT_LE(law, 1.0 + 1e-5);  // the law never does (float rounding of ½mv²)
 }

@@ -12,7 +12,8 @@ inline BodyId makeGround(World& world, float halfWidth = 50.0f, float friction =
     return ground;
 }
 
-inline BodyId makeBox(World& world, Vec2 position, float halfExtent = 0.5f, float density = 1.0f, float friction = 0.6f) {
+inline BodyId makeBox(World& world, Vec2 position, float halfExtent = 0.5f, float density = 1.0f,
+                      float friction = 0.6f) {
     BodyId body = world.createBody({.type = BodyType::dynamic_body, .position = position});
     world.createPolygonShape(body, {.density = density, .friction = friction}, i2d::makeBox(halfExtent, halfExtent));
     return body;

@@ -26,8 +26,8 @@ namespace {
 using tb::EngineKind;
 
 constexpr double kPi = 3.14159265358979323846;
-constexpr double kG = 10.0;           // |g| of every scene here (m/s²)
-constexpr float kDt = 1.0f / 60.0f;   // every scene here steps at 60 Hz
+constexpr double kG = 10.0;          // |g| of every scene here (m/s²)
+constexpr float kDt = 1.0f / 60.0f;  // every scene here steps at 60 Hz
 // Float spacing (ulp) at 1: 2⁻²³. Rounding bounds below are written as
 // multiples of the ulp of the largest magnitude involved.
 constexpr double kEps = 1.1920928955078125e-07;
@@ -270,8 +270,8 @@ double pendulumTheory(double length, double degrees) {
 double downSlope(const tb::BodySample& s, double theta) { return -(s.x * std::cos(theta) + s.y * std::sin(theta)); }
 
 /// Acceleration (m/s²) down the slope of body NAME, fitted over [t0, t1].
-double slopeAcceleration(const tb::SceneDesc& desc, EngineKind kind, const std::string& name, double theta,
-                         double t0, double t1) {
+double slopeAcceleration(const tb::SceneDesc& desc, EngineKind kind, const std::string& name, double theta, double t0,
+                         double t1) {
     const int i = indexOf(desc, name);
     auto sim = make(desc, kind);
     std::vector<double> ts, ss;
@@ -466,7 +466,8 @@ double implicitEulerPeriod(double h) {
 double spinningRodEnergyRatio(EngineKind kind) {
     tb::SceneDesc d = emptyScene("spinning_rod", {0.0f, 0.0f});
     const float hx = 0.5f, hy = 0.002f, angle = static_cast<float>(kPi / 4.0);
-    tb::BodyDesc ground = body("ground", i2d::BodyType::static_body, {0.0f, -1.0f}, {boxShape(20.0f, 1.0f, 1.0f, 0.5f, 1.0f)});
+    tb::BodyDesc ground = body("ground", i2d::BodyType::static_body, {0.0f, -1.0f},
+                               {boxShape(20.0f, 1.0f, 1.0f, 0.5f, 1.0f)});
     d.bodies.push_back(ground);
     // Lowest corner (−hx, −hy) rotated by 45° lies at (−hx cos − (−hy) sin, ...); put it at y = +1e-4.
     const double lowest = -(hx * std::sin(angle) + hy * std::cos(angle));
@@ -491,9 +492,9 @@ double spinningRodEnergyRatio(EngineKind kind) {
 // Stacks and pyramids (shipped scenes), through tb::runScene
 
 struct StackFigures {
-    double topY = kNone;     ///< the body named `top`: final height of its origin (m)
-    double topDx = kNone;    ///< its largest horizontal excursion |x − x0| (m)
-    int displaced = -1;      ///< bodies that moved more than 0.5 m
+    double topY = kNone;   ///< the body named `top`: final height of its origin (m)
+    double topDx = kNone;  ///< its largest horizontal excursion |x − x0| (m)
+    int displaced = -1;    ///< bodies that moved more than 0.5 m
 };
 
 StackFigures stackRun(const tb::SceneDesc& desc, EngineKind kind, double seconds) {
@@ -726,11 +727,11 @@ std::vector<Case> allCases(const std::string& assetsDir) {
             const char* name;  ///< the ball in the scene
             const char* tag;   ///< e in the case id
             double e;
-            int n;             ///< apex number
+            int n;  ///< apex number
         };
-        for (B b : {B{"e0.25", "025", 0.25, 1}, B{"e0.5", "05", 0.5, 1}, B{"e0.5", "05", 0.5, 2}, B{"e0.5", "05", 0.5, 3},
-                    B{"e0.75", "075", 0.75, 1}, B{"e0.75", "075", 0.75, 2}, B{"e0.75", "075", 0.75, 3},
-                    B{"e1", "1", 1.0, 1}, B{"e1", "1", 1.0, 3}}) {
+        for (B b : {B{"e0.25", "025", 0.25, 1}, B{"e0.5", "05", 0.5, 1}, B{"e0.5", "05", 0.5, 2},
+                    B{"e0.5", "05", 0.5, 3}, B{"e0.75", "075", 0.75, 1}, B{"e0.75", "075", 0.75, 2},
+                    B{"e0.75", "075", 0.75, 3}, B{"e1", "1", 1.0, 1}, B{"e1", "1", 1.0, 3}}) {
             Case c;
             const std::string e = std::string(b.name).substr(1);
             c.id = std::string("bounce_e") + b.tag + "_h" + std::to_string(b.n);
@@ -904,8 +905,9 @@ std::vector<Case> allCases(const std::string& assetsDir) {
         c.analytic = 0.848487 / 1.166667;
         c.measure = spinningRodEnergyRatio;
         c.impulse2d.tolerance = 0.01;
-        c.impulse2d.why = "0.01: the 4 mm thick box's corner lies 2 mm (0.4 % of the 0.5 m lever arm) off the ideal rod's "
-                          "end, and its inertia differs by 2e-5";
+        c.impulse2d.why =
+            "0.01: the 4 mm thick box's corner lies 2 mm (0.4 % of the 0.5 m lever arm) off the ideal rod's "
+            "end, and its inertia differs by 2e-5";
         c.box2d.reference = 1.821997 / 1.166667;
         c.box2d.tolerance = 0.1;
         c.box2d.asserted = false;
@@ -941,7 +943,8 @@ std::vector<Case> allCases(const std::string& assetsDir) {
             const double w = 2.0 * kPi * 30.0;
             c.impulse2d.tolerance = 0.005 * s.layers + kG / (w * w) * s.layers * (s.layers + 1) / 2.0;
             c.impulse2d.why = "soft contacts: per layer the 5 mm slop plus the 30 Hz contact spring's compression "
-                              "under the k boxes above, k g/ω², summed over " + std::to_string(s.layers) + " layers";
+                              "under the k boxes above, k g/ω², summed over " +
+                              std::to_string(s.layers) + " layers";
             c.box2d.reference = s.rigidTop + skin * s.layers;
             c.box2d.tolerance = 0.005 * s.layers;
             c.box2d.why = "held against rigid + 1.5 cm per layer (1 cm skin each side, 5 mm rest depth); ≤ 5 mm per "

@@ -71,7 +71,8 @@ int main(int argc, char** argv) {
         }
     }
     if (!tb::box2dAvailable()) {
-        std::cerr << "validation_report: this build has no Box2D 2.4.1 backend (install libbox2d-dev and reconfigure)\n";
+        std::cerr
+            << "validation_report: this build has no Box2D 2.4.1 backend (install libbox2d-dev and reconfigure)\n";
         return 1;
     }
 
@@ -147,8 +148,8 @@ int main(int argc, char** argv) {
             const val::Check& ch = r.c->check(k);
             const Result& res = k == tb::EngineKind::box2d ? r.b : r.i;
             if (ch.knownIssue.empty() || res.within) continue;
-            md << "- `" << r.c->id << "` (" << (k == tb::EngineKind::box2d ? "Box2D" : "Impulse2D") << "): "
-               << (issues.insert(ch.knownIssue).second ? ch.knownIssue : "as above.") << "\n";
+            md << "- `" << r.c->id << "` (" << (k == tb::EngineKind::box2d ? "Box2D" : "Impulse2D")
+               << "): " << (issues.insert(ch.knownIssue).second ? ch.knownIssue : "as above.") << "\n";
         }
     md << "\nWith one substep, Impulse2D's free fall and Box2D's differ by at most "
        << num(val::oneSubstepFreeFallDifference())

@@ -120,17 +120,17 @@ enum class BodyType : std::uint8_t {
 /// Everything World::createBody needs; the defaults make a static body at the origin.
 struct BodyDef {
     BodyType type = BodyType::static_body;
-    Vec2 position{};  ///< body origin, world (m)
-    float angle = 0.0f;  ///< radians, counter-clockwise
-    Vec2 linearVelocity{};  ///< of the centre of mass (m/s)
+    Vec2 position{};               ///< body origin, world (m)
+    float angle = 0.0f;            ///< radians, counter-clockwise
+    Vec2 linearVelocity{};         ///< of the centre of mass (m/s)
     float angularVelocity = 0.0f;  ///< rad/s
-    float linearDamping = 0.0f;  ///< 1/s, ≥ 0
-    float angularDamping = 0.0f;  ///< 1/s, ≥ 0
-    float gravityScale = 1.0f;  ///< multiplies the world's gravity for this body
-    bool fixedRotation = false;  ///< no rotation (infinite rotational inertia)
-    bool isAwake = true;  ///< false: created asleep (when sleep is enabled)
-    bool enableSleep = true;  ///< false: this body never sleeps
-    std::uintptr_t userData = 0;  ///< any value of the game's; never read by the engine
+    float linearDamping = 0.0f;    ///< 1/s, ≥ 0
+    float angularDamping = 0.0f;   ///< 1/s, ≥ 0
+    float gravityScale = 1.0f;     ///< multiplies the world's gravity for this body
+    bool fixedRotation = false;    ///< no rotation (infinite rotational inertia)
+    bool isAwake = true;           ///< false: created asleep (when sleep is enabled)
+    bool enableSleep = true;       ///< false: this body never sleeps
+    std::uintptr_t userData = 0;   ///< any value of the game's; never read by the engine
 };
 
 /// Which shapes may collide. Two shapes collide when each one's category is
@@ -154,7 +154,7 @@ struct ShapeDef {
     float friction = 0.6f;     ///< Coulomb coefficient μ ≥ 0
     float restitution = 0.0f;  ///< coefficient of restitution e ∈ [0, 1]
     Filter filter{};
-    bool isSensor = false;     ///< detects overlap, makes no contact
+    bool isSensor = false;            ///< detects overlap, makes no contact
     bool enableContactEvents = true;  ///< report contact begin/end events for this shape
     bool enableSensorEvents = true;   ///< a sensor: report sensor events
     std::uintptr_t userData = 0;
@@ -173,7 +173,7 @@ struct DistanceJointDef {
     Vec2 localAnchorB{};
     float length = 1.0f;  ///< rest length (m), > 0
     bool enableSpring = false;
-    float hertz = 0.0f;   ///< spring frequency (Hz), ≥ 0; 0 = no spring force
+    float hertz = 0.0f;         ///< spring frequency (Hz), ≥ 0; 0 = no spring force
     float dampingRatio = 0.0f;  ///< ≥ 0
     bool enableLimit = false;
     float minLength = 0.0f;
@@ -212,7 +212,7 @@ struct ContactData {
     ShapeId shapeA{};
     ShapeId shapeB{};
     Manifold manifold{};
-    float normalImpulse[2]{};   ///< accumulated over the last step (N·s)
+    float normalImpulse[2]{};  ///< accumulated over the last step (N·s)
     float tangentImpulse[2]{};
 };
 
