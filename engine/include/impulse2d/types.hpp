@@ -14,6 +14,7 @@
 
 #include "impulse2d/collision.hpp"
 #include "impulse2d/id.hpp"
+#include "impulse2d/joints.hpp"
 #include "impulse2d/math.hpp"
 
 namespace i2d {
@@ -162,12 +163,6 @@ struct ShapeDef {
 
 enum class ShapeType : std::uint8_t { circle, capsule, segment, polygon };
 
-/// Distance constraint of Tamis and Maggiore (2015) §5.2 between two anchor points. Rigid by
-/// default; with enableSpring it becomes a spring of the given frequency and
-/// damping ratio; with enableLimit its length is kept within
-/// [minLength, maxLength] (a rope: enableSpring with hertz 0 and a limit).
-struct DistanceJointDef {
-    BodyId bodyA{};
     BodyId bodyB{};
     Vec2 localAnchorA{};  ///< relative to body A's origin, body frame
     Vec2 localAnchorB{};

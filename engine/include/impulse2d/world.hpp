@@ -294,32 +294,109 @@ public:
     AABB shapeAABB(ShapeId id) const;
 
     // ---- Joints ---------------------------------------------------------
+    // Creating a joint (locked) wakes both bodies; unless collideConnected,
+    // their existing contacts are dropped and their shapes stop colliding.
+    // Every create… throws i2d::Error, creating nothing, when a body handle is
+    // null, stale, forged or of another world, bodyA == bodyB, both bodies
+    // are static, or a value is outside the range its definition gives
+    // (impulse2d/joints.hpp): non-finite or unbounded anchors, axes or
+    // targets, a zero axis, negative or non-finite hertz, damping ratio, force
+    // or torque, a lower limit above the upper one.
 
-    /// Join two bodies (locked) and wake both; unless collideConnected, their
-    /// existing contacts are dropped. Throws i2d::Error when a body handle is
-    /// null, stale or forged, bodyA == bodyB, an anchor (m) is not bounded,
-    /// length is not in (0, 1e7] m, hertz or dampingRatio is outside
-    /// [0, 1e6] or non-finite, minLength is negative or non-finite, maxLength
-    /// is negative or NaN, or the limit is enabled with minLength > maxLength.
     JointId createDistanceJoint(const DistanceJointDef& def);
+    JointId createRevoluteJoint(const RevoluteJointDef& def);
+    JointId createPrismaticJoint(const PrismaticJointDef& def);
+    JointId createWeldJoint(const WeldJointDef& def);
+    JointId createWheelJoint(const WheelJointDef& def);
+    JointId createMotorJoint(const MotorJointDef& def);
+    JointId createMouseJoint(const MouseJointDef& def);
+    JointId createPulleyJoint(const PulleyJointDef& def);
+    /// Also throws when either joint is not a revolute or prismatic joint,
+    /// the two joints are the same, or the ratio is zero or not finite.
+    JointId createGearJoint(const GearJointDef& def);
+
     /// Destroy the joint and wake both its bodies (locked); they may collide
-    /// again from the next step. A joint is also destroyed with either body.
+    /// again from the next step. Gear joints built on it are destroyed too. A
+    /// joint is also destroyed with either body.
     void destroyJoint(JointId id);
-    /// True when the handle names a live joint; never throws.
+    /// True when the handle names a live joint of this world; never throws.
     bool isValid(JointId id) const;
-    /// The body given as bodyA when the joint was created.
+    JointType jointType(JointId id) const;
+    /// The joint's bodies (for a gear joint: the second bodies of its two joints).
     BodyId jointBodyA(JointId id) const;
-    /// The body given as bodyB when the joint was created.
     BodyId jointBodyB(JointId id) const;
-    /// The definition the joint was created with, with its current length.
+    /// The value given in the definition's userData; never read by the engine.
+    std::uintptr_t jointUserData(JointId id) const;
+    void setJointUserData(JointId id, std::uintptr_t data);
+
+    // Definitions: read back a joint's current definition, or change it
+    // (locked; wakes both bodies). A new definition must name the same bodies
+    // (and, for a gear, the same joints) and is checked as at creation; the
+    // joint keeps its accumulated impulses unless a feature is turned off.
+    // The getter and setter of another type than the joint's throw i2d::Error.
+
     DistanceJointDef distanceJointDef(JointId id) const;
-    /// Current distance between the anchors (m).
-    float distanceJointCurrentLength(JointId id) const;
+    void setDistanceJointDef(JointId id, const DistanceJointDef& def);
+    RevoluteJointDef revoluteJointDef(JointId id) const;
+    void setRevoluteJointDef(JointId id, const RevoluteJointDef& def);
+    PrismaticJointDef prismaticJointDef(JointId id) const;
+    void setPrismaticJointDef(JointId id, const PrismaticJointDef& def);
+    WeldJointDef weldJointDef(JointId id) const;
+    void setWeldJointDef(JointId id, const WeldJointDef& def);
+    WheelJointDef wheelJointDef(JointId id) const;
+    void setWheelJointDef(JointId id, const WheelJointDef& def);
+    MotorJointDef motorJointDef(JointId id) const;
+    void setMotorJointDef(JointId id, const MotorJointDef& def);
+    MouseJointDef mouseJointDef(JointId id) const;
+    void setMouseJointDef(JointId id, const MouseJointDef& def);
+    PulleyJointDef pulleyJointDef(JointId id) const;
+    void setPulleyJointDef(JointId id, const PulleyJointDef& def);
+    GearJointDef gearJointDef(JointId id) const;
+    void setGearJointDef(JointId id, const GearJointDef& def);
+
+    // Features that games change while running (locked; wake both bodies).
+
+    /// Distance, revolute, prismatic and wheel joints: turn the limit on or off.
+    void enableJointLimit(JointId id, bool flag);
+    /// Revolute, prismatic and wheel joints: turn the motor on or off.
+    void enableJointMotor(JointId id, bool flag);
+    /// Distance, revolute, prismatic and wheel joints: turn the spring on or off.
+    void enableJointSpring(JointId id, bool flag);
+    /// Revolute and wheel joints (rad/s), prismatic joints (m/s); bounded.
+    void setJointMotorSpeed(JointId id, float speed);
+    /// Mouse joints: move the target (world, m; bounded).
+    void setMouseJointTarget(JointId id, Vec2 target);
     /// Set the rest length (m, locked), reset the joint's accumulated impulse
     /// and wake both bodies. Throws i2d::Error unless length is in (0, 1e7].
     void setDistanceJointLength(JointId id, float length);
+
+    // Joint state, from the bodies' current poses and velocities.
+
+    /// Current distance between the anchors (m).
+    float distanceJointCurrentLength(JointId id) const;
+    /// angle(B) − angle(A) − referenceAngle, in (−π, π] (rad).
+    float revoluteJointAngle(JointId id) const;
+    /// ω_B − ω_A (rad/s).
+    float revoluteJointSpeed(JointId id) const;
+    /// Prismatic and wheel joints: anchor B's offset from anchor A along the axis (m).
+    float jointTranslation(JointId id) const;
+    /// Prismatic and wheel joints: the rate of the translation (m/s).
+    float jointTranslationSpeed(JointId id) const;
+    /// Pulley joints: the current lengths on each side (m).
+    float pulleyJointLengthA(JointId id) const;
+    float pulleyJointLengthB(JointId id) const;
+
+    // What the joint did over the last step in which it was awake.
+
+    /// Force the joint applied to body B at its anchor (N, world): the
+    /// accumulated linear impulse divided by the step.
+    Vec2 jointReactionForce(JointId id) const;
+    /// Torque the joint applied to body B (N·m).
+    float jointReactionTorque(JointId id) const;
+    /// Revolute and wheel joints: the motor's torque (N·m); prismatic: the motor's force (N).
+    float jointMotorEffort(JointId id) const;
     /// Magnitude of the constraint force over the last step in which the
-    /// joint was awake (N): |accumulated impulse| / dt.
+    /// joint was awake (N): |jointReactionForce|.
     float jointForce(JointId id) const;
 
     // ---- Events of the last step ----------------------------------------
