@@ -48,11 +48,15 @@ inline float boundedIncrement(float& accumulated, float impulse, float lo, float
     return impulse;
 }
 
-/// Solves the symmetric 2×2 system [k11 k12; k12 k22]·x = b (x = 0 when singular).
+/// Solves the symmetric 2×2 system [k11 k12; k12 k22]·x = b (x = 0 when
+/// singular). In double precision: a body of tiny mass (1e-37 kg is accepted)
+/// has entries near 1e37, whose products overflow single precision and turned
+/// the solution into NaN (found by fuzz_world).
 inline Vec2 solveSymmetric22(float k11, float k12, float k22, Vec2 b) {
-    float det = k11 * k22 - k12 * k12;
-    if (det != 0.0f) det = 1.0f / det;
-    return {det * (k22 * b.x - k12 * b.y), det * (k11 * b.y - k12 * b.x)};
+    const double a11 = k11, a12 = k12, a22 = k22;
+    double det = a11 * a22 - a12 * a12;
+    if (det != 0.0) det = 1.0 / det;
+    return {static_cast<float>(det * (a22 * b.x - a12 * b.y)), static_cast<float>(det * (a11 * b.y - a12 * b.x))};
 }
 
 /// Relative angle of B to A now: angle(qB·qA⁻¹) with the rotations since the step began.

@@ -65,14 +65,16 @@ void solveWeldJoint(JointConstraint& jc, const JointContext& ctx, BodyState& sA,
         const RowBias rb = rigidBias(ctx, 1.0f);
         const float b1 = cdot.x + rb.bias * separation.x, b2 = cdot.y + rb.bias * separation.y;
         const float b3 = sB.w - sA.w + rb.bias * angleError;
-        // Cramer's rule on the symmetric 3×3 system.
-        const float c11 = k22 * k33 - k23 * k23, c12 = k13 * k23 - k12 * k33, c13 = k12 * k23 - k13 * k22;
-        float det = k11 * c11 + k12 * c12 + k13 * c13;
-        if (det != 0.0f) det = 1.0f / det;
-        const float c22 = k11 * k33 - k13 * k13, c23 = k13 * k12 - k11 * k23, c33 = k11 * k22 - k12 * k12;
-        const float x = det * (c11 * b1 + c12 * b2 + c13 * b3);
-        const float y = det * (c12 * b1 + c22 * b2 + c23 * b3);
-        const float z = det * (c13 * b1 + c23 * b2 + c33 * b3);
+        // Cramer's rule on the symmetric 3×3 system, in double precision (see
+        // solveSymmetric22: the entries of a tiny body overflow single precision).
+        const double K11 = k11, K12 = k12, K13 = k13, K22 = k22, K23 = k23, K33 = k33;
+        const double c11 = K22 * K33 - K23 * K23, c12 = K13 * K23 - K12 * K33, c13 = K12 * K23 - K13 * K22;
+        double det = K11 * c11 + K12 * c12 + K13 * c13;
+        if (det != 0.0) det = 1.0 / det;
+        const double c22 = K11 * K33 - K13 * K13, c23 = K13 * K12 - K11 * K23, c33 = K11 * K22 - K12 * K12;
+        const float x = static_cast<float>(det * (c11 * b1 + c12 * b2 + c13 * b3));
+        const float y = static_cast<float>(det * (c12 * b1 + c22 * b2 + c23 * b3));
+        const float z = static_cast<float>(det * (c13 * b1 + c23 * b2 + c33 * b3));
         const Vec2 impulse = -rb.massScale * Vec2{x, y} - rb.impulseScale * acc.linear;
         const float angular = -rb.massScale * z - rb.impulseScale * acc.angular;
         acc.linear += impulse;
