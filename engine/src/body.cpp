@@ -66,9 +66,8 @@ bool jointPreventsCollision(const WorldState& w, int a, int b) {
     const Body& bb = w.bodies[b];
     const Body& fewer = ba.joints.size() <= bb.joints.size() ? ba : bb;
     for (int j : fewer.joints) {
-        const DistanceJoint& jt = w.joints[j];
-        if (!jt.def.collideConnected && ((jt.bodyA == a && jt.bodyB == b) || (jt.bodyA == b && jt.bodyB == a)))
-            return true;
+        const Joint& jt = w.joints[j];
+        if (!jt.collideConnected && ((jt.bodyA == a && jt.bodyB == b) || (jt.bodyA == b && jt.bodyB == a))) return true;
     }
     return false;
 }

@@ -56,14 +56,26 @@ void World::draw(DebugDraw& dd) const {
         }
     }
     if (dd.drawJoints) {
+        const Color colour{0.3f, 0.8f, 0.8f, 1.0f};
         for (int j = 0; j < w.joints.capacity(); ++j) {
-            const detail::DistanceJoint& jt = w.joints[j];
+            const detail::Joint& jt = w.joints[j];
             if (!jt.alive) continue;
-            Vec2 pA = transformPoint(w.bodies[jt.bodyA].xf, jt.def.localAnchorA);
-            Vec2 pB = transformPoint(w.bodies[jt.bodyB].xf, jt.def.localAnchorB);
-            dd.drawSegment(pA, pB, {0.3f, 0.8f, 0.8f, 1.0f});
-            dd.drawPoint(pA, 4.0f, {0.3f, 0.8f, 0.8f, 1.0f});
-            dd.drawPoint(pB, 4.0f, {0.3f, 0.8f, 0.8f, 1.0f});
+            const Transform& xfA = w.bodies[jt.bodyA].xf;
+            const Transform& xfB = w.bodies[jt.bodyB].xf;
+            const detail::JointAnchors an = detail::jointAnchors(w, jt);
+            if (jt.type == JointType::pulley) {
+                const PulleyJointDef& def = std::get<PulleyJointDef>(jt.def);
+                dd.drawSegment(def.groundAnchorA, an.a, colour);
+                dd.drawSegment(def.groundAnchorB, an.b, colour);
+                dd.drawSegment(def.groundAnchorA, def.groundAnchorB, colour);
+            } else {
+                // From each body's origin to its anchor, and anchor to anchor.
+                dd.drawSegment(xfA.p, an.a, colour);
+                dd.drawSegment(an.a, an.b, colour);
+                dd.drawSegment(xfB.p, an.b, colour);
+            }
+            dd.drawPoint(an.a, 4.0f, colour);
+            dd.drawPoint(an.b, 4.0f, colour);
         }
     }
     if (dd.drawAABBs) {

@@ -1,4 +1,4 @@
-// The distance joint: what the world keeps of it, and its constraint rows.
+// The distance joint's constraint (its rows are in distance_joint.cpp).
 //
 // Constraint (Tamis and Maggiore (2015), Constraint based physics solver,
 // §5.2): C = |p_B − p_A| − L, with p_A, p_B the anchors in world space. Its
@@ -12,55 +12,7 @@
 // in baumgarte and split. Spring: the row softened by the joint's own hertz
 // and damping ratio in every pass. Limits: two one-sided rows, length ≥ min
 // (pushes apart) and length ≤ max (a rope, pulls together), speculative
-// while inside the range.
+// while inside the range. Impulses: axial (the rigid or spring row), lower, upper.
 #pragma once
 
-#include <cstdint>
-#include <vector>
-
-#include "body.hpp"
-#include "impulse2d/types.hpp"
-#include "slot_array.hpp"
-#include "soft_constraint.hpp"
-
-namespace i2d::detail {
-
-struct WorldState;
-
-struct DistanceJoint {
-    DistanceJointDef def{};
-    int bodyA = kNullIndex, bodyB = kNullIndex;
-    float impulse = 0.0f;       ///< rigid/spring axial impulse (N·s), kept for the warm start
-    float lowerImpulse = 0.0f;  ///< min-length limit
-    float upperImpulse = 0.0f;  ///< max-length limit
-    float lastForce = 0.0f;     ///< N, over the last step
-    std::uint32_t generation = 1;
-    bool alive = false;
-};
-
-/// One distance joint's rows during a step, in the contiguous array the
-/// passes stream through.
-struct DistanceJointConstraint {
-    int joint = kNullIndex;
-    int a = kNullIndex, b = kNullIndex;  ///< solver body indices; kNullIndex for a body that does not move this step
-    Vec2 rA{}, rB{};                     ///< anchors relative to the centres of mass at step start (world)
-    Vec2 deltaCenter{};                  ///< centre B − centre A at step start
-    float axialMass = 0.0f;
-    float invMassA = 0, invIA = 0, invMassB = 0, invIB = 0;
-    float length = 0, minLength = 0, maxLength = 0;
-    float hertz = 0, dampingRatio = 0;
-    float impulse = 0, lowerImpulse = 0, upperImpulse = 0;
-    bool rigid = true;  ///< not a spring (or a spring pinned by equal limits)
-    bool enableLimit = false;
-};
-
-/// Builds this step's rows of every joint with an awake body.
-void prepareDistanceJoints(WorldState& w);
-void warmStartDistanceJoints(WorldState& w);
-void solveDistanceJoints(WorldState& w, float h, SolvePass pass);
-/// Split mode: the joints' position error solved on the pseudo-velocities.
-void solveDistanceJointPush(WorldState& w, float h);
-/// Impulses back into the joints for the next warm start; the force of the step.
-void storeDistanceJointImpulses(WorldState& w, float dt);
-
-}  // namespace i2d::detail
+#include "joint_rows.hpp"

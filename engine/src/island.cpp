@@ -146,7 +146,7 @@ void updateSleep(WorldState& w, float dt) {
         link(ct.bodyA, ct.bodyB);
     }
     for (int j = 0; j < w.joints.capacity(); ++j) {
-        const DistanceJoint& jt = w.joints[j];
+        const Joint& jt = w.joints[j];
         if (jt.alive) link(jt.bodyA, jt.bodyB);
     }
     // Minimum rest time per island root.

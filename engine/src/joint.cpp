@@ -1,5 +1,5 @@
 // Joints: linking a joint to its bodies and unlinking it (what every joint
-// type shares; the rows are in distance_joint.cpp).
+// type shares; the rows are in joint_solver.cpp and one file per type).
 #include <algorithm>
 
 #include "joint.hpp"
@@ -8,12 +8,12 @@
 namespace i2d::detail {
 
 void linkJoint(WorldState& w, int j) {
-    DistanceJoint& jt = w.joints[j];
+    Joint& jt = w.joints[j];
     const int a = jt.bodyA, b = jt.bodyB;
     w.bodies[a].joints.push_back(j);
     w.bodies[b].joints.push_back(j);
     // Joined bodies that may not collide lose their contacts at once.
-    if (!jt.def.collideConnected) {
+    if (!jt.collideConnected) {
         const std::vector<int> list = w.bodies[a].contacts;
         for (int c : list) {
             const Contact& ct = w.contacts[c];
@@ -25,7 +25,12 @@ void linkJoint(WorldState& w, int j) {
 }
 
 void destroyJoint(WorldState& w, int j) {
-    DistanceJoint& jt = w.joints[j];
+    // Gear joints built on this joint go first: they cannot stand without it.
+    for (int g = 0; g < w.joints.capacity(); ++g) {
+        const Joint& gear = w.joints[g];
+        if (gear.alive && gear.type == JointType::gear && (gear.joint1 == j || gear.joint2 == j)) destroyJoint(w, g);
+    }
+    Joint& jt = w.joints[j];
     for (int b : {jt.bodyA, jt.bodyB}) {
         auto& list = w.bodies[b].joints;
         list.erase(std::remove(list.begin(), list.end(), j), list.end());
@@ -37,6 +42,29 @@ void destroyJoint(WorldState& w, int j) {
         }
     }
     w.joints.release(j);
+}
+
+}  // namespace i2d::detail
+
+namespace i2d::detail {
+
+JointAnchors jointAnchors(const WorldState& w, const Joint& joint) {
+    const Transform& xfA = w.bodies[joint.bodyA].xf;
+    const Transform& xfB = w.bodies[joint.bodyB].xf;
+    return std::visit(
+        [&](const auto& def) -> JointAnchors {
+            using Def = std::decay_t<decltype(def)>;
+            if constexpr (std::is_same_v<Def, MotorJointDef>) {
+                return {transformPoint(xfA, def.linearOffset), xfB.p};
+            } else if constexpr (std::is_same_v<Def, MouseJointDef>) {
+                return {def.target, transformPoint(xfB, joint.localAnchorB)};
+            } else if constexpr (std::is_same_v<Def, GearJointDef>) {
+                return {xfA.p, xfB.p};
+            } else {
+                return {transformPoint(xfA, def.localAnchorA), transformPoint(xfB, def.localAnchorB)};
+            }
+        },
+        joint.def);
 }
 
 }  // namespace i2d::detail

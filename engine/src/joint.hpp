@@ -1,20 +1,157 @@
-// Joints: what every joint type shares (the two bodies, collideConnected) and
-// the bookkeeping that links joints to bodies. The rows of each type are in
-// their own file (distance_joint.*).
+// Joints: what the world keeps of a joint of any type, the per-step row every
+// joint type fills (JointConstraint), and the bookkeeping that links joints to
+// bodies. Each type's constraint maths is in its own file
+// (distance_joint.cpp, revolute_joint.cpp, …, gear_joint.cpp); joint_solver.cpp
+// prepares, colours and dispatches the rows.
 #pragma once
 
-#include "distance_joint.hpp"
+#include <cstdint>
+#include <variant>
+
+#include "body.hpp"
+#include "impulse2d/joints.hpp"
+#include "slot_array.hpp"
+#include "soft_constraint.hpp"
 
 namespace i2d::detail {
 
 struct WorldState;
 
+/// Impulses a joint accumulates, kept between steps for the warm start. What
+/// each holds depends on the type (see each joint's file); unused ones stay 0.
+struct JointImpulses {
+    Vec2 linear{};         ///< point constraint (N·s, world)
+    float angular = 0.0f;  ///< angle constraint (N·m·s)
+    float axial = 0.0f;    ///< a scalar row: distance, perpendicular, pulley, gear
+    float spring = 0.0f;
+    float motor = 0.0f;
+    float lower = 0.0f;  ///< limits, ≥ 0
+    float upper = 0.0f;
+};
+
+using JointDefVariant = std::variant<DistanceJointDef, RevoluteJointDef, PrismaticJointDef, WeldJointDef, WheelJointDef,
+                                     MotorJointDef, MouseJointDef, PulleyJointDef, GearJointDef>;
+
+struct Joint {
+    JointDefVariant def;  ///< as given (handles included), changed by the set…Def calls
+    int bodyA = kNullIndex, bodyB = kNullIndex;
+    int joint1 = kNullIndex, joint2 = kNullIndex;  ///< gear: the coupled joints
+    /// gear: coordinate1 + ratio·coordinate2 at creation; pulley: lengthA + ratio·lengthB
+    float constant = 0.0f;
+    Vec2 localAnchorB{};  ///< mouse: body B's point that is pulled (body frame)
+    JointImpulses impulses;
+    Vec2 reactionForce{};  ///< N, on body B, over the last step it was awake
+    float reactionTorque = 0.0f;
+    float motorEffort = 0.0f;
+    float lastForce = 0.0f;
+    std::uint32_t generation = 1;
+    JointType type = JointType::distance;
+    bool collideConnected = false;
+    bool alive = false;
+    std::uintptr_t userData = 0;
+};
+
+// ---- Per-step rows ---------------------------------------------------------
+// Each type's row data; plain values, written by the type's prepare.
+
+struct DistanceRow {
+    float axialMass, length, minLength, maxLength, hertz, dampingRatio;
+    bool rigid;  ///< not a spring (or a spring pinned by equal limits)
+    bool enableLimit;
+};
+struct RevoluteRow {
+    float axialMass, referenceAngle, lowerAngle, upperAngle, motorSpeed, maxMotorTorque, hertz, dampingRatio;
+    bool enableLimit, enableMotor, enableSpring;
+};
+struct PrismaticRow {
+    Vec2 axisA;  ///< the axis in world at step start (turns with A)
+    float referenceAngle, lower, upper, motorSpeed, maxMotorForce, hertz, dampingRatio;
+    bool enableLimit, enableMotor, enableSpring;
+};
+struct WeldRow {
+    float axialMass, referenceAngle, linearHertz, linearDampingRatio, angularHertz, angularDampingRatio;
+};
+struct WheelRow {
+    Vec2 axisA;
+    float axialMass, lower, upper, motorSpeed, maxMotorTorque, hertz, dampingRatio;
+    bool enableLimit, enableMotor, enableSpring;
+};
+struct MotorRow {
+    float axialMass, angularOffset, maxForce, maxTorque, correctionRate;  ///< correctionRate = factor / dt
+};
+struct MouseRow {
+    Vec2 targetFromCenterB;  ///< target − centre B at step start
+    float hertz, dampingRatio, maxForce;
+};
+struct PulleyRow {
+    Vec2 groundFromCenterA;  ///< ground anchor A − centre A at step start
+    Vec2 groundFromCenterB;
+    float ratio, constant;
+};
+/// The gear couples joint1 (C → A) and joint2 (D → B): bodies A, B are the
+/// row's a, b; C, D are c, d.
+struct GearRow {
+    // Joint 1: revolute (angle of A relative to C) or prismatic (translation of A along C's axis).
+    Vec2 axisC, rCAnchor, rAAnchor, deltaCenterCA;  ///< prismatic 1 only
+    Vec2 axisD, rDAnchor, rBAnchor, deltaCenterDB;  ///< prismatic 2 only
+    float reference1, reference2;                   ///< revolute: reference angles
+    float ratio, constant;
+    bool prismatic1, prismatic2;
+};
+
+union JointRow {
+    DistanceRow distance;
+    RevoluteRow revolute;
+    PrismaticRow prismatic;
+    WeldRow weld;
+    WheelRow wheel;
+    MotorRow motor;
+    MouseRow mouse;
+    PulleyRow pulley;
+    GearRow gear;
+    JointRow() : distance{} {}
+};
+
+/// One joint's rows during a step, in the contiguous array the passes stream
+/// through (in colour order, see joint_solver.cpp).
+struct JointConstraint {
+    int joint = kNullIndex;
+    JointType type = JointType::distance;
+    int a = kNullIndex, b = kNullIndex;  ///< solver body indices; kNullIndex for a body that does not move
+    int c = kNullIndex, d = kNullIndex;  ///< gear only: the frames of its two joints
+    float invMassA = 0, invIA = 0, invMassB = 0, invIB = 0;
+    float invMassC = 0, invIC = 0, invMassD = 0, invID = 0;
+    Vec2 rA{}, rB{};         ///< anchors relative to the centres of mass at step start (world)
+    Vec2 deltaCenter{};      ///< centre B − centre A at step start
+    Rot qA{}, qB{};          ///< rotations of A and B at step start
+    JointImpulses impulses;  ///< accumulated this step, warm started from the joint
+    JointRow row;
+};
+
+/// What a joint's solve needs besides its row and its bodies' states.
+struct JointContext {
+    float h = 0.0f, invH = 0.0f;  ///< the (sub)step
+    SolvePass pass = SolvePass::soft_bias;
+    Softness jointSoft;       ///< softness of rigid rows in the soft_bias pass
+    float pushFactor = 0.0f;  ///< β of baumgarte (and of split's push)
+    float maxLinearSpeed = 0.0f;
+};
+
 /// Links a new joint to its bodies, drops the contacts between them when
 /// they may not collide, and wakes both.
 void linkJoint(WorldState& w, int joint);
 
-/// Unlinks and frees a joint; wakes both bodies and lets the broadphase
-/// look at their shapes again (they may collide now).
+/// Unlinks and frees a joint and every gear joint built on it; wakes the
+/// bodies and lets the broadphase look at their shapes again (they may
+/// collide now).
 void destroyJoint(WorldState& w, int joint);
+
+/// A joint's two anchor points in world coordinates at the bodies' current
+/// poses (for a motor joint: A's target point and B's origin; a mouse joint:
+/// the target and B's point; a gear: the two bodies' origins).
+struct JointAnchors {
+    Vec2 a, b;
+};
+JointAnchors jointAnchors(const WorldState& w, const Joint& joint);
 
 }  // namespace i2d::detail

@@ -34,6 +34,7 @@
 
 #include "continuous.hpp"
 #include "impact_stage.hpp"
+#include "joint_solver.hpp"
 #include "world_state.hpp"
 
 namespace i2d::detail {
@@ -204,17 +205,32 @@ void solve(WorldState& w, float dt) {
     const std::size_t n = s.stateBodies.size();
     colourContacts(w);
     prepareContacts(w, h, soft);
-    prepareDistanceJoints(w);
+    prepareJoints(w, dt);
+    // Joint stiffness capped at 1/4 of the substep rate, so jointHertz 60 holds
+    // at 4 substeps as in Box2D v3 (twice its contact hertz). This needs the two
+    // joint sweeps of the solve stage (kJointSolvePasses): with one, a 100:1
+    // chain of distance joints diverged at this stiffness, and at the former
+    // cap of 1/8 it stretched by 3.1 m.
+    JointContext jointCtx;
+    jointCtx.h = h;
+    jointCtx.invH = 1.0f / h;
+    jointCtx.jointSoft = makeSoft(std::min(set.jointHertz, 0.25f * jointCtx.invH), set.jointDampingRatio, h);
+    jointCtx.pushFactor = set.pushFactor;
+    jointCtx.maxLinearSpeed = maxSpeed;
+    auto joints = [&](SolvePass pass) {
+        jointCtx.pass = pass;
+        solveJoints(w, jointCtx);
+    };
 
     if (soft) {
         for (int i = 0; i < substeps; ++i) {
             integrateVelocities(s, h, maxSpeed);
             warmStartContacts(w);
-            warmStartDistanceJoints(w);
-            for (int pass = 0; pass < kJointSolvePasses; ++pass) solveDistanceJoints(w, h, SolvePass::soft_bias);
+            warmStartJoints(w);
+            for (int pass = 0; pass < kJointSolvePasses; ++pass) joints(SolvePass::soft_bias);
             solveContacts(w, h, SolvePass::soft_bias);
             integratePositions(s, h, maxSpeed);
-            solveDistanceJoints(w, h, SolvePass::soft_relax);
+            joints(SolvePass::soft_relax);
             solveContacts(w, h, i + 1 == substeps ? SolvePass::soft_relax_last : SolvePass::soft_relax);
         }
         if (set.impactModel == ImpactModel::velocity_bias) applyRestitution(w);
@@ -223,16 +239,16 @@ void solve(WorldState& w, float dt) {
         const SolvePass pass = baumgarte ? SolvePass::baumgarte : SolvePass::no_push;
         integrateVelocities(s, dt, maxSpeed);
         warmStartContacts(w);
-        warmStartDistanceJoints(w);
+        warmStartJoints(w);
         for (int it = 0; it < set.velocityIterations; ++it) {
-            solveDistanceJoints(w, dt, pass);
+            joints(pass);
             solveContacts(w, dt, pass);
         }
         if (!baumgarte) {
             s.biasV.assign(n + 1, Vec2{});
             s.biasW.assign(n + 1, 0.0f);
             for (int it = 0; it < set.positionIterations; ++it) {
-                solveDistanceJointPush(w, dt);
+                pushJoints(w, jointCtx);
                 solveContactPush(w, dt);
             }
             // Move by v + v_push for this step only; v_push is then dropped.
@@ -255,7 +271,7 @@ void solve(WorldState& w, float dt) {
     }
 
     storeContactImpulses(w);
-    storeDistanceJointImpulses(w, dt);
+    storeJoints(w, dt);
 
     // Write back: centre of mass, rotation, origin, velocities; clear forces.
     // The relax and restitution passes act after the last position update, so
@@ -305,7 +321,9 @@ void releaseLargeStepArrays(WorldState& w) {
     releaseIfLarge(s.constraints);
     releaseIfLarge(s.contactColours);
     releaseIfLarge(s.colourBits);
-    releaseIfLarge(s.distanceJoints);
+    releaseIfLarge(s.joints);
+    releaseIfLarge(s.jointScratch);
+    releaseIfLarge(s.jointColours);
     releaseIfLarge(s.deepContactCount);
     releaseIfLarge(w.activeContacts);
     releaseIfLarge(w.gatherScratch);

@@ -6,7 +6,7 @@
 
 #include "body.hpp"
 #include "contact_solver.hpp"
-#include "distance_joint.hpp"
+#include "joint.hpp"
 #include "scratch_array.hpp"
 
 namespace i2d::detail {
@@ -26,7 +26,9 @@ struct SolverArrays {
     std::vector<int> colourOffsets;               ///< per colour: its first row (advanced as rows are placed)
     std::vector<std::uint64_t> colourBits;        ///< per colour, one bit per state
     int rowCount = 0;                             ///< contact rows this step
-    std::vector<DistanceJointConstraint> distanceJoints;
+    std::vector<JointConstraint> joints;          ///< in colour order (joint_solver.cpp)
+    std::vector<JointConstraint> jointScratch;    ///< the colour sort's other buffer
+    std::vector<std::uint8_t> jointColours;
     std::vector<int> deepContactCount;  ///< per state: contacts overlapping deeper than kDeepOverlap
 };
 

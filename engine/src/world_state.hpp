@@ -14,9 +14,9 @@
 #include "body.hpp"
 #include "broad_phase.hpp"
 #include "contact.hpp"
-#include "distance_joint.hpp"
 #include "impulse2d/types.hpp"
 #include "island.hpp"
+#include "joint.hpp"
 #include "shape.hpp"
 #include "slot_array.hpp"
 #include "solver.hpp"
@@ -41,7 +41,7 @@ struct WorldState {
     SlotArray<Body> bodies;
     SlotArray<Shape> shapes;
     SlotArray<Contact> contacts;
-    SlotArray<DistanceJoint> joints;
+    SlotArray<Joint> joints;
 
     IslandSet islands;
     BroadPhase broadPhase;

@@ -39,8 +39,8 @@ struct DistanceJointDef {
     float hertz = 0.0f;         ///< spring frequency (Hz), ≥ 0; 0 = no spring force
     float dampingRatio = 0.0f;  ///< ≥ 0
     bool enableLimit = false;
-    float minLength = 0.0f;     ///< m, ≥ 0
-    float maxLength = 1.0e9f;   ///< m, ≥ minLength when the limit is enabled
+    float minLength = 0.0f;    ///< m, ≥ 0
+    float maxLength = 1.0e9f;  ///< m, ≥ minLength when the limit is enabled
     bool collideConnected = false;
     std::uintptr_t userData = 0;
 };
@@ -54,8 +54,8 @@ struct RevoluteJointDef {
     Vec2 localAnchorB{};
     float referenceAngle = 0.0f;  ///< angle(B) − angle(A) at which the joint angle is 0 (rad), |·| ≤ π
     bool enableLimit = false;
-    float lowerAngle = 0.0f;      ///< rad, in [−0.99π, 0.99π], ≤ upperAngle
-    float upperAngle = 0.0f;      ///< rad, in [−0.99π, 0.99π]
+    float lowerAngle = 0.0f;  ///< rad, in [−0.99π, 0.99π], ≤ upperAngle
+    float upperAngle = 0.0f;  ///< rad, in [−0.99π, 0.99π]
     bool enableMotor = false;
     float motorSpeed = 0.0f;      ///< target of the joint's angular speed (rad/s)
     float maxMotorTorque = 0.0f;  ///< N·m, ≥ 0
@@ -114,8 +114,8 @@ struct WheelJointDef {
     Vec2 localAnchorB{};
     Vec2 localAxisA{0.0f, 1.0f};  ///< suspension axis in body A's frame; must not be zero
     bool enableSpring = true;
-    float hertz = 1.0f;           ///< suspension frequency (Hz), ≥ 0
-    float dampingRatio = 0.7f;    ///< ≥ 0
+    float hertz = 1.0f;         ///< suspension frequency (Hz), ≥ 0
+    float dampingRatio = 0.7f;  ///< ≥ 0
     bool enableLimit = false;
     float lowerTranslation = 0.0f;  ///< m, ≤ upperTranslation
     float upperTranslation = 0.0f;  ///< m
@@ -132,10 +132,10 @@ struct WheelJointDef {
 struct MotorJointDef {
     BodyId bodyA{};
     BodyId bodyB{};
-    Vec2 linearOffset{};          ///< B's centre of mass from A's, in A's frame (m)
-    float angularOffset = 0.0f;   ///< angle(B) − angle(A) (rad)
-    float maxForce = 1.0f;        ///< N, ≥ 0
-    float maxTorque = 1.0f;       ///< N·m, ≥ 0
+    Vec2 linearOffset{};            ///< B's centre of mass from A's, in A's frame (m)
+    float angularOffset = 0.0f;     ///< angle(B) − angle(A) (rad)
+    float maxForce = 1.0f;          ///< N, ≥ 0
+    float maxTorque = 1.0f;         ///< N·m, ≥ 0
     float correctionFactor = 0.3f;  ///< fraction of the offset error corrected per step, in [0, 1]
     bool collideConnected = false;
     std::uintptr_t userData = 0;
@@ -147,10 +147,10 @@ struct MotorJointDef {
 struct MouseJointDef {
     BodyId bodyA{};
     BodyId bodyB{};
-    Vec2 target{};                ///< world point (m); body B's anchor is the point of B there at creation
-    float hertz = 5.0f;           ///< Hz, > 0
-    float dampingRatio = 0.7f;    ///< ≥ 0
-    float maxForce = 1000.0f;     ///< N, ≥ 0 (a few times the body's weight)
+    Vec2 target{};              ///< world point (m); body B's anchor is the point of B there at creation
+    float hertz = 5.0f;         ///< Hz, > 0
+    float dampingRatio = 0.7f;  ///< ≥ 0
+    float maxForce = 1000.0f;   ///< N, ≥ 0 (a few times the body's weight)
     bool collideConnected = false;
     std::uintptr_t userData = 0;
 };

@@ -163,20 +163,6 @@ struct ShapeDef {
 
 enum class ShapeType : std::uint8_t { circle, capsule, segment, polygon };
 
-    BodyId bodyB{};
-    Vec2 localAnchorA{};  ///< relative to body A's origin, body frame
-    Vec2 localAnchorB{};
-    float length = 1.0f;  ///< rest length (m), > 0
-    bool enableSpring = false;
-    float hertz = 0.0f;         ///< spring frequency (Hz), ≥ 0; 0 = no spring force
-    float dampingRatio = 0.0f;  ///< ≥ 0
-    bool enableLimit = false;
-    float minLength = 0.0f;
-    float maxLength = 1.0e9f;
-    bool collideConnected = false;
-    std::uintptr_t userData = 0;
-};
-
 /// Two shapes began to touch in the last step (manifold at that moment).
 struct ContactBeginEvent {
     ShapeId shapeA{};

@@ -1,0 +1,177 @@
+// The rows of each joint type: preparation at the start of a step, the warm
+// start, and the sweep of one solver pass. Each type's functions are in its
+// own file; joint_solver.cpp calls them for every joint row.
+//
+// Conventions: a row's bodies are A and B with states sA, sB (a static or
+// sleeping body gets a zero state that is thrown away); rA, rB are the anchors
+// relative to the centres of mass at the step's start, turned by each body's
+// rotation since (BodyState::dq); positional errors come from the motion since
+// the step began (BodyState::dp, dq), as for contacts. A rigid row's velocity
+// target is −bias with, per pass (JointContext):
+//   soft_bias   bias = biasRate·C with the joint softness (WorldSettings::jointHertz)
+//   baumgarte   bias = β·C/h (Tamis and Maggiore (2015), Constraint based physics solver, eq. 5.2.3)
+//   otherwise   bias = 0 (relax passes; split mode's velocity pass)
+// and a one-sided row (a limit) that is not violated (C > 0) allows the
+// approach that closes it within the (sub)step: bias = C/h, speculatively.
+#pragma once
+
+#include "joint.hpp"
+
+namespace i2d::detail {
+
+struct WorldState;
+
+/// The velocity target terms of a rigid row in `ctx`'s pass (see above).
+struct RowBias {
+    float bias = 0.0f, massScale = 1.0f, impulseScale = 0.0f;
+};
+inline RowBias rigidBias(const JointContext& ctx, float C) {
+    if (ctx.pass == SolvePass::soft_bias)
+        return {ctx.jointSoft.biasRate * C, ctx.jointSoft.massScale, ctx.jointSoft.impulseScale};
+    if (ctx.pass == SolvePass::baumgarte) return {ctx.pushFactor * ctx.invH * C, 1.0f, 0.0f};
+    return {};
+}
+/// A one-sided row (C ≥ 0 allowed): speculative while C > 0, rigid otherwise.
+inline RowBias limitBias(const JointContext& ctx, float C) {
+    if (C > 0.0f) return {C * ctx.invH, 1.0f, 0.0f};
+    return rigidBias(ctx, C);
+}
+/// A soft row with its own spring (springs, soft welds, the mouse joint):
+/// the same softness in every pass, since it is physical, not a correction.
+inline RowBias springBias(const Softness& s, float C) { return {s.biasRate * C, s.massScale, s.impulseScale}; }
+
+/// Adds `impulse` to `accumulated` within [lo, hi]; returns the part applied.
+inline float boundedIncrement(float& accumulated, float impulse, float lo, float hi) {
+    const float total = clamp(accumulated + impulse, lo, hi);
+    impulse = total - accumulated;
+    accumulated = total;
+    return impulse;
+}
+
+/// Solves the symmetric 2×2 system [k11 k12; k12 k22]·x = b (x = 0 when singular).
+inline Vec2 solveSymmetric22(float k11, float k12, float k22, Vec2 b) {
+    float det = k11 * k22 - k12 * k12;
+    if (det != 0.0f) det = 1.0f / det;
+    return {det * (k22 * b.x - k12 * b.y), det * (k11 * b.y - k12 * b.x)};
+}
+
+/// Relative angle of B to A now: angle(qB·qA⁻¹) with the rotations since the step began.
+inline float relativeAngle(const JointConstraint& jc, const BodyState& sA, const BodyState& sB) {
+    const Rot qA = mulRot(sA.dq, jc.qA), qB = mulRot(sB.dq, jc.qB);
+    return angleOf(invMulRot(qA, qB));
+}
+
+/// Wraps an angle to (−π, π].
+inline float unwindAngle(float a) {
+    constexpr float kPi = 3.14159265358979f;
+    if (a > kPi) return a - 2.0f * kPi;
+    if (a <= -kPi) return a + 2.0f * kPi;
+    return a;
+}
+
+/// Applies a linear impulse P at the anchors (and an extra angular impulse L) to A (−) and B (+).
+inline void applyImpulse(const JointConstraint& jc, Vec2 rA, Vec2 rB, Vec2 P, float L, BodyState& sA, BodyState& sB) {
+    sA.v = mulSub(sA.v, jc.invMassA, P);
+    sA.w -= jc.invIA * (cross(rA, P) + L);
+    sB.v = mulAdd(sB.v, jc.invMassB, P);
+    sB.w += jc.invIB * (cross(rB, P) + L);
+}
+
+/// Geometry of a joint along an axis fixed in body A (prismatic, wheel), now:
+/// d = p_B − p_A, the axis u turned with A and its perpendicular n, and the
+/// angular Jacobian terms of rows along them: a translation row along u has
+/// J v = u·(v_B − v_A) + aB ω_B − aA ω_A with aA = (d + r_A) × u, aB = r_B × u
+/// (likewise sA, sB along n).
+struct SliderFrame {
+    Vec2 rA, rB, d, axis, perp;
+    float aA, aB, sA, sB;
+    float translation;  ///< u·d
+};
+inline SliderFrame sliderFrame(const JointConstraint& jc, Vec2 axisA, const BodyState& stA, const BodyState& stB) {
+    SliderFrame f;
+    f.rA = rotate(stA.dq, jc.rA);
+    f.rB = rotate(stB.dq, jc.rB);
+    f.d = (stB.dp - stA.dp) + jc.deltaCenter + f.rB - f.rA;
+    f.axis = rotate(stA.dq, axisA);
+    f.perp = leftPerp(f.axis);
+    f.aA = cross(f.d + f.rA, f.axis);
+    f.aB = cross(f.rB, f.axis);
+    f.sA = cross(f.d + f.rA, f.perp);
+    f.sB = cross(f.rB, f.perp);
+    f.translation = dot(f.axis, f.d);
+    return f;
+}
+/// Applies impulses along the axis (λu), the perpendicular (λn) and about the
+/// joint (L) to A (−) and B (+).
+inline void applySliderImpulse(const JointConstraint& jc, const SliderFrame& f, float axial, float perpendicular,
+                               float angular, BodyState& stA, BodyState& stB) {
+    const Vec2 P = axial * f.axis + perpendicular * f.perp;
+    const float LA = axial * f.aA + perpendicular * f.sA + angular;
+    const float LB = axial * f.aB + perpendicular * f.sB + angular;
+    stA.v = mulSub(stA.v, jc.invMassA, P);
+    stA.w -= jc.invIA * LA;
+    stB.v = mulAdd(stB.v, jc.invMassB, P);
+    stB.w += jc.invIB * LB;
+}
+/// The rate of the translation: J v of a row along the axis.
+inline float axialSpeed(const SliderFrame& f, const BodyState& stA, const BodyState& stB) {
+    return dot(f.axis, stB.v - stA.v) + f.aB * stB.w - f.aA * stA.w;
+}
+inline float axialMass(const JointConstraint& jc, const SliderFrame& f) {
+    const float k = jc.invMassA + jc.invMassB + jc.invIA * f.aA * f.aA + jc.invIB * f.aB * f.aB;
+    return k > 0.0f ? 1.0f / k : 0.0f;
+}
+
+void prepareDistanceJoint(const WorldState& w, const Joint& joint, JointConstraint& jc);
+void warmStartDistanceJoint(const JointConstraint& jc, BodyState& sA, BodyState& sB);
+void solveDistanceJoint(JointConstraint& jc, const JointContext& ctx, BodyState& sA, BodyState& sB);
+/// Split mode: the distance joint's position error on the pseudo-velocities pA, pB.
+void pushDistanceJoint(const JointConstraint& jc, const JointContext& ctx, const BodyState& sA, const BodyState& sB,
+                       BodyState& pA, BodyState& pB);
+
+void prepareRevoluteJoint(const WorldState& w, const Joint& joint, JointConstraint& jc);
+void warmStartRevoluteJoint(const JointConstraint& jc, BodyState& sA, BodyState& sB);
+void solveRevoluteJoint(JointConstraint& jc, const JointContext& ctx, BodyState& sA, BodyState& sB);
+
+void preparePrismaticJoint(const WorldState& w, const Joint& joint, JointConstraint& jc);
+void warmStartPrismaticJoint(const JointConstraint& jc, BodyState& sA, BodyState& sB);
+void solvePrismaticJoint(JointConstraint& jc, const JointContext& ctx, BodyState& sA, BodyState& sB);
+
+void prepareWeldJoint(const WorldState& w, const Joint& joint, JointConstraint& jc);
+void warmStartWeldJoint(const JointConstraint& jc, BodyState& sA, BodyState& sB);
+void solveWeldJoint(JointConstraint& jc, const JointContext& ctx, BodyState& sA, BodyState& sB);
+
+void prepareWheelJoint(const WorldState& w, const Joint& joint, JointConstraint& jc);
+void warmStartWheelJoint(const JointConstraint& jc, BodyState& sA, BodyState& sB);
+void solveWheelJoint(JointConstraint& jc, const JointContext& ctx, BodyState& sA, BodyState& sB);
+
+void prepareMotorJoint(const WorldState& w, const Joint& joint, JointConstraint& jc, float dt);
+void warmStartMotorJoint(const JointConstraint& jc, BodyState& sA, BodyState& sB);
+void solveMotorJoint(JointConstraint& jc, const JointContext& ctx, BodyState& sA, BodyState& sB);
+
+void prepareMouseJoint(const WorldState& w, const Joint& joint, JointConstraint& jc);
+void warmStartMouseJoint(const JointConstraint& jc, BodyState& sA, BodyState& sB);
+void solveMouseJoint(JointConstraint& jc, const JointContext& ctx, BodyState& sA, BodyState& sB);
+
+void preparePulleyJoint(const WorldState& w, const Joint& joint, JointConstraint& jc);
+void warmStartPulleyJoint(const JointConstraint& jc, BodyState& sA, BodyState& sB);
+void solvePulleyJoint(JointConstraint& jc, const JointContext& ctx, BodyState& sA, BodyState& sB);
+
+/// The gear's four bodies: A, B (its own) and C, D (the frames of its joints).
+struct GearStates {
+    BodyState& a;
+    BodyState& b;
+    BodyState& c;
+    BodyState& d;
+};
+void prepareGearJoint(const WorldState& w, const Joint& joint, JointConstraint& jc);
+void warmStartGearJoint(const JointConstraint& jc, GearStates s);
+void solveGearJoint(JointConstraint& jc, const JointContext& ctx, GearStates s);
+/// The gear's error C with the states' motion since the step began (kept in
+/// Joint::constant at the end of each step).
+float gearCoordinateError(const JointConstraint& jc, GearStates s);
+/// coordinate1 + ratio·coordinate2 at the world's current poses (angles
+/// wrapped to (−π, π]), for inspection.
+float gearCoordinate(const WorldState& w, const Joint& gear);
+
+}  // namespace i2d::detail

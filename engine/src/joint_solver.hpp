@@ -1,0 +1,23 @@
+// The joint rows of a step (joint_solver.cpp): prepare, warm start, one
+// sweep per pass, split mode's push, store.
+#pragma once
+
+#include "joint.hpp"
+
+namespace i2d::detail {
+
+struct WorldState;
+
+/// Rows of every joint with an awake body, coloured; dt is the whole step.
+void prepareJoints(WorldState& w, float dt);
+void warmStartJoints(WorldState& w);
+/// One Gauss-Seidel sweep over the joint rows in ctx's pass.
+void solveJoints(WorldState& w, const JointContext& ctx);
+/// Split mode (Tamis and Maggiore (2015) §8.1): the joints' position error on
+/// the pseudo-velocities (SolverArrays::biasV, biasW).
+void pushJoints(WorldState& w, const JointContext& ctx);
+/// Impulses back into the joints for the next warm start; reaction force,
+/// torque and motor effort of the step.
+void storeJoints(WorldState& w, float dt);
+
+}  // namespace i2d::detail

@@ -1,0 +1,97 @@
+// The prismatic joint (a slider): body B moves along an axis fixed in body A
+// and keeps its angle relative to A; optional translation limit, motor and
+// spring along the axis.
+//
+// With d = p_B − p_A, the axis u (turning with A) and its perpendicular n
+// (joint_rows.hpp, SliderFrame):
+//   perpendicular and angle, one 2×2 block: C = (n·d, θ_B − θ_A − θ_ref),
+//     J v = (n·(v_B − v_A) + s_B ω_B − s_A ω_A, ω_B − ω_A),
+//     K = [ m_A⁻¹ + m_B⁻¹ + I_A⁻¹ s_A² + I_B⁻¹ s_B²    I_A⁻¹ s_A + I_B⁻¹ s_B ]
+//         [ I_A⁻¹ s_A + I_B⁻¹ s_B                     I_A⁻¹ + I_B⁻¹         ];
+//   along the axis (spring, motor, limits): C = u·d − target, J v = u·(v_B − v_A)
+//     + a_B ω_B − a_A ω_A, m_eff = 1/(m_A⁻¹ + m_B⁻¹ + I_A⁻¹ a_A² + I_B⁻¹ a_B²).
+// Impulses: axial (perpendicular), angular, spring, motor, lower, upper.
+#include <cmath>
+
+#include "joint_rows.hpp"
+#include "world_state.hpp"
+
+namespace i2d::detail {
+
+void preparePrismaticJoint(const WorldState& w, const Joint& joint, JointConstraint& jc) {
+    const PrismaticJointDef& def = std::get<PrismaticJointDef>(joint.def);
+    const Body& bA = w.bodies[joint.bodyA];
+    const Body& bB = w.bodies[joint.bodyB];
+    jc.rA = rotate(bA.xf.q, def.localAnchorA - bA.localCenter);
+    jc.rB = rotate(bB.xf.q, def.localAnchorB - bB.localCenter);
+    PrismaticRow& row = jc.row.prismatic;
+    row.axisA = rotate(bA.xf.q, normalize(def.localAxisA));
+    row.referenceAngle = def.referenceAngle;
+    row.lower = def.lowerTranslation;
+    row.upper = def.upperTranslation;
+    row.motorSpeed = def.motorSpeed;
+    row.maxMotorForce = def.maxMotorForce;
+    row.hertz = def.hertz;
+    row.dampingRatio = def.dampingRatio;
+    row.enableLimit = def.enableLimit;
+    row.enableMotor = def.enableMotor;
+    row.enableSpring = def.enableSpring;
+}
+
+void warmStartPrismaticJoint(const JointConstraint& jc, BodyState& sA, BodyState& sB) {
+    const SliderFrame f = sliderFrame(jc, jc.row.prismatic.axisA, sA, sB);
+    const JointImpulses& acc = jc.impulses;
+    applySliderImpulse(jc, f, acc.spring + acc.motor + acc.lower - acc.upper, acc.axial, acc.angular, sA, sB);
+}
+
+void solvePrismaticJoint(JointConstraint& jc, const JointContext& ctx, BodyState& sA, BodyState& sB) {
+    const PrismaticRow& row = jc.row.prismatic;
+    JointImpulses& acc = jc.impulses;
+    const SliderFrame f = sliderFrame(jc, row.axisA, sA, sB);
+    const float mass = axialMass(jc, f);
+
+    if (row.enableSpring && row.hertz > 0.0f) {
+        const RowBias rb = springBias(makeSoft(row.hertz, row.dampingRatio, ctx.h), f.translation);
+        const float impulse =
+            -rb.massScale * mass * (axialSpeed(f, sA, sB) + rb.bias) - rb.impulseScale * acc.spring;
+        acc.spring += impulse;
+        applySliderImpulse(jc, f, impulse, 0.0f, 0.0f, sA, sB);
+    }
+    if (row.enableMotor) {
+        const float maxImpulse = ctx.h * row.maxMotorForce;
+        float impulse = -mass * (axialSpeed(f, sA, sB) - row.motorSpeed);
+        impulse = boundedIncrement(acc.motor, impulse, -maxImpulse, maxImpulse);
+        applySliderImpulse(jc, f, impulse, 0.0f, 0.0f, sA, sB);
+    }
+    if (row.enableLimit) {
+        {
+            const RowBias rb = limitBias(ctx, f.translation - row.lower);
+            float impulse = -rb.massScale * mass * (axialSpeed(f, sA, sB) + rb.bias) - rb.impulseScale * acc.lower;
+            impulse = boundedIncrement(acc.lower, impulse, 0.0f, INFINITY);
+            applySliderImpulse(jc, f, impulse, 0.0f, 0.0f, sA, sB);
+        }
+        {
+            const RowBias rb = limitBias(ctx, row.upper - f.translation);
+            float impulse = -rb.massScale * mass * (-axialSpeed(f, sA, sB) + rb.bias) - rb.impulseScale * acc.upper;
+            impulse = boundedIncrement(acc.upper, impulse, 0.0f, INFINITY);
+            applySliderImpulse(jc, f, -impulse, 0.0f, 0.0f, sA, sB);
+        }
+    }
+
+    // Perpendicular and angle as one 2×2 block.
+    const float iA = jc.invIA, iB = jc.invIB;
+    const float k11 = jc.invMassA + jc.invMassB + iA * f.sA * f.sA + iB * f.sB * f.sB;
+    const float k12 = iA * f.sA + iB * f.sB;
+    float k22 = iA + iB;
+    if (k22 == 0.0f) k22 = 1.0f;  // neither body turns: the angle row is moot
+    const Vec2 cdot{dot(f.perp, sB.v - sA.v) + f.sB * sB.w - f.sA * sA.w, sB.w - sA.w};
+    const Vec2 C{dot(f.perp, f.d), unwindAngle(relativeAngle(jc, sA, sB) - row.referenceAngle)};
+    const RowBias rb = rigidBias(ctx, 1.0f);
+    const Vec2 x = solveSymmetric22(k11, k12, k22, cdot + rb.bias * C);
+    const Vec2 impulse = -rb.massScale * x - rb.impulseScale * Vec2{acc.axial, acc.angular};
+    acc.axial += impulse.x;
+    acc.angular += impulse.y;
+    applySliderImpulse(jc, f, 0.0f, impulse.x, impulse.y, sA, sB);
+}
+
+}  // namespace i2d::detail

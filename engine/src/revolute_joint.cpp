@@ -1,0 +1,108 @@
+// The revolute joint (a hinge): anchors A and B coincide, the bodies turn
+// freely about them, with an optional angle limit, motor and rotational spring.
+//
+// Point constraint: C = p_B − p_A (2 rows), J v = v_B + ω_B × r_B − v_A − ω_A × r_A,
+// effective mass K = (m_A⁻¹ + m_B⁻¹) I + I_A⁻¹ [r_A]ᵀ[r_A] + I_B⁻¹ [r_B]ᵀ[r_B] with
+// [r] = (−r_y, r_x), i.e.
+//   K = [ m_A⁻¹ + m_B⁻¹ + I_A⁻¹ r_Ay² + I_B⁻¹ r_By²      −I_A⁻¹ r_Ax r_Ay − I_B⁻¹ r_Bx r_By ]
+//       [ −I_A⁻¹ r_Ax r_Ay − I_B⁻¹ r_Bx r_By      m_A⁻¹ + m_B⁻¹ + I_A⁻¹ r_Ax² + I_B⁻¹ r_Bx² ],
+// solved as one 2×2 block and softened like every rigid row (joint_rows.hpp).
+// Angular rows (spring, motor, limits): C = θ_B − θ_A − θ_ref, J v = ω_B − ω_A,
+// m_eff = 1/(I_A⁻¹ + I_B⁻¹). The spring is soft by its own hertz in every
+// pass; the motor drives ω_B − ω_A to the motor speed within ±h·maxTorque per
+// (sub)step; the limits are one-sided rows on θ − lower ≥ 0 and upper − θ ≥ 0.
+// Impulses: linear (point), spring, motor, lower, upper.
+#include <cmath>
+
+#include "joint_rows.hpp"
+#include "world_state.hpp"
+
+namespace i2d::detail {
+
+void prepareRevoluteJoint(const WorldState& w, const Joint& joint, JointConstraint& jc) {
+    const RevoluteJointDef& def = std::get<RevoluteJointDef>(joint.def);
+    const Body& bA = w.bodies[joint.bodyA];
+    const Body& bB = w.bodies[joint.bodyB];
+    jc.rA = rotate(bA.xf.q, def.localAnchorA - bA.localCenter);
+    jc.rB = rotate(bB.xf.q, def.localAnchorB - bB.localCenter);
+    RevoluteRow& row = jc.row.revolute;
+    const float k = jc.invIA + jc.invIB;
+    row.axialMass = k > 0.0f ? 1.0f / k : 0.0f;
+    row.referenceAngle = def.referenceAngle;
+    row.lowerAngle = def.lowerAngle;
+    row.upperAngle = def.upperAngle;
+    row.motorSpeed = def.motorSpeed;
+    row.maxMotorTorque = def.maxMotorTorque;
+    row.hertz = def.hertz;
+    row.dampingRatio = def.dampingRatio;
+    row.enableLimit = def.enableLimit;
+    row.enableMotor = def.enableMotor;
+    row.enableSpring = def.enableSpring;
+}
+
+void warmStartRevoluteJoint(const JointConstraint& jc, BodyState& sA, BodyState& sB) {
+    const Vec2 rA = rotate(sA.dq, jc.rA), rB = rotate(sB.dq, jc.rB);
+    const float axial = jc.impulses.spring + jc.impulses.motor + jc.impulses.lower - jc.impulses.upper;
+    applyImpulse(jc, rA, rB, jc.impulses.linear, axial, sA, sB);
+}
+
+void solveRevoluteJoint(JointConstraint& jc, const JointContext& ctx, BodyState& sA, BodyState& sB) {
+    const RevoluteRow& row = jc.row.revolute;
+    JointImpulses& acc = jc.impulses;
+    const float iA = jc.invIA, iB = jc.invIB;
+    const bool turns = iA + iB > 0.0f;
+    auto applyAngular = [&](float impulse) {
+        sA.w -= iA * impulse;
+        sB.w += iB * impulse;
+    };
+    float angle = 0.0f;
+    if (turns && (row.enableSpring || row.enableLimit))
+        angle = unwindAngle(relativeAngle(jc, sA, sB) - row.referenceAngle);
+
+    if (row.enableSpring && turns && row.hertz > 0.0f) {
+        const RowBias rb = springBias(makeSoft(row.hertz, row.dampingRatio, ctx.h), angle);
+        const float impulse = -rb.massScale * row.axialMass * (sB.w - sA.w + rb.bias) - rb.impulseScale * acc.spring;
+        acc.spring += impulse;
+        applyAngular(impulse);
+    }
+    if (row.enableMotor && turns) {
+        const float maxImpulse = ctx.h * row.maxMotorTorque;
+        float impulse = -row.axialMass * (sB.w - sA.w - row.motorSpeed);
+        impulse = boundedIncrement(acc.motor, impulse, -maxImpulse, maxImpulse);
+        applyAngular(impulse);
+    }
+    if (row.enableLimit && turns) {
+        // Lower: θ − lower ≥ 0, along +(ω_B − ω_A).
+        {
+            const RowBias rb = limitBias(ctx, angle - row.lowerAngle);
+            float impulse =
+                -rb.massScale * row.axialMass * (sB.w - sA.w + rb.bias) - rb.impulseScale * acc.lower;
+            impulse = boundedIncrement(acc.lower, impulse, 0.0f, INFINITY);
+            applyAngular(impulse);
+        }
+        // Upper: upper − θ ≥ 0, along −(ω_B − ω_A).
+        {
+            const RowBias rb = limitBias(ctx, row.upperAngle - angle);
+            float impulse =
+                -rb.massScale * row.axialMass * (sA.w - sB.w + rb.bias) - rb.impulseScale * acc.upper;
+            impulse = boundedIncrement(acc.upper, impulse, 0.0f, INFINITY);
+            applyAngular(-impulse);
+        }
+    }
+
+    // The point constraint, solved as one 2×2 block.
+    const Vec2 rA = rotate(sA.dq, jc.rA), rB = rotate(sB.dq, jc.rB);
+    const Vec2 cdot = (sB.v + cross(sB.w, rB)) - (sA.v + cross(sA.w, rA));
+    const Vec2 separation = (sB.dp - sA.dp) + (rB - rA) + jc.deltaCenter;
+    const RowBias rb = rigidBias(ctx, 1.0f);  // the rates, applied to each component of the separation
+    const float mA = jc.invMassA, mB = jc.invMassB;
+    const float k11 = mA + mB + rA.y * rA.y * iA + rB.y * rB.y * iB;
+    const float k12 = -rA.y * rA.x * iA - rB.y * rB.x * iB;
+    const float k22 = mA + mB + rA.x * rA.x * iA + rB.x * rB.x * iB;
+    const Vec2 x = solveSymmetric22(k11, k12, k22, cdot + rb.bias * separation);
+    const Vec2 impulse = -rb.massScale * x - rb.impulseScale * acc.linear;
+    acc.linear += impulse;
+    applyImpulse(jc, rA, rB, impulse, 0.0f, sA, sB);
+}
+
+}  // namespace i2d::detail
