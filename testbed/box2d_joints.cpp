@@ -97,18 +97,15 @@ b2Joint* wheel(b2World& world, b2WheelJointDef& jd, const i2d::WheelJointDef& d,
 }
 
 b2Joint* motor(b2World& world, b2MotorJointDef& jd, const i2d::MotorJointDef& d, const Note& note) {
-    // Impulse2D's offset joins the centres of mass, Box2D's the body origins:
-    // at the target pose B's origin is A's origin + lcA + offset − rot(angle)·lcB (in A's frame).
-    const b2Vec2 lcA = jd.bodyA->GetLocalCenter(), lcB = jd.bodyB->GetLocalCenter();
-    const b2Rot q(d.angularOffset);
-    jd.linearOffset = toB2(d.linearOffset) + lcA - b2Mul(q, lcB);
+    // Both engines hold body B's origin at linearOffset from body A's origin, in A's frame.
+    jd.linearOffset = toB2(d.linearOffset);
     jd.angularOffset = d.angularOffset;
     jd.maxForce = d.maxForce;
     jd.maxTorque = d.maxTorque;
     jd.correctionFactor = d.correctionFactor;
-    note("motor joints: Box2D 2.4.1 corrects the offset as a velocity bias (correction_factor / dt times the "
-         "error) inside its force and torque caps, once per step; its offset is between body origins (converted "
-         "from the scene's centres of mass)");
+    note("motor joints: Box2D 2.4.1 corrects the offset by a velocity bias of correction_factor / dt times the "
+         "error in its velocity iterations once per step, its force and torque caps applying to the whole step; "
+         "Impulse2D applies the same bias in every substep");
     return world.CreateJoint(&jd);
 }
 

@@ -102,7 +102,7 @@ void parseJointFields(const Obj& o, PendingJoint& pj) {
                 d.localAxisA = axis(o, d.localAxisA);
             } else if constexpr (std::is_same_v<D, i2d::MotorJointDef>) {
                 d.linearOffset = o.vec("linear_offset", d.linearOffset, kMaxCoordinate);
-                d.angularOffset = o.f("angular_offset", d.angularOffset, {-kMaxAngle, kMaxAngle});
+                d.angularOffset = o.f("angular_offset", d.angularOffset, {-kPi, kPi});
                 d.maxForce = o.f("max_force", d.maxForce, kForce);
                 d.maxTorque = o.f("max_torque", d.maxTorque, kForce);
                 d.correctionFactor = o.f("correction_factor", d.correctionFactor, {0, 1});
