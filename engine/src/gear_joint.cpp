@@ -28,8 +28,8 @@ struct GearPart {
     float jwX = 0.0f, jwF = 0.0f;
 };
 
-GearPart gearPart(bool prismatic, Vec2 axisF0, Vec2 rF0, Vec2 rX0, Vec2 deltaCenterFX, float start,
-                  const BodyState& sX, const BodyState& sF) {
+GearPart gearPart(bool prismatic, Vec2 axisF0, Vec2 rF0, Vec2 rX0, Vec2 deltaCenterFX, float start, const BodyState& sX,
+                  const BodyState& sF) {
     GearPart p;
     if (!prismatic) {
         p.delta = angleOf(invMulRot(sF.dq, sX.dq));
@@ -124,14 +124,18 @@ void prepareGearJoint(const WorldState& w, const Joint& joint, JointConstraint& 
     }
 }
 
-void warmStartGearJoint(const JointConstraint& jc, GearStates s) { applyGear(jc, gearNow(jc, s), jc.impulses.axial, s); }
+void warmStartGearJoint(const JointConstraint& jc, GearStates s) {
+    applyGear(jc, gearNow(jc, s), jc.impulses.axial, s);
+}
 
 void solveGearJoint(JointConstraint& jc, const JointContext& ctx, GearStates s) {
     const GearNow g = gearNow(jc, s);
     const float r = jc.row.gear.ratio;
     auto term = [](float m, float i, Vec2 jv, float jw) { return m * dot(jv, jv) + i * jw * jw; };
     const float k = term(jc.invMassA, jc.invIA, g.p1.jvX, g.p1.jwX) + term(jc.invMassC, jc.invIC, g.p1.jvF, g.p1.jwF) +
-                    r * r * (term(jc.invMassB, jc.invIB, g.p2.jvX, g.p2.jwX) + term(jc.invMassD, jc.invID, g.p2.jvF, g.p2.jwF));
+                    r * r *
+                        (term(jc.invMassB, jc.invIB, g.p2.jvX, g.p2.jwX) +
+                         term(jc.invMassD, jc.invID, g.p2.jvF, g.p2.jwF));
     const float mass = k > 0.0f ? 1.0f / k : 0.0f;
     const float cdot = dot(g.p1.jvX, s.a.v) + g.p1.jwX * s.a.w + dot(g.p1.jvF, s.c.v) + g.p1.jwF * s.c.w +
                        r * (dot(g.p2.jvX, s.b.v) + g.p2.jwX * s.b.w + dot(g.p2.jvF, s.d.v) + g.p2.jwF * s.d.w);

@@ -68,7 +68,8 @@ void colourJoints(SolverArrays& s) {
         offset += c;
     }
     s.jointScratch.resize(rows.size());
-    for (std::size_t i = 0; i < rows.size(); ++i) s.jointScratch[static_cast<std::size_t>(counts[colours[i]]++)] = rows[i];
+    for (std::size_t i = 0; i < rows.size(); ++i)
+        s.jointScratch[static_cast<std::size_t>(counts[colours[i]]++)] = rows[i];
     rows.swap(s.jointScratch);
 }
 
@@ -137,9 +138,7 @@ void warmStartJoints(WorldState& w) {
             case JointType::motor: warmStartMotorJoint(jc, sA, sB); break;
             case JointType::mouse: warmStartMouseJoint(jc, sA, sB); break;
             case JointType::pulley: warmStartPulleyJoint(jc, sA, sB); break;
-            case JointType::gear:
-                warmStartGearJoint(jc, {sA, sB, stateOf(s, jc.c, dC), stateOf(s, jc.d, dD)});
-                break;
+            case JointType::gear: warmStartGearJoint(jc, {sA, sB, stateOf(s, jc.c, dC), stateOf(s, jc.d, dD)}); break;
         }
     }
 }
@@ -226,9 +225,9 @@ void pushJoints(WorldState& w, const JointContext& ctx) {
     }
 }
 
-void storeJoints(WorldState& w, float dt) {
+void storeJoints(WorldState& w, float h) {
     SolverArrays& s = w.solver;
-    const float invDt = 1.0f / dt;
+    const float invDt = 1.0f / h;
     BodyState dA, dB, dC, dD;
     for (const JointConstraint& jc : s.joints) {
         Joint& joint = w.joints[jc.joint];
@@ -244,7 +243,7 @@ void storeJoints(WorldState& w, float dt) {
                 const Vec2 axis = normalize((sB.dp - sA.dp) + jc.deltaCenter + rB - rA);
                 const float axial = acc.axial + acc.lower - acc.upper;
                 force = (axial * invDt) * axis;
-                joint.lastForce = std::abs(axial) / dt;
+                joint.lastForce = std::abs(axial) * invDt;
                 break;
             }
             case JointType::revolute:

@@ -17,7 +17,9 @@ void solveJoints(WorldState& w, const JointContext& ctx);
 /// the pseudo-velocities (SolverArrays::biasV, biasW).
 void pushJoints(WorldState& w, const JointContext& ctx);
 /// Impulses back into the joints for the next warm start; reaction force,
-/// torque and motor effort of the step.
-void storeJoints(WorldState& w, float dt);
+/// torque and motor effort. `h` is the interval the accumulated impulses act
+/// over: the substep in soft_step (each substep re-solves from the warm
+/// start, so the accumulated impulse is one substep's), the step otherwise.
+void storeJoints(WorldState& w, float h);
 
 }  // namespace i2d::detail

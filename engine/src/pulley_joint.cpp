@@ -57,8 +57,7 @@ void solvePulleyJoint(JointConstraint& jc, const JointContext& ctx, BodyState& s
     const PulleyRow& row = jc.row.pulley;
     const PulleyFrame f = pulleyFrame(jc, sA, sB);
     const float ruA = cross(f.rA, f.uA), ruB = cross(f.rB, f.uB);
-    const float k = jc.invMassA + jc.invIA * ruA * ruA +
-                    row.ratio * row.ratio * (jc.invMassB + jc.invIB * ruB * ruB);
+    const float k = jc.invMassA + jc.invIA * ruA * ruA + row.ratio * row.ratio * (jc.invMassB + jc.invIB * ruB * ruB);
     const float mass = k > 0.0f ? 1.0f / k : 0.0f;
     const float cdot = dot(f.uA, sA.v + cross(sA.w, f.rA)) + row.ratio * dot(f.uB, sB.v + cross(sB.w, f.rB));
     const RowBias rb = rigidBias(ctx, f.lengthA + row.ratio * f.lengthB - row.constant);

@@ -75,16 +75,14 @@ void solveRevoluteJoint(JointConstraint& jc, const JointContext& ctx, BodyState&
         // Lower: θ − lower ≥ 0, along +(ω_B − ω_A).
         {
             const RowBias rb = limitBias(ctx, angle - row.lowerAngle);
-            float impulse =
-                -rb.massScale * row.axialMass * (sB.w - sA.w + rb.bias) - rb.impulseScale * acc.lower;
+            float impulse = -rb.massScale * row.axialMass * (sB.w - sA.w + rb.bias) - rb.impulseScale * acc.lower;
             impulse = boundedIncrement(acc.lower, impulse, 0.0f, INFINITY);
             applyAngular(impulse);
         }
         // Upper: upper − θ ≥ 0, along −(ω_B − ω_A).
         {
             const RowBias rb = limitBias(ctx, row.upperAngle - angle);
-            float impulse =
-                -rb.massScale * row.axialMass * (sA.w - sB.w + rb.bias) - rb.impulseScale * acc.upper;
+            float impulse = -rb.massScale * row.axialMass * (sA.w - sB.w + rb.bias) - rb.impulseScale * acc.upper;
             impulse = boundedIncrement(acc.upper, impulse, 0.0f, INFINITY);
             applyAngular(-impulse);
         }

@@ -271,7 +271,7 @@ void solve(WorldState& w, float dt) {
     }
 
     storeContactImpulses(w);
-    storeJoints(w, dt);
+    storeJoints(w, soft ? h : dt);
 
     // Write back: centre of mass, rotation, origin, velocities; clear forces.
     // The relax and restitution passes act after the last position update, so

@@ -59,8 +59,9 @@ void World::destroyBody(BodyId id) {
     w.checkUnlocked();
     int b = w.bodyIndex(id);
     // Joints first (they wake the other body), then shapes with their contacts.
-    std::vector<int> joints = w.bodies[b].joints;
-    for (int j : joints) detail::destroyJoint(w, j);
+    // One at a time from the front: destroying a joint also destroys the
+    // gear joints built on it, which may be further down this list.
+    while (!w.bodies[b].joints.empty()) detail::destroyJoint(w, w.bodies[b].joints.front());
     std::vector<int> shapes;
     for (int s : detail::bodyShapes(w.shapes, w.bodies[b])) shapes.push_back(s);
     for (int s : shapes) detail::destroyShape(w, s);

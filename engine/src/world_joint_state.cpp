@@ -109,8 +109,8 @@ Vec2 anchorOf(const detail::WorldState& w, int body, Vec2 local) { return transf
 
 // ---- Definitions ------------------------------------------------------------
 
-#define I2D_JOINT_DEF_ACCESSORS(Def, getter, setter)                                                   \
-    Def World::getter(JointId id) const { return defOf<Def>(state().joints[state().jointIndex(id)]); } \
+#define I2D_JOINT_DEF_ACCESSORS(Def, getter, setter)                                                                   \
+    Def World::getter(JointId id) const { return defOf<Def>(state().joints[state().jointIndex(id)]); }                 \
     void World::setter(JointId id, const Def& def) { setDef(state(), id, def); }
 
 I2D_JOINT_DEF_ACCESSORS(DistanceJointDef, distanceJointDef, setDistanceJointDef)

@@ -27,24 +27,12 @@ namespace {
 /// toward the pointer, on the effective mass at that point so that the
 /// spring stays stable for bodies grabbed far from their centre; it also
 /// carries the body's weight so the body hangs at the pointer.
-void applyDragForce(i2d::World& world, i2d::BodyId body, i2d::Vec2 localAnchor, i2d::Vec2 target) {
-    if (!world.isValid(body)) return;
-    i2d::Vec2 anchor = i2d::transformPoint(world.transform(body), localAnchor);
-    float mass = world.mass(body);
-    if (mass <= 0.0f) return;
-    float inertia = world.rotationalInertia(body);
-    i2d::Vec2 r = anchor - world.worldCenterOfMass(body);
-    float invMass = 1.0f / mass + (inertia > 0.0f ? i2d::lengthSquared(r) / inertia : 0.0f);
-    float effMass = 1.0f / invMass;
-    constexpr float omega = 2.0f * 3.14159265f * 5.0f;
-    constexpr float zeta = 0.7f;
-    i2d::Vec2 v = world.velocityAtPoint(body, anchor);
-    i2d::Vec2 force = effMass * (omega * omega * (target - anchor) - 2.0f * zeta * omega * v);
-    force -= mass * world.gravityScale(body) * world.gravity();
-    float maxForce = 2000.0f * mass;
-    float len = i2d::length(force);
-    if (len > maxForce) force *= maxForce / len;
-    world.applyForce(body, force, anchor, true);
+/// A static body of the world to hang the mouse joint on (any static body:
+/// the joint never moves it); one without shapes is added when there is none.
+i2d::BodyId staticReference(i2d::World& world) {
+    for (i2d::BodyId b : world.bodies())
+        if (world.bodyType(b) == i2d::BodyType::static_body) return b;
+    return world.createBody({});
 }
 
 struct SdlSession {
@@ -180,7 +168,7 @@ void ViewerController::apply(ViewerAction action) {
 }
 
 void ViewerController::stepOnce() {
-    if (drag_) applyDragForce(*scene_.world, drag_->body, drag_->localAnchor, mouse_);
+    if (drag_ && scene_.world->isValid(drag_->joint)) scene_.world->setMouseJointTarget(drag_->joint, mouse_);
     auto t0 = std::chrono::steady_clock::now();
     scene_.world->step(scene_.desc.dt);
     double ms = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - t0).count();
@@ -210,11 +198,24 @@ bool ViewerController::beginDrag(i2d::Vec2 p) {
     for (i2d::ShapeId shape : world.queryPoint(p)) {
         i2d::BodyId body = world.shapeBody(shape);
         if (world.bodyType(body) != i2d::BodyType::dynamic_body) continue;
-        drag_ = Drag{body, i2d::invTransformPoint(world.transform(body), p)};
-        world.setAwake(body, true);
+        // A 5 Hz spring, damped at 0.7, pulling with up to a thousand times
+        // the body's weight: quick, firm, yet unable to launch it.
+        const float weight = world.mass(body) * std::max(i2d::length(world.gravity()), 1.0f);
+        const i2d::JointId joint = world.createMouseJoint({.bodyA = staticReference(world),
+                                                           .bodyB = body,
+                                                           .target = p,
+                                                           .hertz = 5.0f,
+                                                           .dampingRatio = 0.7f,
+                                                           .maxForce = 1000.0f * weight});
+        drag_ = Drag{body, joint, i2d::invTransformPoint(world.transform(body), p)};
         return true;
     }
     return false;
+}
+
+void ViewerController::endDrag() {
+    if (drag_ && scene_.world->isValid(drag_->joint)) scene_.world->destroyJoint(drag_->joint);
+    drag_.reset();
 }
 
 std::string ViewerController::statusLine() const {

@@ -8,7 +8,8 @@
 // down / page up) next / previous scene, m position correction mode,
 // i impact model, z sleeping on/off, + / - velocity iterations, . / ,
 // substeps, c contacts, a AABBs, j joints, h help line, q / escape quit.
-// Mouse: drag a dynamic body (a damped spring to the pointer); wheel zooms.
+// Mouse: drag a dynamic body (a mouse joint pulls the grabbed point to the
+// pointer); wheel zooms.
 // With --screenshot the viewer steps N frames, saves the window as PNG and quits.
 #pragma once
 
@@ -84,7 +85,7 @@ public:
     /// Grabs the dynamic body under the world point; false when there is none.
     bool beginDrag(i2d::Vec2 worldPoint);
     void moveMouse(i2d::Vec2 worldPoint) { mouse_ = worldPoint; }
-    void endDrag() { drag_.reset(); }
+    void endDrag();
     bool dragging() const { return drag_.has_value(); }
 
     /// Draws the world, the drag line and the text lines into a frame begun on `view()`.
@@ -103,8 +104,10 @@ public:
     const std::string& message() const { return message_; }
 
 private:
+    /// A body being dragged by a mouse joint to the pointer.
     struct Drag {
         i2d::BodyId body{};
+        i2d::JointId joint{};
         i2d::Vec2 localAnchor{};
     };
     void changeSettings(const std::function<void(i2d::WorldSettings&)>& change);

@@ -1,5 +1,5 @@
 // Fuzz target: a world driven by a random sequence of operations — create
-// and destroy bodies, shapes and joints, apply impulses and forces, teleport,
+// and destroy bodies, shapes and joints of every type, apply impulses and forces, teleport,
 // change types and settings, step — interleaved with calls carrying
 // arbitrary floats (NaN, infinities, huge values) and stale handles.
 // Properties: refused calls throw i2d::Error and change nothing; after every
@@ -218,18 +218,118 @@ struct Driver {
             return;
         }
         if (live.size() < 2) return;
-        DistanceJointDef def{.bodyA = pickLive(),
-                             .bodyB = pickLive(),
-                             .localAnchorA = vec(0.5f),
-                             .localAnchorB = vec(0.5f),
-                             .length = maybeBad(0.1f, 5.0f),
-                             .enableSpring = in.flag(),
-                             .hertz = range(0.0f, 10.0f),
-                             .dampingRatio = range(0.0f, 2.0f),
-                             .enableLimit = in.flag(),
-                             .minLength = range(0.0f, 2.0f),
-                             .maxLength = range(2.0f, 6.0f)};
-        attempt([&] { joints.push_back(world.createDistanceJoint(def)); }, __LINE__);
+        const BodyId a = pickLive(), b = pickLive();
+        switch (in.integer(0, 8)) {
+            case 0: {
+                DistanceJointDef def{.bodyA = a,
+                                     .bodyB = b,
+                                     .localAnchorA = vec(0.5f),
+                                     .localAnchorB = vec(0.5f),
+                                     .length = maybeBad(0.1f, 5.0f),
+                                     .enableSpring = in.flag(),
+                                     .hertz = range(0.0f, 10.0f),
+                                     .dampingRatio = range(0.0f, 2.0f),
+                                     .enableLimit = in.flag(),
+                                     .minLength = range(0.0f, 2.0f),
+                                     .maxLength = range(2.0f, 6.0f)};
+                attempt([&] { joints.push_back(world.createDistanceJoint(def)); }, __LINE__);
+                break;
+            }
+            case 1: {
+                RevoluteJointDef def{.bodyA = a,
+                                     .bodyB = b,
+                                     .localAnchorA = vec(0.5f),
+                                     .localAnchorB = vec(0.5f),
+                                     .referenceAngle = maybeBad(-1.0f, 1.0f),
+                                     .enableLimit = in.flag(),
+                                     .lowerAngle = range(-3.0f, 0.5f),
+                                     .upperAngle = range(-0.5f, 3.0f),
+                                     .enableMotor = in.flag(),
+                                     .motorSpeed = maybeBad(-20.0f, 20.0f),
+                                     .maxMotorTorque = maybeBad(0.0f, 1000.0f),
+                                     .enableSpring = in.flag(),
+                                     .hertz = range(0.0f, 10.0f),
+                                     .dampingRatio = range(0.0f, 2.0f)};
+                attempt([&] { joints.push_back(world.createRevoluteJoint(def)); }, __LINE__);
+                break;
+            }
+            case 2: {
+                PrismaticJointDef def{.bodyA = a,
+                                      .bodyB = b,
+                                      .localAnchorA = vec(0.5f),
+                                      .localAnchorB = vec(0.5f),
+                                      .localAxisA = vec(1.0f),
+                                      .enableLimit = in.flag(),
+                                      .lowerTranslation = range(-3.0f, 0.5f),
+                                      .upperTranslation = maybeBad(-0.5f, 3.0f),
+                                      .enableMotor = in.flag(),
+                                      .motorSpeed = range(-10.0f, 10.0f),
+                                      .maxMotorForce = maybeBad(0.0f, 1000.0f),
+                                      .enableSpring = in.flag(),
+                                      .hertz = range(0.0f, 10.0f),
+                                      .dampingRatio = range(0.0f, 2.0f)};
+                attempt([&] { joints.push_back(world.createPrismaticJoint(def)); }, __LINE__);
+                break;
+            }
+            case 3: {
+                WeldJointDef def{.bodyA = a,
+                                 .bodyB = b,
+                                 .localAnchorA = vec(0.5f),
+                                 .localAnchorB = vec(0.5f),
+                                 .linearHertz = range(0.0f, 10.0f),
+                                 .angularHertz = maybeBad(0.0f, 10.0f)};
+                attempt([&] { joints.push_back(world.createWeldJoint(def)); }, __LINE__);
+                break;
+            }
+            case 4: {
+                WheelJointDef def{.bodyA = a,
+                                  .bodyB = b,
+                                  .localAnchorA = vec(0.5f),
+                                  .localAnchorB = vec(0.5f),
+                                  .localAxisA = vec(1.0f),
+                                  .hertz = maybeBad(0.0f, 10.0f),
+                                  .enableMotor = in.flag(),
+                                  .motorSpeed = range(-20.0f, 20.0f),
+                                  .maxMotorTorque = range(0.0f, 100.0f)};
+                attempt([&] { joints.push_back(world.createWheelJoint(def)); }, __LINE__);
+                break;
+            }
+            case 5: {
+                MotorJointDef def{.bodyA = a,
+                                  .bodyB = b,
+                                  .linearOffset = vec(2.0f),
+                                  .angularOffset = range(-1.0f, 1.0f),
+                                  .maxForce = maybeBad(0.0f, 1000.0f),
+                                  .maxTorque = range(0.0f, 100.0f),
+                                  .correctionFactor = range(0.0f, 1.0f)};
+                attempt([&] { joints.push_back(world.createMotorJoint(def)); }, __LINE__);
+                break;
+            }
+            case 6: {
+                MouseJointDef def{.bodyA = a, .bodyB = b, .target = vec(5.0f), .maxForce = maybeBad(0.0f, 1.0e4f)};
+                attempt([&] { joints.push_back(world.createMouseJoint(def)); }, __LINE__);
+                break;
+            }
+            case 7: {
+                PulleyJointDef def{.bodyA = a,
+                                   .bodyB = b,
+                                   .groundAnchorA = vec(5.0f),
+                                   .groundAnchorB = vec(5.0f),
+                                   .lengthA = range(0.5f, 5.0f),
+                                   .lengthB = range(0.5f, 5.0f),
+                                   .ratio = maybeBad(0.2f, 3.0f)};
+                attempt([&] { joints.push_back(world.createPulleyJoint(def)); }, __LINE__);
+                break;
+            }
+            default: {
+                if (joints.size() < 2) return;
+                const JointId j1 = joints[in.integer<std::size_t>(0, joints.size() - 1)];
+                const JointId j2 = joints[in.integer<std::size_t>(0, joints.size() - 1)];
+                GearJointDef def{.joint1 = j1, .joint2 = j2, .ratio = maybeBad(-3.0f, 3.0f)};
+                attempt([&] { joints.push_back(world.createGearJoint(def)); }, __LINE__);
+                break;
+            }
+        }
     }
 
     void settings() {

@@ -541,8 +541,11 @@ TEST(ViewerControl, MouseDragPullsTheGrabbedBody) {
     EXPECT_FALSE(v.beginDrag({0.0f, 12.0f})) << "empty space";
     EXPECT_FALSE(v.beginDrag({0.0f, -1.0f})) << "static ground";
     const i2d::Vec2 start = ballPosition(v);
+    const int joints = v.scene().world->jointCount();
     ASSERT_TRUE(v.beginDrag(start));
     EXPECT_TRUE(v.dragging());
+    // The drag is a mouse joint, removed when the drag ends.
+    EXPECT_EQ(v.scene().world->jointCount(), joints + 1);
     v.moveMouse(start + i2d::Vec2{2.0f, 3.0f});
     for (int i = 0; i < 60; ++i) v.stepOnce();
     const i2d::Vec2 pulled = ballPosition(v);
@@ -550,6 +553,7 @@ TEST(ViewerControl, MouseDragPullsTheGrabbedBody) {
     EXPECT_NEAR(pulled.y, start.y + 3.0f, 0.5f);
     v.endDrag();
     EXPECT_FALSE(v.dragging());
+    EXPECT_EQ(v.scene().world->jointCount(), joints);
     for (int i = 0; i < 30; ++i) v.stepOnce();
     EXPECT_LT(ballPosition(v).y, pulled.y) << "falls again once released";
 }
