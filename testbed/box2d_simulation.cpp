@@ -3,7 +3,7 @@
 // Box2D is the reference the validation and benchmarks hold Impulse2D
 // against; it lives in the testbed, never in the engine. The mapping keeps
 // what both engines share (bodies, materials, circles, polygons, segments,
-// distance constraints, gravity, damping) identical, gives every dynamic body
+// joints of every type, gravity, damping) identical, gives every dynamic body
 // the mass properties Impulse2D computes for it, and lists in notes() what
 // Box2D 2.4.1 has no equivalent for, so nothing is dropped silently.
 #include <box2d/box2d.h>
@@ -11,6 +11,7 @@
 #include <cmath>
 #include <set>
 
+#include "box2d_joints.hpp"
 #include "simulation.hpp"
 
 namespace tb {
@@ -241,27 +242,22 @@ private:
         }
     }
 
-    void createJoint(const SceneDesc& desc, const DistanceJointDesc& j, std::size_t index) {
+    void createJoint(const SceneDesc& desc, const JointDesc& j, std::size_t index) {
+        const std::string where = (desc.file.empty() ? desc.name : desc.file) + ": joints[" + std::to_string(index) +
+                                  "]";
         if (j.bodyA < 0 || j.bodyB < 0 || j.bodyA >= bodyCount() || j.bodyB >= bodyCount())
-            throw SceneError((desc.file.empty() ? desc.name : desc.file) + ": joints[" + std::to_string(index) +
-                             "]: body index out of range");
-        b2DistanceJointDef jd;
-        jd.bodyA = bodies_[static_cast<std::size_t>(j.bodyA)];
-        jd.bodyB = bodies_[static_cast<std::size_t>(j.bodyB)];
-        jd.localAnchorA = toB2(j.def.localAnchorA);
-        jd.localAnchorB = toB2(j.def.localAnchorB);
-        jd.length = j.def.length;
-        jd.collideConnected = j.def.collideConnected;
-        // Box2D 2.4.1's distance joint is rigid when minLength == maxLength,
-        // otherwise a spring (stiffness > 0) and/or a length range.
-        if (!j.def.enableSpring) {
-            jd.minLength = jd.maxLength = j.def.length;
-        } else {
-            b2LinearStiffness(jd.stiffness, jd.damping, j.def.hertz, j.def.dampingRatio, jd.bodyA, jd.bodyB);
-            jd.minLength = j.def.enableLimit ? j.def.minLength : 0.0f;
-            jd.maxLength = j.def.enableLimit ? j.def.maxLength : b2_maxFloat;
+            throw SceneError(where + ": body index out of range");
+        if (j.type() == i2d::JointType::gear) {
+            // Box2D 2.4.1 asserts (or crashes without asserts) on a gear over anything else.
+            for (int k : {j.joint1, j.joint2}) {
+                if (k < 0 || k >= static_cast<int>(joints_.size()))
+                    throw SceneError(where + ": a gear must refer to joints before it");
+                const b2JointType t = joints_[static_cast<std::size_t>(k)]->GetType();
+                if (t != e_revoluteJoint && t != e_prismaticJoint)
+                    throw SceneError(where + ": a gear couples revolute or prismatic joints");
+            }
         }
-        world_.CreateJoint(&jd);
+        joints_.push_back(createBox2DJoint(world_, bodies_, joints_, j, [this](const std::string& s) { note(s); }));
     }
 
     void describeDifferences(const SceneDesc& desc) {
@@ -292,6 +288,7 @@ private:
     b2World world_;
     Box2DSettings settings_;
     std::vector<b2Body*> bodies_;
+    std::vector<b2Joint*> joints_;  ///< joints_[i] made from desc.joints[i]
     std::set<std::string> noted_;
 };
 

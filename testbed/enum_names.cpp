@@ -12,6 +12,7 @@ using PC = i2d::PositionCorrection;
 using IM = i2d::ImpactModel;
 using BT = i2d::BodyType;
 using ST = i2d::ShapeType;
+using JT = i2d::JointType;
 
 constexpr std::array<EnumName<PC>, 3> kCorrections{{
     {PC::soft_step, "soft_step"},
@@ -35,6 +36,18 @@ constexpr std::array<EnumName<ST>, 4> kShapeTypes{{
     {ST::capsule, "capsule"},
     {ST::segment, "segment"},
     {ST::polygon, "polygon"},
+}};
+
+constexpr std::array<EnumName<JT>, 9> kJointTypes{{
+    {JT::distance, "distance"},
+    {JT::revolute, "revolute"},
+    {JT::prismatic, "prismatic"},
+    {JT::weld, "weld"},
+    {JT::wheel, "wheel"},
+    {JT::motor, "motor"},
+    {JT::mouse, "mouse"},
+    {JT::pulley, "pulley"},
+    {JT::gear, "gear"},
 }};
 
 constexpr std::array<EnumName<EngineKind>, 2> kEngines{{
@@ -68,6 +81,10 @@ std::span<const EnumName<BT>> enumNames() {
 template <>
 std::span<const EnumName<ST>> enumNames() {
     return kShapeTypes;
+}
+template <>
+std::span<const EnumName<JT>> enumNames() {
+    return kJointTypes;
 }
 template <>
 std::span<const EnumName<EngineKind>> enumNames() {

@@ -36,6 +36,8 @@ std::span<const EnumName<i2d::BodyType>> enumNames();  // dynamic, static, kinem
 template <>
 std::span<const EnumName<i2d::ShapeType>> enumNames();  // circle, capsule, segment, polygon
 template <>
+std::span<const EnumName<i2d::JointType>> enumNames();  // distance, revolute, prismatic, weld, wheel, motor, ...
+template <>
 std::span<const EnumName<EngineKind>> enumNames();  // impulse2d, box2d
 template <>
 std::span<const EnumName<ErrorMetric>> enumNames();  // max_excursion, ...; none has no name

@@ -4,6 +4,7 @@
 #include <algorithm>
 #include <cmath>
 #include <map>
+#include <variant>
 
 #include "enum_names.hpp"
 #include "metrics.hpp"
@@ -74,17 +75,19 @@ void ErrorTracker::start(const Simulation& sim) {
             const i2d::Vec2 g = desc_.settings.gravity;
             energy0_ = computeEnergy(sim, g).total();
             swing_ = 0.0;
-            for (const DistanceJointDesc& j : desc_.joints) {
+            for (const JointDesc& j : desc_.joints) {
+                const auto* d = std::get_if<i2d::DistanceJointDef>(&j.def);
+                if (!d) continue;
                 BodySample a = sim.sample(j.bodyA), b = sim.sample(j.bodyB);
-                i2d::Vec2 anchorLocal = j.def.localAnchorA;
+                i2d::Vec2 anchorLocal = d->localAnchorA;
                 if (!b.dynamic) {
                     std::swap(a, b);
-                    anchorLocal = j.def.localAnchorB;
+                    anchorLocal = d->localAnchorB;
                 }
                 if (a.dynamic || !b.dynamic) continue;
                 const float c = std::cos(a.angle), sn = std::sin(a.angle);
                 const float anchorY = a.y + sn * anchorLocal.x + c * anchorLocal.y;
-                const float lowest = anchorY - j.def.length;
+                const float lowest = anchorY - d->length;
                 swing_ += double(b.mass) * std::hypot(g.x, g.y) * std::max(0.0f, b.y - lowest);
             }
             break;

@@ -15,7 +15,7 @@ public:
         // bodies and joints are not kept (the Box2D backend keeps none either,
         // so memory figures compare the two engines, not the testbed).
         std::vector<BodyDesc>().swap(scene_.desc.bodies);
-        std::vector<DistanceJointDesc>().swap(scene_.desc.joints);
+        std::vector<JointDesc>().swap(scene_.desc.joints);
     }
 
     EngineKind engine() const override { return EngineKind::impulse2d; }

@@ -3,6 +3,8 @@
 
 #include <algorithm>
 #include <cmath>
+#include <type_traits>
+#include <variant>
 
 namespace tb {
 
@@ -37,16 +39,39 @@ i2d::Vec2 worldPoint(const BodySample& s, i2d::Vec2 local) {
 
 }  // namespace
 
-float jointError(const DistanceJointDesc& j, const BodySample& a, const BodySample& b) {
-    const float d = i2d::distance(worldPoint(a, j.def.localAnchorA), worldPoint(b, j.def.localAnchorB));
-    if (!j.def.enableSpring) return std::abs(d - j.def.length);
-    if (!j.def.enableLimit) return 0.0f;
-    return std::max({0.0f, d - j.def.maxLength, j.def.minLength - d});
+float jointError(const JointDesc& j, const BodySample& a, const BodySample& b) {
+    return std::visit(
+        [&](const auto& d) -> float {
+            using D = std::decay_t<decltype(d)>;
+            if constexpr (std::is_same_v<D, i2d::DistanceJointDef>) {
+                const float len = i2d::distance(worldPoint(a, d.localAnchorA), worldPoint(b, d.localAnchorB));
+                if (!d.enableSpring) return std::abs(len - d.length);
+                if (!d.enableLimit) return 0.0f;
+                return std::max({0.0f, len - d.maxLength, d.minLength - len});
+            } else if constexpr (std::is_same_v<D, i2d::RevoluteJointDef> || std::is_same_v<D, i2d::WeldJointDef>) {
+                return i2d::distance(worldPoint(a, d.localAnchorA), worldPoint(b, d.localAnchorB));
+            } else if constexpr (std::is_same_v<D, i2d::PrismaticJointDef> || std::is_same_v<D, i2d::WheelJointDef>) {
+                // Off the axis, and beyond the translation limit when there is one.
+                const i2d::Vec2 axis = i2d::normalize(worldPoint(a, d.localAxisA) - worldPoint(a, {}));
+                const i2d::Vec2 gap = worldPoint(b, d.localAnchorB) - worldPoint(a, d.localAnchorA);
+                const float along = i2d::dot(gap, axis);
+                float err = std::abs(i2d::cross(axis, gap));
+                if (d.enableLimit) err = std::max({err, along - d.upperTranslation, d.lowerTranslation - along});
+                return err;
+            } else if constexpr (std::is_same_v<D, i2d::PulleyJointDef>) {
+                const float la = i2d::distance(d.groundAnchorA, worldPoint(a, d.localAnchorA));
+                const float lb = i2d::distance(d.groundAnchorB, worldPoint(b, d.localAnchorB));
+                return std::abs(la + d.ratio * lb - (d.lengthA + d.ratio * d.lengthB));
+            } else {
+                return 0.0f;  // motor and mouse joints are drives, a gear couples angles and translations
+            }
+        },
+        j.def);
 }
 
 float maxJointError(const SceneDesc& desc, const Simulation& sim) {
     float worst = 0.0f;
-    for (const DistanceJointDesc& j : desc.joints)
+    for (const JointDesc& j : desc.joints)
         worst = std::max(worst, jointError(j, sim.sample(j.bodyA), sim.sample(j.bodyB)));
     return worst;
 }

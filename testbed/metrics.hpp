@@ -22,11 +22,15 @@ Energy computeEnergy(const Simulation& sim, i2d::Vec2 gravity);
 /// True when every body's position, angle and velocities are finite.
 bool allFinite(const Simulation& sim);
 
-/// How far the scene's constraints are from what they ask: for a rigid
-/// distance joint |d − L|, for a length range the amount d lies outside
-/// [min, max]; springs without a range are not constraints and count 0.
-/// d is measured between the world anchors computed from the body samples.
-float jointError(const DistanceJointDesc& joint, const BodySample& a, const BodySample& b);
+/// How far a joint is from what it asks (m), from the world anchors computed
+/// from the body samples: for a rigid distance joint |d − L|, for a length
+/// range the amount d lies outside [min, max] (springs without a range count
+/// 0); revolute and weld joints: the distance between the anchors; prismatic
+/// and wheel joints: anchor B's distance from the axis line, or how far it
+/// lies beyond the translation limit, whichever is larger; pulley joints:
+/// |lengthA + ratio·lengthB − its rest value|. Motor, mouse and gear joints
+/// count 0 (drives, and a coupling of angles with translations).
+float jointError(const JointDesc& joint, const BodySample& a, const BodySample& b);
 /// Largest jointError over the scene's joints (0 when it has none).
 float maxJointError(const SceneDesc& desc, const Simulation& sim);
 

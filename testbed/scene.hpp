@@ -12,6 +12,8 @@
 #include <optional>
 #include <stdexcept>
 #include <string>
+#include <type_traits>
+#include <variant>
 #include <vector>
 
 namespace tb {
@@ -37,10 +39,33 @@ struct BodyDesc {
     std::vector<ShapeDesc> shapes;
 };
 
-struct DistanceJointDesc {
-    int bodyA = -1;  ///< index into SceneDesc::bodies
-    int bodyB = -1;
-    i2d::DistanceJointDef def{};  ///< bodyA/bodyB handles filled when built
+/// Every joint definition, in the order of i2d::JointType (def.index() is the type).
+using JointDefs =
+    std::variant<i2d::DistanceJointDef, i2d::RevoluteJointDef, i2d::PrismaticJointDef, i2d::WeldJointDef,
+                 i2d::WheelJointDef, i2d::MotorJointDef, i2d::MouseJointDef, i2d::PulleyJointDef, i2d::GearJointDef>;
+static_assert(std::variant_size_v<JointDefs> == static_cast<std::size_t>(i2d::JointType::gear) + 1);
+static_assert(std::is_same_v<std::variant_alternative_t<static_cast<std::size_t>(i2d::JointType::wheel), JointDefs>,
+                             i2d::WheelJointDef>);
+
+/// One joint of a scene. Body handles (and a gear's joint handles) in `def`
+/// are filled when the scene is built; the indices here say which.
+struct JointDesc {
+    std::string name;  ///< empty when unnamed; a gear may name the joints it couples
+    int bodyA = -1;    ///< index into SceneDesc::bodies (a gear: joint1's bodyB)
+    int bodyB = -1;    ///< (a gear: joint2's bodyB)
+    int joint1 = -1;   ///< a gear only: index into SceneDesc::joints of an earlier revolute or prismatic joint
+    int joint2 = -1;
+    JointDefs def{};  ///< distance unless set otherwise
+
+    i2d::JointType type() const { return static_cast<i2d::JointType>(def.index()); }
+    template <class Def>
+    const Def& as() const {
+        return std::get<Def>(def);
+    }
+    template <class Def>
+    Def& as() {
+        return std::get<Def>(def);
+    }
 };
 
 struct Camera {
@@ -55,8 +80,8 @@ struct SceneDesc {
     i2d::WorldSettings settings{};
     float dt = 1.0f / 60.0f;
     std::vector<BodyDesc> bodies;
-    std::vector<DistanceJointDesc> joints;
-    std::optional<Camera> camera;  ///< none: fit the scene's bounds
+    std::vector<JointDesc> joints;  ///< in creation order (a gear after the joints it couples)
+    std::optional<Camera> camera;   ///< none: fit the scene's bounds
 };
 
 /// A scene built as an Impulse2D world.

@@ -2,6 +2,9 @@
 #include "scene_build.hpp"
 
 #include <string>
+#include <type_traits>
+#include <variant>
+#include <vector>
 
 namespace tb {
 namespace {
@@ -48,17 +51,50 @@ Scene buildScene(const SceneDesc& desc) {
         scene.bodies.push_back(id);
         if (!b.name.empty()) scene.named[b.name] = id;
     }
+    std::vector<i2d::JointId> joints;
+    joints.reserve(desc.joints.size());
     for (std::size_t i = 0; i < desc.joints.size(); ++i) {
-        const DistanceJointDesc& j = desc.joints[i];
+        const JointDesc& j = desc.joints[i];
         std::string where = "joints[" + std::to_string(i) + "]";
-        if (j.bodyA < 0 || j.bodyB < 0 || j.bodyA >= static_cast<int>(scene.bodies.size()) ||
-            j.bodyB >= static_cast<int>(scene.bodies.size()))
+        const int bodies = static_cast<int>(scene.bodies.size());
+        if (j.bodyA < 0 || j.bodyB < 0 || j.bodyA >= bodies || j.bodyB >= bodies)
             throw SceneError((desc.file.empty() ? desc.name : desc.file) + ": " + where + ": body index out of range");
-        i2d::DistanceJointDef def = j.def;
-        def.bodyA = scene.bodies[static_cast<std::size_t>(j.bodyA)];
-        def.bodyB = scene.bodies[static_cast<std::size_t>(j.bodyB)];
+        if (j.type() == i2d::JointType::gear &&
+            (j.joint1 < 0 || j.joint2 < 0 || j.joint1 >= static_cast<int>(i) || j.joint2 >= static_cast<int>(i)))
+            throw SceneError((desc.file.empty() ? desc.name : desc.file) + ": " + where +
+                             ": a gear must refer to joints before it");
+        const i2d::BodyId a = scene.bodies[static_cast<std::size_t>(j.bodyA)];
+        const i2d::BodyId b = scene.bodies[static_cast<std::size_t>(j.bodyB)];
         try {
-            world.createDistanceJoint(def);
+            joints.push_back(std::visit(
+                [&](auto d) -> i2d::JointId {
+                    using D = decltype(d);
+                    if constexpr (std::is_same_v<D, i2d::GearJointDef>) {
+                        d.joint1 = joints[static_cast<std::size_t>(j.joint1)];
+                        d.joint2 = joints[static_cast<std::size_t>(j.joint2)];
+                        return world.createGearJoint(d);
+                    } else {
+                        d.bodyA = a;
+                        d.bodyB = b;
+                        if constexpr (std::is_same_v<D, i2d::DistanceJointDef>)
+                            return world.createDistanceJoint(d);
+                        else if constexpr (std::is_same_v<D, i2d::RevoluteJointDef>)
+                            return world.createRevoluteJoint(d);
+                        else if constexpr (std::is_same_v<D, i2d::PrismaticJointDef>)
+                            return world.createPrismaticJoint(d);
+                        else if constexpr (std::is_same_v<D, i2d::WeldJointDef>)
+                            return world.createWeldJoint(d);
+                        else if constexpr (std::is_same_v<D, i2d::WheelJointDef>)
+                            return world.createWheelJoint(d);
+                        else if constexpr (std::is_same_v<D, i2d::MotorJointDef>)
+                            return world.createMotorJoint(d);
+                        else if constexpr (std::is_same_v<D, i2d::MouseJointDef>)
+                            return world.createMouseJoint(d);
+                        else
+                            return world.createPulleyJoint(d);
+                    }
+                },
+                j.def));
         } catch (const i2d::Error& e) {
             refused(desc, where, e);
         }

@@ -65,7 +65,7 @@ void TraceWriter::afterStep(long step, const Simulation& sim) {
         if (!(speed <= maxSpeed)) maxSpeed = speed;
     }
     float jointErr = 0.0f;
-    for (const DistanceJointDesc& j : joints_) {
+    for (const JointDesc& j : joints_) {
         const float err = jointError(j, sim.sample(j.bodyA), sim.sample(j.bodyB));
         if (!(err <= jointErr)) jointErr = err;
     }

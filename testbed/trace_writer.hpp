@@ -59,7 +59,7 @@ private:
     std::ofstream out_;
     float dt_ = 0.0f;
     i2d::Vec2 gravity_{};
-    std::vector<DistanceJointDesc> joints_;
+    std::vector<JointDesc> joints_;
     std::vector<std::pair<std::string, int>> named_;  ///< name, body index; sorted by name
     long lastStep_ = 0;
     bool closed_ = false;

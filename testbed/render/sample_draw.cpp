@@ -3,6 +3,8 @@
 
 #include <algorithm>
 #include <cmath>
+#include <type_traits>
+#include <variant>
 
 namespace tb {
 
@@ -57,13 +59,29 @@ void drawSimulation(i2d::DebugDraw& dd, const SceneDesc& desc, const Simulation&
         }
     }
     if (!dd.drawJoints) return;
-    for (const DistanceJointDesc& j : desc.joints) {
+    const i2d::Color c = colour ? *colour : i2d::Color{0.8f, 0.3f, 0.8f, 1.0f};
+    for (const JointDesc& j : desc.joints) {
         if (j.bodyA < 0 || j.bodyB < 0 || j.bodyA >= n || j.bodyB >= n) continue;
         const BodySample a = sim.sample(j.bodyA), b = sim.sample(j.bodyB);
         if (!finitePose(a) || !finitePose(b)) continue;
-        const i2d::Color c = colour ? *colour : i2d::Color{0.8f, 0.3f, 0.8f, 1.0f};
-        dd.drawSegment(i2d::transformPoint(poseOf(a), j.def.localAnchorA),
-                       i2d::transformPoint(poseOf(b), j.def.localAnchorB), c);
+        const i2d::Transform xa = poseOf(a), xb = poseOf(b);
+        std::visit(
+            [&](const auto& d) {
+                using D = std::decay_t<decltype(d)>;
+                if constexpr (std::is_same_v<D, i2d::PulleyJointDef>) {
+                    // The rope: anchor A, over both pulleys, to anchor B.
+                    dd.drawSegment(i2d::transformPoint(xa, d.localAnchorA), d.groundAnchorA, c);
+                    dd.drawSegment(d.groundAnchorA, d.groundAnchorB, c);
+                    dd.drawSegment(d.groundAnchorB, i2d::transformPoint(xb, d.localAnchorB), c);
+                } else if constexpr (std::is_same_v<D, i2d::MouseJointDef>) {
+                    dd.drawSegment(d.target, {b.cx, b.cy}, c);
+                } else if constexpr (requires { d.localAnchorA; }) {
+                    dd.drawSegment(i2d::transformPoint(xa, d.localAnchorA), i2d::transformPoint(xb, d.localAnchorB), c);
+                } else {
+                    dd.drawSegment({a.cx, a.cy}, {b.cx, b.cy}, c);  // motor and gear joints: centre to centre
+                }
+            },
+            j.def);
     }
 }
 

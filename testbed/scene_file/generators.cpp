@@ -9,6 +9,29 @@
 
 namespace tb::scene_file {
 
+namespace {
+
+// The joint type of a chain ("joint_type") or a grid's links ("type"): distance (default) or revolute.
+i2d::JointType linkJointType(const Obj& o, const char* key) {
+    const i2d::JointType t = enumField(o, key, i2d::JointType::distance);
+    if (t != i2d::JointType::distance && t != i2d::JointType::revolute)
+        fail(o.at(key), "generators join bodies by \"distance\" or \"revolute\" joints");
+    return t;
+}
+
+void setAnchors(PendingJoint& pj, i2d::Vec2 a, i2d::Vec2 b) {
+    std::visit(
+        [&](auto& d) {
+            if constexpr (requires { d.localAnchorA; }) {
+                d.localAnchorA = a;
+                d.localAnchorB = b;
+            }
+        },
+        pj.def);
+}
+
+}  // namespace
+
 // Generators: see docs/scene-format.md, "Generators".
 void expandGenerator(const json& j, const Loc& loc, Builder& bld) {
     Obj o(j, loc, {"comment", "generator", "body", "name_prefix", "name_first", "name_last", "name_at"});
@@ -20,8 +43,8 @@ void expandGenerator(const json& j, const Loc& loc, Builder& bld) {
     } else if (kind == "pyramid") {
         o.allow({"base", "origin", "spacing", "copies", "copy_step"});
     } else if (kind == "chain") {
-        o.allow({"count", "origin", "step", "anchor_prev", "anchor_next", "length", "spring", "limit",
-                 "collide_connected", "attach_start", "attach_end"});
+        o.allow({"count", "origin", "step", "anchor_prev", "anchor_next", "joint_type", "attach_start", "attach_end"});
+        allowJointOptions(o, linkJointType(o, "joint_type"));
     } else {
         fail(o.at("generator"), "unknown generator \"" + kind + "\" (expected row, grid, pyramid or chain)");
     }
@@ -119,13 +142,21 @@ void expandGenerator(const json& j, const Loc& loc, Builder& bld) {
     if (kind == "grid" && o.has("link")) {
         // Joints between each body and its right and upper neighbours, centre to centre.
         if (o.has("copies")) fail(o.at("link"), "link cannot be combined with copies");
-        Obj lo(o.get("link"), o.at("link"), {"comment", "length", "spring", "limit", "collide_connected"});
+        Obj lo(o.get("link"), o.at("link"), {"comment", "type"});
+        const i2d::JointType type = linkJointType(lo, "type");
+        allowJointOptions(lo, type);
         lo.checkUnknown();
         PendingJoint base;
+        base.def = defaultJointDef(type);
         parseJointOptions(lo, base);
         base.loc = o.at("link");
         int cols = static_cast<int>(o.reqInt("columns", 1, maxCount));
         int rows = static_cast<int>(o.reqInt("rows", 1, maxCount));
+        // Distance links join the centres; revolute links hinge at the midpoint between the two bodies.
+        const i2d::Vec2 sp = o.reqVec("spacing", kMaxSize);
+        const bool hinge = type == i2d::JointType::revolute;
+        const i2d::Vec2 halfX = hinge ? i2d::Vec2{0.5f * sp.x, 0.0f} : i2d::Vec2{};
+        const i2d::Vec2 halfY = hinge ? i2d::Vec2{0.0f, 0.5f * sp.y} : i2d::Vec2{};
         for (int r = 0; r < rows; ++r) {
             for (int c = 0; c < cols; ++c) {
                 int i = firstIndex + r * cols + c;
@@ -133,12 +164,14 @@ void expandGenerator(const json& j, const Loc& loc, Builder& bld) {
                     PendingJoint pj = base;
                     pj.indexA = i;
                     pj.indexB = i + 1;
+                    setAnchors(pj, halfX, -1.0f * halfX);
                     bld.joints.push_back(pj);
                 }
                 if (r + 1 < rows) {
                     PendingJoint pj = base;
                     pj.indexA = i;
                     pj.indexB = i + cols;
+                    setAnchors(pj, halfY, -1.0f * halfY);
                     bld.joints.push_back(pj);
                 }
             }
@@ -147,6 +180,7 @@ void expandGenerator(const json& j, const Loc& loc, Builder& bld) {
     if (kind != "chain") return;
     PendingJoint base;
     base.loc = loc;
+    base.def = defaultJointDef(linkJointType(o, "joint_type"));
     i2d::Vec2 prevAnchor = o.vec("anchor_prev", {}, kMaxSize);
     i2d::Vec2 nextAnchor = o.vec("anchor_next", {}, kMaxSize);
     parseJointOptions(o, base);
@@ -163,15 +197,13 @@ void expandGenerator(const json& j, const Loc& loc, Builder& bld) {
         if (atStart) {
             pj.refA = &a.get("body");
             pj.refALoc = a.at("body");
-            pj.def.localAnchorA = anchor;
             pj.indexB = link;
-            pj.def.localAnchorB = prevAnchor;
+            setAnchors(pj, anchor, prevAnchor);
         } else {
             pj.indexA = link;
-            pj.def.localAnchorA = nextAnchor;
             pj.refB = &a.get("body");
             pj.refBLoc = a.at("body");
-            pj.def.localAnchorB = anchor;
+            setAnchors(pj, nextAnchor, anchor);
         }
         bld.joints.push_back(pj);
     };
@@ -180,8 +212,7 @@ void expandGenerator(const json& j, const Loc& loc, Builder& bld) {
         PendingJoint pj = base;
         pj.indexA = firstIndex + i;
         pj.indexB = firstIndex + i + 1;
-        pj.def.localAnchorA = nextAnchor;
-        pj.def.localAnchorB = prevAnchor;
+        setAnchors(pj, nextAnchor, prevAnchor);
         bld.joints.push_back(pj);
     }
     attach("attach_end", false);

@@ -15,7 +15,8 @@ constexpr double kMaxSpeed = 1.0e5;       // m/s and rad/s
 constexpr double kMaxAngle = 1.0e4;       // rad
 constexpr double kMaxDensity = 1.0e6;     // kg/m²
 constexpr double kMaxFriction = 1.0e3;
-constexpr double kMaxRate = 1.0e6;  // Hz, damping ratios, 1/s
+constexpr double kMaxRate = 1.0e6;    // Hz, damping ratios, 1/s
+constexpr double kMaxForce = 1.0e10;  // N and N·m: joint motors and force caps
 constexpr std::int64_t kMaxBodies = 250000;
 constexpr std::int64_t kMaxIterations = 1000;
 

@@ -24,6 +24,7 @@ BodyDesc parseBody(const json& j, const Loc& loc, bool isTemplate);
 // named after the joint that uses them, and generators add bodies).
 struct PendingJoint {
     Loc loc;
+    std::string name;  ///< the joint's "name", empty when none
     // A reference is a body name (string) or index (integer) given at refLoc,
     // or an already known index (chain links).
     const json* refA = nullptr;
@@ -32,26 +33,59 @@ struct PendingJoint {
     const json* refB = nullptr;
     Loc refBLoc;
     int indexB = -1;
-    i2d::DistanceJointDef def{};
-    bool hasLength = false;
+    JointDefs def{};  ///< its index is the joint type
+    // Values the file left to the initial layout (joint_layout.cpp).
+    bool hasLength = false;          ///< distance: "length" given
+    bool hasReferenceAngle = false;  ///< revolute, prismatic, weld: "reference_angle" given
+    bool hasLengthA = false;         ///< pulley: "length_a" given
+    bool hasLengthB = false;
+    // A gear's joints: a joint name (string) or an index into the file's "joints" (integer).
+    const json* ref1 = nullptr;
+    Loc ref1Loc;
+    const json* ref2 = nullptr;
+    Loc ref2Loc;
+
+    i2d::JointType type() const { return static_cast<i2d::JointType>(def.index()); }
 };
 
-/// The options a joint and a chain generator share: length, spring, limit, collide_connected.
+/// A definition of the given type with the engine's defaults.
+JointDefs defaultJointDef(i2d::JointType type);
+/// Allows on `o` the feature fields a joint of this type takes in a
+/// generator: distance: length, spring, limit; revolute: spring, limit, motor;
+/// and collide_connected.
+void allowJointOptions(Obj& o, i2d::JointType type);
+/// Reads those fields into pj (whose def holds the type).
 void parseJointOptions(const Obj& o, PendingJoint& pj);
+/// Allows on `o` every field of a joint of this type but the common ones
+/// (comment, type, name) and reads them into pj: bodies (or a gear's joints),
+/// anchors, settings (joint_fields.cpp).
+void allowJointFields(Obj& o, i2d::JointType type);
+void parseJointFields(const Obj& o, PendingJoint& pj);
 /// One element of "joints".
 PendingJoint parseJoint(const json& j, const Loc& loc);
+
+struct Builder;
+/// The joint `pj` (bld.joints[index]) with its references resolved and the
+/// values it left to the initial layout measured (length, reference angle,
+/// pulley lengths); `done` holds the joints before it, already resolved.
+JointDesc resolveJoint(const PendingJoint& pj, const Builder& bld, const std::vector<JointDesc>& done);
 
 /// The bodies and joints of a scene while its file is read.
 struct Builder {
     const std::string* file;
     std::vector<BodyDesc> bodies;
-    std::map<std::string, int> names;  ///< named body → index
-    std::vector<PendingJoint> joints;
+    std::map<std::string, int> names;       ///< named body → index
+    std::vector<PendingJoint> joints;       ///< generators' joints first, then the file's "joints"
+    std::size_t fileJointBase = 0;          ///< index in `joints` of the file's joints[0]
+    std::map<std::string, int> jointNames;  ///< named joint → index in `joints`
 
     /// Appends a body, refusing a duplicate name and more than kMaxBodies bodies.
     void addBody(BodyDesc b, const Loc& loc);
     /// The index of a body reference: a name (string) or an index (integer).
     int resolve(const json& ref, const Loc& loc) const;
+    /// The index in `joints` of a gear's joint reference (a joint name or an
+    /// index into the file's "joints"), which must come before the gear at `self`.
+    int resolveJoint(const json& ref, const Loc& loc, std::size_t self) const;
 };
 
 }  // namespace tb::scene_file

@@ -38,15 +38,7 @@ int Builder::resolve(const json& ref, const Loc& loc) const {
 
 }  // namespace scene_file
 
-namespace {
-
 using namespace scene_file;
-
-i2d::Vec2 worldPoint(const BodyDesc& b, i2d::Vec2 local) {
-    return i2d::transformPoint({b.def.position, i2d::makeRot(b.def.angle)}, local);
-}
-
-}  // namespace
 
 SceneDesc parseSceneDesc(const std::string& text, const std::string& file, const std::string& name) {
     json root = parseJson(text, file);
@@ -70,7 +62,7 @@ SceneDesc parseSceneDesc(const std::string& text, const std::string& file, const
         desc.camera = cam;
     }
 
-    Builder bld{&file, {}, {}, {}};
+    Builder bld{&file, {}, {}, {}, 0, {}};
     const json& bodies = o.get("bodies");
     Loc bl = o.at("bodies");
     if (!bodies.is_array()) fail(bl, "expected an array of bodies and generators, got " + typeName(bodies));
@@ -82,30 +74,21 @@ SceneDesc parseSceneDesc(const std::string& text, const std::string& file, const
             bld.addBody(parseBody(e, bl.at(i), false), bl.at(i));
         }
     }
+    bld.fileJointBase = bld.joints.size();
     if (o.has("joints")) {
         const json& js = o.get("joints");
         Loc jl = o.at("joints");
         if (!js.is_array()) fail(jl, "expected an array of joints, got " + typeName(js));
-        for (std::size_t i = 0; i < js.size(); ++i) bld.joints.push_back(parseJoint(js[i], jl.at(i)));
+        for (std::size_t i = 0; i < js.size(); ++i) {
+            PendingJoint pj = parseJoint(js[i], jl.at(i));
+            if (!pj.name.empty() && !bld.jointNames.emplace(pj.name, static_cast<int>(bld.joints.size())).second)
+                fail(jl.at(i).key("name"), "duplicate joint name '" + pj.name + "'");
+            bld.joints.push_back(std::move(pj));
+        }
     }
 
-    for (PendingJoint& pj : bld.joints) {
-        int a = pj.refA ? bld.resolve(*pj.refA, pj.refALoc) : pj.indexA;
-        int b = pj.refB ? bld.resolve(*pj.refB, pj.refBLoc) : pj.indexB;
-        if (a == b) fail(pj.loc, "a joint needs two different bodies (both are body " + std::to_string(a) + ")");
-        if (bld.bodies[a].def.type != i2d::BodyType::dynamic_body &&
-            bld.bodies[b].def.type != i2d::BodyType::dynamic_body)
-            fail(pj.loc, "a joint needs at least one dynamic body");
-        if (!pj.hasLength) {
-            float len = i2d::distance(worldPoint(bld.bodies[a], pj.def.localAnchorA),
-                                      worldPoint(bld.bodies[b], pj.def.localAnchorB));
-            if (!(len >= i2d::kLinearSlop))
-                fail(pj.loc, "the anchors are " + fmt(len) +
-                                 " m apart at the start; give a length of at least 0.005 m or move the anchors");
-            pj.def.length = len;
-        }
-        desc.joints.push_back({a, b, pj.def});
-    }
+    desc.joints.reserve(bld.joints.size());
+    for (const PendingJoint& pj : bld.joints) desc.joints.push_back(resolveJoint(pj, bld, desc.joints));
     desc.bodies = std::move(bld.bodies);
     return desc;
 }

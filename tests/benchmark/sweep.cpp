@@ -587,7 +587,7 @@ void writeMarkdown(const std::vector<SceneResult>& results, const std::vector<Sc
           "| `max_excursion` (m) | pyramids, card_house | largest distance of any dynamic body from its start over the run: sway, sinking, collapse |\n"
           "| `max_sway` (m) | tall stacks (they start with 0.1 m gaps, so settling is no error) | largest sideways distance of any dynamic body from its start over the run |\n"
           "| `max_penetration` (m) | rain1000 | largest penetration over the touching contacts over the run |\n"
-          "| `joint_stretch` (m) | joint_grid, heavy_chain | largest distance-joint error over the run |\n"
+          "| `joint_stretch` (m) | joint_grid, heavy_chain | largest joint error over the run (`joint_error.max`) |\n"
           "| `rebound_error` (m) | bounce | largest \\|h − e²·d\\| over the balls: d the drop to the lowest point, h the first rebound's height above it, e = max(e_ball, e_ground) (both engines mix restitution by max) |\n"
           "| `energy_drift` (1) | pendulum_wave | largest \\|E(t) − E(0)\\| over the run divided by the pendulums' swing energy |\n\n"
           "*Collapsed*: at least 1% of the dynamic bodies (at least one) end more than 0.5 m sideways from their start.\n\n";

@@ -26,6 +26,7 @@ TEST(EnumNames, EveryTableRoundTrips) {
     expectRoundTrip<i2d::ImpactModel>();
     expectRoundTrip<i2d::BodyType>();
     expectRoundTrip<i2d::ShapeType>();
+    expectRoundTrip<i2d::JointType>();
     expectRoundTrip<tb::EngineKind>();
     expectRoundTrip<tb::ErrorMetric>();
 }
@@ -40,6 +41,10 @@ TEST(EnumNames, NamesAreTheDocumentedOnes) {
     EXPECT_STREQ(tb::enumName(i2d::BodyType::dynamic_body), "dynamic");
     EXPECT_STREQ(tb::enumName(i2d::BodyType::static_body), "static");
     EXPECT_STREQ(tb::enumName(i2d::BodyType::kinematic_body), "kinematic");
+    EXPECT_STREQ(tb::enumName(i2d::JointType::distance), "distance");
+    EXPECT_STREQ(tb::enumName(i2d::JointType::revolute), "revolute");
+    EXPECT_STREQ(tb::enumName(i2d::JointType::gear), "gear");
+    EXPECT_EQ(tb::enumNames<i2d::JointType>().size(), 9u);
     EXPECT_STREQ(tb::engineName(tb::EngineKind::box2d), "box2d");
     EXPECT_STREQ(tb::errorMetricName(tb::ErrorMetric::energy_drift), "energy_drift");
     EXPECT_STREQ(tb::errorMetricName(tb::ErrorMetric::none), "");

@@ -152,10 +152,10 @@ TEST(ErrorMetric, EnergyDriftIsRelativeToTheSwingEnergy) {
     tb::SceneDesc desc;
     desc.bodies.push_back(bodyDesc("pivot", i2d::BodyType::static_body, 0.0f));
     desc.bodies.push_back(bodyDesc("bob", i2d::BodyType::dynamic_body, 0.0f));
-    tb::DistanceJointDesc j;
+    tb::JointDesc j;
     j.bodyA = 0;
     j.bodyB = 1;
-    j.def.length = 2.0f;
+    j.as<i2d::DistanceJointDef>().length = 2.0f;
     desc.joints.push_back(j);
     ScriptedSimulation sim;
     tb::BodySample pivot;

@@ -180,12 +180,12 @@ TEST(SceneLoader, GeneratorsExpand) {
     EXPECT_FLOAT_EQ(d.bodies[27].def.position.y, 31.0f);
     // Joints: grid 2x3 has 3 horizontal + 4 vertical links; chain has 1 attachment + 2 links.
     ASSERT_EQ(d.joints.size(), 7u + 3u);
-    EXPECT_FLOAT_EQ(d.joints[0].def.length, 2.0f);  // grid link, centre to centre along x
-    const tb::DistanceJointDesc& attach = d.joints[7];
+    EXPECT_FLOAT_EQ(d.joints[0].as<i2d::DistanceJointDef>().length, 2.0f);  // grid link, centre to centre along x
+    const tb::JointDesc& attach = d.joints[7];
     EXPECT_EQ(attach.bodyA, 0);
     EXPECT_EQ(attach.bodyB, 13);
-    EXPECT_NEAR(attach.def.length, 0.2f, 1e-5f);       // (−0.6, 10) to link0's (−0.4, 10)
-    EXPECT_NEAR(d.joints[8].def.length, 0.2f, 1e-5f);  // 0.4 → 0.6 between link0 and link1
+    EXPECT_NEAR(attach.as<i2d::DistanceJointDef>().length, 0.2f, 1e-5f);       // (−0.6, 10) to link0's (−0.4, 10)
+    EXPECT_NEAR(d.joints[8].as<i2d::DistanceJointDef>().length, 0.2f, 1e-5f);  // 0.4 → 0.6 between link0 and link1
 }
 
 TEST(SceneLoader, WorldSettingsAndJointOptions) {
@@ -206,10 +206,11 @@ TEST(SceneLoader, WorldSettingsAndJointOptions) {
     EXPECT_FLOAT_EQ(d.camera->height, 5.0f);
     ASSERT_EQ(d.joints.size(), 1u);
     EXPECT_EQ(d.joints[0].bodyA, 1);
-    EXPECT_FLOAT_EQ(d.joints[0].def.length, 2.0f);  // anchors (0, 3) and (0, 1), measured from the layout
-    EXPECT_TRUE(d.joints[0].def.enableSpring);
-    EXPECT_TRUE(d.joints[0].def.enableLimit);
-    EXPECT_FLOAT_EQ(d.joints[0].def.maxLength, 3.0f);
+    const auto& dj = d.joints[0].as<i2d::DistanceJointDef>();
+    EXPECT_FLOAT_EQ(dj.length, 2.0f);  // anchors (0, 3) and (0, 1), measured from the layout
+    EXPECT_TRUE(dj.enableSpring);
+    EXPECT_TRUE(dj.enableLimit);
+    EXPECT_FLOAT_EQ(dj.maxLength, 3.0f);
 }
 
 TEST(SceneLoader, MissingFileAndUnknownScene) {
@@ -245,7 +246,13 @@ TEST(ShippedScenes, ListedWithDescriptions) {
                                          "bullets",
                                          "spinning_rod",
                                          "incline",
-                                         "bounce"};
+                                         "bounce",
+                                         "ragdoll",
+                                         "car",
+                                         "chain_swing",
+                                         "slider_crank",
+                                         "gears",
+                                         "pulley"};
     for (const auto& name : expected) {
         auto it = std::find_if(scenes.begin(), scenes.end(), [&](const auto& s) { return s.first == name; });
         ASSERT_NE(it, scenes.end()) << name;
@@ -256,7 +263,7 @@ TEST(ShippedScenes, ListedWithDescriptions) {
 
 TEST(ShippedScenes, EveryOneParses) {
     auto scenes = tb::listScenes(kAssets);
-    ASSERT_GE(scenes.size(), 22u);
+    ASSERT_GE(scenes.size(), 28u);
     for (const auto& [name, description] : scenes) {
         SCOPED_TRACE(name);
         tb::SceneDesc d;

@@ -145,11 +145,8 @@ TEST(Joints, GearRatio) {
     World w(s);
     BodyId ground = w.createBody({});
     BodyId d1 = dynamicDisc(w, {0.0f, 0.0f}, 0.5f), d2 = dynamicDisc(w, {2.0f, 0.0f}, 0.5f);
-    JointId r1 = w.createRevoluteJoint({.bodyA = ground,
-                                        .bodyB = d1,
-                                        .enableMotor = true,
-                                        .motorSpeed = 3.0f,
-                                        .maxMotorTorque = 100.0f});
+    JointId r1 = w.createRevoluteJoint(
+        {.bodyA = ground, .bodyB = d1, .enableMotor = true, .motorSpeed = 3.0f, .maxMotorTorque = 100.0f});
     JointId r2 = w.createRevoluteJoint({.bodyA = ground, .bodyB = d2, .localAnchorA = {2.0f, 0.0f}});
     w.createGearJoint({.joint1 = r1, .joint2 = r2, .ratio = 2.0f});
     BodyId rack = w.createBody({.type = BodyType::dynamic_body, .position = {0.0f, -2.0f}});
@@ -270,8 +267,8 @@ TEST(Joints, SwingingHeavyChainNeverGainsEnergy) {
         const Vec2 anchor{0.0f, 20.0f};
         std::vector<JointId> joints;
         for (int i = 0; i < 20; ++i) {
-            BodyId link =
-                w.createBody({.type = BodyType::dynamic_body, .position = {anchor.x + 0.5f * i + 0.25f, anchor.y}});
+            BodyId link = w.createBody(
+                {.type = BodyType::dynamic_body, .position = {anchor.x + 0.5f * i + 0.25f, anchor.y}});
             w.createCapsuleShape(link, {.density = 20.0f}, {{-0.2f, 0.0f}, {0.2f, 0.0f}, 0.05f});
             if (revolute)
                 joints.push_back(w.createRevoluteJoint({.bodyA = prev,
@@ -279,8 +276,10 @@ TEST(Joints, SwingingHeavyChainNeverGainsEnergy) {
                                                         .localAnchorA = i == 0 ? anchor : Vec2{0.25f, 0.0f},
                                                         .localAnchorB = {-0.25f, 0.0f}}));
             else
-                joints.push_back(w.createDistanceJoint(
-                    {.bodyA = prev, .bodyB = link, .localAnchorA = i == 0 ? anchor : Vec2{}, .length = i == 0 ? 0.25f : 0.5f}));
+                joints.push_back(w.createDistanceJoint({.bodyA = prev,
+                                                        .bodyB = link,
+                                                        .localAnchorA = i == 0 ? anchor : Vec2{},
+                                                        .length = i == 0 ? 0.25f : 0.5f}));
             prev = link;
         }
         const float linkMass = w.mass(prev);
@@ -329,8 +328,9 @@ TEST(Joints, BadInputIsRefused) {
     EXPECT_THROW(w.createRevoluteJoint({.bodyA = ground, .bodyB = a, .localAnchorA = {nan, 0.0f}}), Error);
     EXPECT_THROW(w.createRevoluteJoint({.bodyA = ground, .bodyB = a, .lowerAngle = 0.5f, .upperAngle = 0.1f}), Error);
     EXPECT_THROW(w.createPrismaticJoint({.bodyA = ground, .bodyB = a, .localAxisA = {0.0f, 0.0f}}), Error);
-    EXPECT_THROW(w.createPrismaticJoint({.bodyA = ground, .bodyB = a, .lowerTranslation = 1.0f, .upperTranslation = 0.0f}),
-                 Error);
+    EXPECT_THROW(
+        w.createPrismaticJoint({.bodyA = ground, .bodyB = a, .lowerTranslation = 1.0f, .upperTranslation = 0.0f}),
+        Error);
     EXPECT_THROW(w.createWheelJoint({.bodyA = ground, .bodyB = a, .hertz = -1.0f}), Error);
     EXPECT_THROW(w.createMotorJoint({.bodyA = ground, .bodyB = a, .maxForce = INFINITY}), Error);
     EXPECT_THROW(w.createMouseJoint({.bodyA = ground, .bodyB = a, .hertz = 0.0f}), Error);
@@ -426,13 +426,12 @@ TEST(Joints, EveryCorrectionModeHoldsTheJoints) {
             w.step(1.0f / 60.0f);
             const RevoluteJointDef d = w.revoluteJointDef(hinge);
             const Vec2 p = w.position(slider) - Vec2{3.0f, 0.0f};
-            const float errors[5] = {
-                distance(transformPoint(w.transform(ground), d.localAnchorA),
-                         transformPoint(w.transform(pendulum), d.localAnchorB)),
-                std::abs(w.pulleyJointLengthA(pulley) + w.pulleyJointLengthB(pulley) - 8.0f),
-                std::abs(distance(w.position(welded), w.position(pendulum)) - 3.0f),
-                std::abs(p.x + p.y) / std::sqrt(2.0f),  // off the slider's line
-                std::abs(w.position(wheel).x + 4.0f)};  // off the wheel's vertical axis
+            const float errors[5] = {distance(transformPoint(w.transform(ground), d.localAnchorA),
+                                              transformPoint(w.transform(pendulum), d.localAnchorB)),
+                                     std::abs(w.pulleyJointLengthA(pulley) + w.pulleyJointLengthB(pulley) - 8.0f),
+                                     std::abs(distance(w.position(welded), w.position(pendulum)) - 3.0f),
+                                     std::abs(p.x + p.y) / std::sqrt(2.0f),  // off the slider's line
+                                     std::abs(w.position(wheel).x + 4.0f)};  // off the wheel's vertical axis
             for (int k = 0; k < 5; ++k) worst[k] = std::max(worst[k], errors[k]);
             gain = std::max(gain, (energy(w) - e0) / std::abs(e0));
         }

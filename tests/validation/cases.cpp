@@ -423,13 +423,14 @@ std::pair<double, double> springRun(EngineKind kind) {
     d.bodies.push_back(body("anchor", i2d::BodyType::static_body, {0.0f, 0.0f}, {}));
     d.bodies.push_back(body("mass", i2d::BodyType::dynamic_body, {1.0f + static_cast<float>(kSpringStretch), 0.0f},
                             {circleShape(r, 1.0f / (static_cast<float>(kPi) * r * r), 0.0f, 0.0f)}));
-    tb::DistanceJointDesc j;
+    tb::JointDesc j;
     j.bodyA = 0;
     j.bodyB = 1;
-    j.def.length = 1.0f;
-    j.def.enableSpring = true;
-    j.def.hertz = static_cast<float>(kSpringHertz);
-    j.def.dampingRatio = 0.0f;
+    i2d::DistanceJointDef& spring = j.as<i2d::DistanceJointDef>();
+    spring.length = 1.0f;
+    spring.enableSpring = true;
+    spring.hertz = static_cast<float>(kSpringHertz);
+    spring.dampingRatio = 0.0f;
     d.joints.push_back(j);
     auto sim = make(d, kind);
     UpCrossings up;
