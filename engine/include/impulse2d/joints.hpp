@@ -127,12 +127,13 @@ struct WheelJointDef {
 };
 
 /// Drives body B towards a position and angle relative to body A with limited
-/// force and torque. With zero offsets against a static body it is top-down
-/// friction (a body sliding on the ground seen from above).
+/// force and torque. With correctionFactor 0 it only resists relative motion
+/// up to maxForce and maxTorque: against a static body, top-down friction (a
+/// body sliding on the ground seen from above).
 struct MotorJointDef {
     BodyId bodyA{};
     BodyId bodyB{};
-    Vec2 linearOffset{};            ///< B's centre of mass from A's, in A's frame (m)
+    Vec2 linearOffset{};            ///< B's origin from A's origin, in A's frame (m)
     float angularOffset = 0.0f;     ///< angle(B) − angle(A) (rad)
     float maxForce = 1.0f;          ///< N, ≥ 0
     float maxTorque = 1.0f;         ///< N·m, ≥ 0
