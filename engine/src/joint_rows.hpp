@@ -15,6 +15,8 @@
 // approach that closes it within the (sub)step: bias = C/h, speculatively.
 #pragma once
 
+#include <cmath>
+
 #include "joint.hpp"
 
 namespace i2d::detail {
@@ -48,15 +50,37 @@ inline float boundedIncrement(float& accumulated, float impulse, float lo, float
     return impulse;
 }
 
-/// Solves the symmetric 2×2 system [k11 k12; k12 k22]·x = b (x = 0 when
-/// singular). In double precision: a body of tiny mass (1e-37 kg is accepted)
-/// has entries near 1e37, whose products overflow single precision and turned
-/// the solution into NaN (found by fuzz_world).
-inline Vec2 solveSymmetric22(float k11, float k12, float k22, Vec2 b) {
-    const double a11 = k11, a12 = k12, a22 = k22;
-    double det = a11 * a22 - a12 * a12;
+/// The symmetric 2×2 effective-mass matrix of a joint's rows, in double
+/// precision: a body of tiny mass (1e-37 kg is accepted) has inverse masses
+/// near 1e37 whose products overflow single precision and turned joint
+/// solutions into NaN (found by fuzz_world).
+struct Sym22 {
+    double k11, k12, k22;
+};
+
+/// K of a point constraint between anchors rA, rB:
+/// [ m_A⁻¹ + m_B⁻¹ + I_A⁻¹ r_Ay² + I_B⁻¹ r_By²    −I_A⁻¹ r_Ax r_Ay − I_B⁻¹ r_Bx r_By ]
+/// [ −I_A⁻¹ r_Ax r_Ay − I_B⁻¹ r_Bx r_By          m_A⁻¹ + m_B⁻¹ + I_A⁻¹ r_Ax² + I_B⁻¹ r_Bx² ]
+inline Sym22 pointMatrix(double mA, double iA, double mB, double iB, Vec2 rA, Vec2 rB) {
+    const double ax = rA.x, ay = rA.y, bx = rB.x, by = rB.y;
+    return {mA + mB + ay * ay * iA + by * by * iB, -ay * ax * iA - by * bx * iB, mA + mB + ax * ax * iA + bx * bx * iB};
+}
+
+/// Solves K·x = b (x = 0 when K is singular); in single precision when the
+/// products of K's entries fit in it (every practical mass ratio), in double
+/// otherwise.
+inline Vec2 solveSymmetric22(const Sym22& k, Vec2 b) {
+    constexpr double kSingleSafe = 1.0e18;  // a product of two entries stays below 3.4e38
+    if (std::abs(k.k11) < kSingleSafe && std::abs(k.k12) < kSingleSafe && std::abs(k.k22) < kSingleSafe) {
+        const float a11 = static_cast<float>(k.k11), a12 = static_cast<float>(k.k12), a22 = static_cast<float>(k.k22);
+        float inv = a11 * a22 - a12 * a12;
+        if (inv != 0.0f) inv = 1.0f / inv;
+        return {inv * (a22 * b.x - a12 * b.y), inv * (a11 * b.y - a12 * b.x)};
+    }
+    double det = k.k11 * k.k22 - k.k12 * k.k12;
     if (det != 0.0) det = 1.0 / det;
-    return {static_cast<float>(det * (a22 * b.x - a12 * b.y)), static_cast<float>(det * (a11 * b.y - a12 * b.x))};
+    return {static_cast<float>(det * (k.k22 * b.x - k.k12 * b.y)),
+            static_cast<float>(det * (k.k11 * b.y - k.k12 * b.x))};
 }
 
 /// Relative angle of B to A now: angle(qB·qA⁻¹) with the rotations since the step began.

@@ -53,10 +53,8 @@ void solveMotorJoint(JointConstraint& jc, const JointContext& ctx, BodyState& sA
     const Vec2 separation = (sB.dp - sA.dp) + (rB - rA) + jc.deltaCenter;
     const Vec2 cdot = (sB.v + cross(sB.w, rB)) - (sA.v + cross(sA.w, rA)) + row.correctionRate * separation;
     const float mA = jc.invMassA, mB = jc.invMassB;
-    const float k11 = mA + mB + rA.y * rA.y * iA + rB.y * rB.y * iB;
-    const float k12 = -rA.y * rA.x * iA - rB.y * rB.x * iB;
-    const float k22 = mA + mB + rA.x * rA.x * iA + rB.x * rB.x * iB;
-    Vec2 impulse = -1.0f * solveSymmetric22(k11, k12, k22, cdot);
+    const Sym22 K = pointMatrix(mA, iA, mB, iB, rA, rB);
+    Vec2 impulse = -1.0f * solveSymmetric22(K, cdot);
     const Vec2 old = acc.linear;
     acc.linear += impulse;
     const float maxImpulse = ctx.h * row.maxForce;

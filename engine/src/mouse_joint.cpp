@@ -39,10 +39,8 @@ void solveMouseJoint(JointConstraint& jc, const JointContext& ctx, BodyState& sA
     const RowBias rb = springBias(makeSoft(row.hertz, row.dampingRatio, ctx.h), 1.0f);
     const Vec2 cdot = sB.v + cross(sB.w, rB);
     const float mB = jc.invMassB, iB = jc.invIB;
-    const float k11 = mB + rB.y * rB.y * iB;
-    const float k12 = -rB.y * rB.x * iB;
-    const float k22 = mB + rB.x * rB.x * iB;
-    const Vec2 x = solveSymmetric22(k11, k12, k22, cdot + rb.bias * C);
+    const Sym22 K = pointMatrix(0.0, 0.0, mB, iB, Vec2{}, rB);
+    const Vec2 x = solveSymmetric22(K, cdot + rb.bias * C);
     Vec2 impulse = -rb.massScale * x - rb.impulseScale * acc.linear;
     const Vec2 old = acc.linear;
     acc.linear += impulse;

@@ -79,14 +79,13 @@ void solvePrismaticJoint(JointConstraint& jc, const JointContext& ctx, BodyState
 
     // Perpendicular and angle as one 2×2 block.
     const float iA = jc.invIA, iB = jc.invIB;
-    const float k11 = jc.invMassA + jc.invMassB + iA * f.sA * f.sA + iB * f.sB * f.sB;
-    const float k12 = iA * f.sA + iB * f.sB;
-    float k22 = iA + iB;
-    if (k22 == 0.0f) k22 = 1.0f;  // neither body turns: the angle row is moot
+    const double dA = iA, dB = iB, sa = f.sA, sb = f.sB;
+    Sym22 K{double(jc.invMassA) + jc.invMassB + dA * sa * sa + dB * sb * sb, dA * sa + dB * sb, dA + dB};
+    if (K.k22 == 0.0) K.k22 = 1.0;  // neither body turns: the angle row is moot
     const Vec2 cdot{dot(f.perp, sB.v - sA.v) + f.sB * sB.w - f.sA * sA.w, sB.w - sA.w};
     const Vec2 C{dot(f.perp, f.d), unwindAngle(relativeAngle(jc, sA, sB) - row.referenceAngle)};
     const RowBias rb = rigidBias(ctx, 1.0f);
-    const Vec2 x = solveSymmetric22(k11, k12, k22, cdot + rb.bias * C);
+    const Vec2 x = solveSymmetric22(K, cdot + rb.bias * C);
     const Vec2 impulse = -rb.massScale * x - rb.impulseScale * Vec2{acc.axial, acc.angular};
     acc.axial += impulse.x;
     acc.angular += impulse.y;

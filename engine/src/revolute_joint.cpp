@@ -94,10 +94,8 @@ void solveRevoluteJoint(JointConstraint& jc, const JointContext& ctx, BodyState&
     const Vec2 separation = (sB.dp - sA.dp) + (rB - rA) + jc.deltaCenter;
     const RowBias rb = rigidBias(ctx, 1.0f);  // the rates, applied to each component of the separation
     const float mA = jc.invMassA, mB = jc.invMassB;
-    const float k11 = mA + mB + rA.y * rA.y * iA + rB.y * rB.y * iB;
-    const float k12 = -rA.y * rA.x * iA - rB.y * rB.x * iB;
-    const float k22 = mA + mB + rA.x * rA.x * iA + rB.x * rB.x * iB;
-    const Vec2 x = solveSymmetric22(k11, k12, k22, cdot + rb.bias * separation);
+    const Sym22 K = pointMatrix(mA, iA, mB, iB, rA, rB);
+    const Vec2 x = solveSymmetric22(K, cdot + rb.bias * separation);
     const Vec2 impulse = -rb.massScale * x - rb.impulseScale * acc.linear;
     acc.linear += impulse;
     applyImpulse(jc, rA, rB, impulse, 0.0f, sA, sB);

@@ -49,25 +49,23 @@ void solveWeldJoint(JointConstraint& jc, const JointContext& ctx, BodyState& sA,
     const Vec2 rA = rotate(sA.dq, jc.rA), rB = rotate(sB.dq, jc.rB);
     const Vec2 cdot = (sB.v + cross(sB.w, rB)) - (sA.v + cross(sA.w, rA));
     const Vec2 separation = (sB.dp - sA.dp) + (rB - rA) + jc.deltaCenter;
-    const float k11 = mA + mB + rA.y * rA.y * iA + rB.y * rB.y * iB;
-    const float k12 = -rA.y * rA.x * iA - rB.y * rB.x * iB;
-    const float k22 = mA + mB + rA.x * rA.x * iA + rB.x * rB.x * iB;
+    const Sym22 K = pointMatrix(mA, iA, mB, iB, rA, rB);
     if (rigid) {
         // Point and angle as one 3×3 block: with a long lever arm the rows are
         // strongly coupled (the angle row moves the anchors), and solving
         // them one after the other converges too slowly to hold the weld.
         //   K = [ k11 k12 k13 ; k12 k22 k23 ; k13 k23 k33 ] with
         //   k13 = −r_Ay I_A⁻¹ − r_By I_B⁻¹, k23 = r_Ax I_A⁻¹ + r_Bx I_B⁻¹, k33 = I_A⁻¹ + I_B⁻¹.
-        const float k13 = -rA.y * iA - rB.y * iB, k23 = rA.x * iA + rB.x * iB;
-        float k33 = iA + iB;
-        if (k33 == 0.0f) k33 = 1.0f;  // neither body turns: the angle row is moot
+        const double K13 = -double(rA.y) * iA - double(rB.y) * iB, K23 = double(rA.x) * iA + double(rB.x) * iB;
+        double K33 = double(iA) + iB;
+        if (K33 == 0.0) K33 = 1.0;  // neither body turns: the angle row is moot
         const float angleError = unwindAngle(relativeAngle(jc, sA, sB) - row.referenceAngle);
         const RowBias rb = rigidBias(ctx, 1.0f);
         const float b1 = cdot.x + rb.bias * separation.x, b2 = cdot.y + rb.bias * separation.y;
         const float b3 = sB.w - sA.w + rb.bias * angleError;
         // Cramer's rule on the symmetric 3×3 system, in double precision (see
-        // solveSymmetric22: the entries of a tiny body overflow single precision).
-        const double K11 = k11, K12 = k12, K13 = k13, K22 = k22, K23 = k23, K33 = k33;
+        // Sym22: the entries of a tiny body overflow single precision).
+        const double K11 = K.k11, K12 = K.k12, K22 = K.k22;
         const double c11 = K22 * K33 - K23 * K23, c12 = K13 * K23 - K12 * K33, c13 = K12 * K23 - K13 * K22;
         double det = K11 * c11 + K12 * c12 + K13 * c13;
         if (det != 0.0) det = 1.0 / det;
@@ -85,7 +83,7 @@ void solveWeldJoint(JointConstraint& jc, const JointContext& ctx, BodyState& sA,
     const RowBias rb = row.linearHertz > 0.0f
                            ? springBias(makeSoft(row.linearHertz, row.linearDampingRatio, ctx.h), 1.0f)
                            : rigidBias(ctx, 1.0f);
-    const Vec2 x = solveSymmetric22(k11, k12, k22, cdot + rb.bias * separation);
+    const Vec2 x = solveSymmetric22(K, cdot + rb.bias * separation);
     const Vec2 impulse = -rb.massScale * x - rb.impulseScale * acc.linear;
     acc.linear += impulse;
     applyImpulse(jc, rA, rB, impulse, 0.0f, sA, sB);
