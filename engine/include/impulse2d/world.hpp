@@ -386,17 +386,20 @@ public:
     float pulleyJointLengthA(JointId id) const;
     float pulleyJointLengthB(JointId id) const;
 
-    // What the joint did over the last step in which it was awake.
+    // What the joint did in the last step in which it was awake: the
+    // accumulated impulse divided by the interval it acted over, which in
+    // soft_step is the last substep (each substep solves anew from the warm
+    // start, so these are the joint's forces at the end of the step, as a
+    // force sensor would read them), the whole step otherwise.
 
-    /// Force the joint applied to body B at its anchor (N, world): the
-    /// accumulated linear impulse divided by the step.
+    /// Force the joint applied to body B at its anchor (N, world).
     Vec2 jointReactionForce(JointId id) const;
     /// Torque the joint applied to body B (N·m).
     float jointReactionTorque(JointId id) const;
     /// Revolute and wheel joints: the motor's torque (N·m); prismatic: the motor's force (N).
     float jointMotorEffort(JointId id) const;
-    /// Magnitude of the constraint force over the last step in which the
-    /// joint was awake (N): |jointReactionForce|.
+    /// Magnitude of the constraint force (N): |jointReactionForce|; for a
+    /// distance joint, the magnitude of its axial force.
     float jointForce(JointId id) const;
 
     // ---- Events of the last step ----------------------------------------
