@@ -33,6 +33,10 @@ inline Softness makeSoft(float hertz, float zeta, float h) {
     float a1 = 2.0f * zeta + h * omega;
     float a2 = h * omega * a1;
     float a3 = 1.0f / (1.0f + a2);
+    // A spring so weak (a denormal hertz) that a1 underflows to 0 has no
+    // stiffness and no damping: no bias, no force (ω/a1 would be 0/0 = NaN;
+    // found by fuzz_world on a weld's angular hertz).
+    if (!(a1 > 0.0f)) return {0.0f, 0.0f, 1.0f};
     return {omega / a1, a2 * a3, a3};
 }
 
