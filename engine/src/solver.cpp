@@ -106,6 +106,25 @@ void colourContacts(WorldState& w) {
 // ---------------------------------------------------------------------------
 // Integration (Tamis and Maggiore (2015) §3.2, semi-implicit Euler)
 
+/// v limited to maxSpeed. A velocity whose square overflows (a body of tiny
+/// mass pushed by a force: F/m beyond single precision) keeps its direction
+/// and is limited too, where scaling by maxSpeed/∞ would give ∞·0 = NaN
+/// (found by fuzz_world).
+Vec2 limitSpeed(Vec2 v, float maxSpeed) {
+    float speed2 = lengthSquared(v);
+    if (!(speed2 > maxSpeed * maxSpeed)) return v;
+    if (!isFinite(speed2)) {
+        const float largest = std::max(std::abs(v.x), std::abs(v.y));
+        if (largest == INFINITY)
+            v = {std::isinf(v.x) ? std::copysign(1.0f, v.x) : 0.0f, std::isinf(v.y) ? std::copysign(1.0f, v.y) : 0.0f};
+        else
+            v *= 1.0f / largest;
+        speed2 = lengthSquared(v);
+    }
+    v *= maxSpeed / std::sqrt(speed2);
+    return v;
+}
+
 void integrateVelocities(SolverArrays& s, float h, float maxSpeed) {
     const std::size_t n = s.stateBodies.size();
     for (std::size_t i = 0; i < n; ++i) {
@@ -118,9 +137,7 @@ void integrateVelocities(SolverArrays& s, float h, float maxSpeed) {
         // Damping as the exact-for-linear-drag factor's Padé form: v /= 1 + h·c.
         v *= in.linearDampingFactor;
         av *= in.angularDampingFactor;
-        float speed2 = lengthSquared(v);
-        if (speed2 > maxSpeed * maxSpeed) v *= maxSpeed / std::sqrt(speed2);
-        st.v = v;
+        st.v = limitSpeed(v, maxSpeed);
         st.w = av;
     }
 }
@@ -134,8 +151,7 @@ void integrateVelocities(SolverArrays& s, float h, float maxSpeed) {
 constexpr float kMaxRotationPerStep = 0.25f * 3.14159265f;
 
 void clampVelocity(BodyState& s, float maxSpeed, float maxAngularSpeed) {
-    const float speed2 = lengthSquared(s.v);
-    if (speed2 > maxSpeed * maxSpeed) s.v *= maxSpeed / std::sqrt(speed2);
+    s.v = limitSpeed(s.v, maxSpeed);
     if (std::abs(s.w) > maxAngularSpeed) s.w = s.w > 0.0f ? maxAngularSpeed : -maxAngularSpeed;
 }
 
