@@ -1,5 +1,6 @@
 #!/usr/bin/env bash
-# Regenerate docs/validation.md: every validation case (tests/validation/cases.cpp)
+# Regenerate docs/validation.md: every validation case (tests/validation/cases.cpp,
+# joint_cases.cpp)
 # run in Impulse2D and in Box2D 2.4.1, side by side with the analytic answers.
 # Usage: scripts/validate.sh [build dir, default build]
 set -euo pipefail

@@ -65,6 +65,9 @@ struct Case {
 /// Every case, in report order. `assetsDir` locates the shipped scenes.
 std::vector<Case> allCases(const std::string& assetsDir);
 
+/// The joint cases (joint_cases.cpp), in report order; scenes built in code.
+std::vector<Case> jointCases();
+
 /// Free fall for 1 s in Impulse2D with one substep and in Box2D 2.4.1: the
 /// largest |y_Impulse2D − y_Box2D| over the 60 steps (m). Both integrate by
 /// semi-implicit Euler, so this is rounding only.

@@ -1,7 +1,7 @@
 // Validation suite — every case of cases.cpp asserted: Impulse2D always,
 // Box2D 2.4.1 where the case holds it to a figure (free fall to rounding;
 // pendulum, incline, rolling and bounce within their stated tolerance;
-// stacks and pyramids stand).
+// stacks and pyramids stand; the joint cases of joint_cases.cpp).
 #include <gtest/gtest.h>
 
 #include <cmath>
