@@ -190,10 +190,17 @@ void World::applyLinearImpulse(BodyId id, Vec2 impulse, Vec2 point, bool wake) {
     requireBounded(point, "point");
     detail::Body& body = state().bodies[b];
     if (body.type != BodyType::dynamic_body) return;
+    if (!wake && !body.awake) return;
+    // On a body of tiny mass a bounded impulse can still give an unbounded
+    // velocity (1e-37 kg: 1e38 m/s; found by fuzz_world): refused like an
+    // out-of-range setLinearVelocity, before anything changes.
+    const Vec2 v = body.v + body.invMass * impulse;
+    const float w = body.w + body.invInertia * cross(point - body.center, impulse);
+    requireBounded(v, "velocity after the impulse");
+    requireBounded(w, "angular velocity after the impulse");
     if (wake) detail::wakeBody(state(), b);
-    if (!body.awake) return;
-    body.v += body.invMass * impulse;
-    body.w += body.invInertia * cross(point - body.center, impulse);
+    body.v = v;
+    body.w = w;
 }
 
 void World::applyLinearImpulseToCenter(BodyId id, Vec2 impulse, bool wake) {
@@ -206,9 +213,11 @@ void World::applyAngularImpulse(BodyId id, float impulse, bool wake) {
     requireBounded(impulse, "angular impulse");
     detail::Body& body = state().bodies[b];
     if (body.type != BodyType::dynamic_body) return;
+    if (!wake && !body.awake) return;
+    const float w = body.w + body.invInertia * impulse;
+    requireBounded(w, "angular velocity after the impulse");  // see applyLinearImpulse
     if (wake) detail::wakeBody(state(), b);
-    if (!body.awake) return;
-    body.w += body.invInertia * impulse;
+    body.w = w;
 }
 
 float World::mass(BodyId id) const { return state().bodies[state().bodyIndex(id)].mass; }

@@ -565,6 +565,28 @@ TEST(ValidationWorld, MovedFromWorldRefusesCalls) {
     EXPECT_EQ(b.bodyCount(), 1);
 }
 
+// A bounded impulse on a body of tiny mass (a denormal density is accepted)
+// would give it a velocity beyond any bound: refused, nothing changes.
+TEST(ValidationWorld, ImpulseThatWouldOverflowIsRefused) {
+    Scene s;
+    World& w = s.world;
+    BodyId dust = w.createBody({.type = BodyType::dynamic_body, .position = {20.0f, 5.0f}});
+    w.createPolygonShape(dust, {.density = 1.0e-36f}, makeBox(0.5f, 0.5f));
+    ASSERT_GT(w.mass(dust), 0.0f);
+    ASSERT_LT(w.mass(dust), 1.0e-30f);
+    expectRefused(
+        s,
+        [&] {
+            w.applyLinearImpulseToCenter(dust, {10.0f, 0.0f});
+        },
+        "velocity after the impulse");
+    expectRefused(
+        s, [&] { w.applyAngularImpulse(dust, 10.0f); }, "angular velocity after the impulse");
+    // An impulse the body can take still works.
+    w.applyLinearImpulseToCenter(dust, {1.0e-36f, 0.0f});
+    EXPECT_GT(w.linearVelocity(dust).x, 0.0f);
+}
+
 TEST(ValidationWorld, JointsAndSettings) {
     Scene s;
     World& w = s.world;

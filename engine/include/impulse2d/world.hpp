@@ -155,7 +155,9 @@ public:
     void applyTorque(BodyId id, float torque, bool wake = true);
     /// Add an impulse (N·s) at a world point (m): the velocities change at once
     /// (locked). Only dynamic bodies are affected; with wake false a sleeping
-    /// body ignores it. Throws i2d::Error unless impulse and point are bounded.
+    /// body ignores it. Throws i2d::Error unless impulse and point are bounded
+    /// and the resulting velocities are too (a bounded impulse on a body of
+    /// tiny mass can give it a velocity beyond 1e7 m/s: refused).
     void applyLinearImpulse(BodyId id, Vec2 impulse, Vec2 worldPoint, bool wake = true);
     /// applyLinearImpulse at the centre of mass: no change of angular velocity.
     void applyLinearImpulseToCenter(BodyId id, Vec2 impulse, bool wake = true);
