@@ -26,34 +26,6 @@ BodyState& stateOf(SolverArrays& s, int index, BodyState& dummy) {
     return dummy;
 }
 
-/// A joint row that made a velocity non-finite (a degenerate joint driven past
-/// single precision: fuzz_world found a prismatic joint between a 0.24 kg and
-/// a 250 kg body of tiny inertia diverging in baumgarte until its impulses
-/// overflowed) stops the bodies it reached and drops the accumulated impulses
-/// of the rows on them, so every body stays finite. Checked once per sweep
-/// over the contiguous states (cheap; a per-row check cost 8 % of joint_grid).
-void stopNonFiniteBodies(SolverArrays& s) {
-    const std::size_t n = s.stateBodies.size();
-    bool allFinite = true;
-    for (std::size_t i = 0; i < n; ++i) {
-        const BodyState& st = s.states[i];
-        allFinite &= std::isfinite(st.v.x + st.v.y + st.w);
-    }
-    if (allFinite) [[likely]]
-        return;
-    std::vector<char> bad(n, 0);
-    for (std::size_t i = 0; i < n; ++i) {
-        BodyState& st = s.states[i];
-        if (std::isfinite(st.v.x + st.v.y + st.w)) continue;
-        bad[i] = 1;
-        st.v = Vec2{};
-        st.w = 0.0f;
-    }
-    auto touches = [&](int index) { return index >= 0 && bad[static_cast<std::size_t>(index)]; };
-    for (JointConstraint& jc : s.joints)
-        if (touches(jc.a) || touches(jc.b) || touches(jc.c) || touches(jc.d)) jc.impulses = JointImpulses{};
-}
-
 void colourJoints(SolverArrays& s) {
     std::vector<JointConstraint>& rows = s.joints;
     const std::size_t bodyCount = s.stateBodies.size();
@@ -169,7 +141,6 @@ void warmStartJoints(WorldState& w) {
             case JointType::gear: warmStartGearJoint(jc, {sA, sB, stateOf(s, jc.c, dC), stateOf(s, jc.d, dD)}); break;
         }
     }
-    stopNonFiniteBodies(s);
 }
 
 void solveJoints(WorldState& w, const JointContext& ctx) {
@@ -190,7 +161,6 @@ void solveJoints(WorldState& w, const JointContext& ctx) {
             case JointType::gear: solveGearJoint(jc, ctx, {sA, sB, stateOf(s, jc.c, dC), stateOf(s, jc.d, dD)}); break;
         }
     }
-    stopNonFiniteBodies(s);
 }
 
 void pushJoints(WorldState& w, const JointContext& ctx) {
@@ -252,12 +222,6 @@ void pushJoints(WorldState& w, const JointContext& ctx) {
         }
         writeBack(jc.a, pA);
         writeBack(jc.b, pB);
-    }
-    // As stopNonFiniteBodies for the pseudo-velocities: a diverging push is dropped.
-    for (std::size_t i = 0; i < s.stateBodies.size(); ++i) {
-        if (std::isfinite(s.biasV[i].x + s.biasV[i].y + s.biasW[i])) continue;
-        s.biasV[i] = Vec2{};
-        s.biasW[i] = 0.0f;
     }
 }
 
