@@ -40,8 +40,7 @@ void prepareDistanceJoint(const WorldState& w, const Joint& joint, JointConstrai
     const Body& bA = w.bodies[joint.bodyA];
     const Body& bB = w.bodies[joint.bodyB];
     DistanceRow& row = jc.row.distance;
-    jc.rA = rotate(bA.xf.q, def.localAnchorA - bA.localCenter);
-    jc.rB = rotate(bB.xf.q, def.localAnchorB - bB.localCenter);
+    setAnchors(bA, bB, def.localAnchorA, def.localAnchorB, jc);
     Vec2 axis = normalize(jc.deltaCenter + jc.rB - jc.rA);
     float crA = cross(jc.rA, axis), crB = cross(jc.rB, axis);
     float k = jc.invMassA + jc.invMassB + jc.invIA * crA * crA + jc.invIB * crB * crB;

@@ -145,6 +145,42 @@ inline void applySliderImpulse(const JointConstraint& jc, const SliderFrame& f, 
 inline float axialSpeed(const SliderFrame& f, const BodyState& stA, const BodyState& stB) {
     return dot(f.axis, stB.v - stA.v) + f.aB * stB.w - f.aA * stA.w;
 }
+/// The translation limits of a slider (prismatic, wheel): one-sided rows on
+/// u·d − lower ≥ 0 and upper − u·d ≥ 0 with effective mass `mass`.
+inline void solveSliderLimits(JointConstraint& jc, const JointContext& ctx, const SliderFrame& f, float mass,
+                              float lower, float upper, BodyState& sA, BodyState& sB) {
+    JointImpulses& acc = jc.impulses;
+    {
+        const RowBias rb = limitBias(ctx, f.translation - lower);
+        float impulse = -rb.massScale * mass * (axialSpeed(f, sA, sB) + rb.bias) - rb.impulseScale * acc.lower;
+        impulse = boundedIncrement(acc.lower, impulse, 0.0f, INFINITY);
+        applySliderImpulse(jc, f, impulse, 0.0f, 0.0f, sA, sB);
+    }
+    {
+        const RowBias rb = limitBias(ctx, upper - f.translation);
+        float impulse = -rb.massScale * mass * (-axialSpeed(f, sA, sB) + rb.bias) - rb.impulseScale * acc.upper;
+        impulse = boundedIncrement(acc.upper, impulse, 0.0f, INFINITY);
+        applySliderImpulse(jc, f, -impulse, 0.0f, 0.0f, sA, sB);
+    }
+}
+
+/// Adds `impulse` to the accumulated linear impulse within a disc of radius
+/// maxImpulse (a force cap); returns the part applied.
+inline Vec2 discBoundedIncrement(Vec2& accumulated, Vec2 impulse, float maxImpulse) {
+    const Vec2 old = accumulated;
+    accumulated += impulse;
+    const float len2 = lengthSquared(accumulated);
+    if (len2 > maxImpulse * maxImpulse) accumulated *= maxImpulse / std::sqrt(len2);
+    return accumulated - old;
+}
+
+/// A joint's anchors relative to the bodies' centres of mass at the step's
+/// start, in world axes (from anchors given relative to the bodies' origins).
+inline void setAnchors(const Body& bA, const Body& bB, Vec2 localAnchorA, Vec2 localAnchorB, JointConstraint& jc) {
+    jc.rA = rotate(bA.xf.q, localAnchorA - bA.localCenter);
+    jc.rB = rotate(bB.xf.q, localAnchorB - bB.localCenter);
+}
+
 inline float axialMass(const JointConstraint& jc, const SliderFrame& f) {
     const float k = jc.invMassA + jc.invMassB + jc.invIA * f.aA * f.aA + jc.invIB * f.aB * f.aB;
     return k > 0.0f ? 1.0f / k : 0.0f;

@@ -55,12 +55,7 @@ void solveMotorJoint(JointConstraint& jc, const JointContext& ctx, BodyState& sA
     const float mA = jc.invMassA, mB = jc.invMassB;
     const Sym22 K = pointMatrix(mA, iA, mB, iB, rA, rB);
     Vec2 impulse = -1.0f * solveSymmetric22(K, cdot);
-    const Vec2 old = acc.linear;
-    acc.linear += impulse;
-    const float maxImpulse = ctx.h * row.maxForce;
-    const float len2 = lengthSquared(acc.linear);
-    if (len2 > maxImpulse * maxImpulse) acc.linear *= maxImpulse / std::sqrt(len2);
-    impulse = acc.linear - old;
+    impulse = discBoundedIncrement(acc.linear, impulse, ctx.h * row.maxForce);
     applyImpulse(jc, rA, rB, impulse, 0.0f, sA, sB);
 }
 

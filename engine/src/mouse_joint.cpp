@@ -42,12 +42,7 @@ void solveMouseJoint(JointConstraint& jc, const JointContext& ctx, BodyState& sA
     const Sym22 K = pointMatrix(0.0, 0.0, mB, iB, Vec2{}, rB);
     const Vec2 x = solveSymmetric22(K, cdot + rb.bias * C);
     Vec2 impulse = -rb.massScale * x - rb.impulseScale * acc.linear;
-    const Vec2 old = acc.linear;
-    acc.linear += impulse;
-    const float maxImpulse = ctx.h * row.maxForce;
-    const float len2 = lengthSquared(acc.linear);
-    if (len2 > maxImpulse * maxImpulse) acc.linear *= maxImpulse / std::sqrt(len2);
-    impulse = acc.linear - old;
+    impulse = discBoundedIncrement(acc.linear, impulse, ctx.h * row.maxForce);
     applyImpulse(jc, Vec2{}, rB, impulse, 0.0f, sA, sB);
 }
 

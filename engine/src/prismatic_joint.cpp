@@ -22,8 +22,7 @@ void preparePrismaticJoint(const WorldState& w, const Joint& joint, JointConstra
     const PrismaticJointDef& def = std::get<PrismaticJointDef>(joint.def);
     const Body& bA = w.bodies[joint.bodyA];
     const Body& bB = w.bodies[joint.bodyB];
-    jc.rA = rotate(bA.xf.q, def.localAnchorA - bA.localCenter);
-    jc.rB = rotate(bB.xf.q, def.localAnchorB - bB.localCenter);
+    setAnchors(bA, bB, def.localAnchorA, def.localAnchorB, jc);
     PrismaticRow& row = jc.row.prismatic;
     row.axisA = rotate(bA.xf.q, normalize(def.localAxisA));
     row.referenceAngle = def.referenceAngle;
@@ -62,20 +61,7 @@ void solvePrismaticJoint(JointConstraint& jc, const JointContext& ctx, BodyState
         impulse = boundedIncrement(acc.motor, impulse, -maxImpulse, maxImpulse);
         applySliderImpulse(jc, f, impulse, 0.0f, 0.0f, sA, sB);
     }
-    if (row.enableLimit) {
-        {
-            const RowBias rb = limitBias(ctx, f.translation - row.lower);
-            float impulse = -rb.massScale * mass * (axialSpeed(f, sA, sB) + rb.bias) - rb.impulseScale * acc.lower;
-            impulse = boundedIncrement(acc.lower, impulse, 0.0f, INFINITY);
-            applySliderImpulse(jc, f, impulse, 0.0f, 0.0f, sA, sB);
-        }
-        {
-            const RowBias rb = limitBias(ctx, row.upper - f.translation);
-            float impulse = -rb.massScale * mass * (-axialSpeed(f, sA, sB) + rb.bias) - rb.impulseScale * acc.upper;
-            impulse = boundedIncrement(acc.upper, impulse, 0.0f, INFINITY);
-            applySliderImpulse(jc, f, -impulse, 0.0f, 0.0f, sA, sB);
-        }
-    }
+    if (row.enableLimit) solveSliderLimits(jc, ctx, f, mass, row.lower, row.upper, sA, sB);
 
     // Perpendicular and angle as one 2×2 block.
     const float iA = jc.invIA, iB = jc.invIB;

@@ -40,8 +40,7 @@ void preparePulleyJoint(const WorldState& w, const Joint& joint, JointConstraint
     const PulleyJointDef& def = std::get<PulleyJointDef>(joint.def);
     const Body& bA = w.bodies[joint.bodyA];
     const Body& bB = w.bodies[joint.bodyB];
-    jc.rA = rotate(bA.xf.q, def.localAnchorA - bA.localCenter);
-    jc.rB = rotate(bB.xf.q, def.localAnchorB - bB.localCenter);
+    setAnchors(bA, bB, def.localAnchorA, def.localAnchorB, jc);
     PulleyRow& row = jc.row.pulley;
     row.groundFromCenterA = def.groundAnchorA - bA.center;
     row.groundFromCenterB = def.groundAnchorB - bB.center;

@@ -14,8 +14,7 @@ void prepareWeldJoint(const WorldState& w, const Joint& joint, JointConstraint& 
     const WeldJointDef& def = std::get<WeldJointDef>(joint.def);
     const Body& bA = w.bodies[joint.bodyA];
     const Body& bB = w.bodies[joint.bodyB];
-    jc.rA = rotate(bA.xf.q, def.localAnchorA - bA.localCenter);
-    jc.rB = rotate(bB.xf.q, def.localAnchorB - bB.localCenter);
+    setAnchors(bA, bB, def.localAnchorA, def.localAnchorB, jc);
     WeldRow& row = jc.row.weld;
     const float k = jc.invIA + jc.invIB;
     row.axialMass = k > 0.0f ? 1.0f / k : 0.0f;

@@ -16,8 +16,7 @@ void prepareWheelJoint(const WorldState& w, const Joint& joint, JointConstraint&
     const WheelJointDef& def = std::get<WheelJointDef>(joint.def);
     const Body& bA = w.bodies[joint.bodyA];
     const Body& bB = w.bodies[joint.bodyB];
-    jc.rA = rotate(bA.xf.q, def.localAnchorA - bA.localCenter);
-    jc.rB = rotate(bB.xf.q, def.localAnchorB - bB.localCenter);
+    setAnchors(bA, bB, def.localAnchorA, def.localAnchorB, jc);
     WheelRow& row = jc.row.wheel;
     row.axisA = rotate(bA.xf.q, normalize(def.localAxisA));
     const float k = jc.invIA + jc.invIB;
@@ -58,20 +57,7 @@ void solveWheelJoint(JointConstraint& jc, const JointContext& ctx, BodyState& sA
         acc.spring += impulse;
         applySliderImpulse(jc, f, impulse, 0.0f, 0.0f, sA, sB);
     }
-    if (row.enableLimit) {
-        {
-            const RowBias rb = limitBias(ctx, f.translation - row.lower);
-            float impulse = -rb.massScale * mass * (axialSpeed(f, sA, sB) + rb.bias) - rb.impulseScale * acc.lower;
-            impulse = boundedIncrement(acc.lower, impulse, 0.0f, INFINITY);
-            applySliderImpulse(jc, f, impulse, 0.0f, 0.0f, sA, sB);
-        }
-        {
-            const RowBias rb = limitBias(ctx, row.upper - f.translation);
-            float impulse = -rb.massScale * mass * (-axialSpeed(f, sA, sB) + rb.bias) - rb.impulseScale * acc.upper;
-            impulse = boundedIncrement(acc.upper, impulse, 0.0f, INFINITY);
-            applySliderImpulse(jc, f, -impulse, 0.0f, 0.0f, sA, sB);
-        }
-    }
+    if (row.enableLimit) solveSliderLimits(jc, ctx, f, mass, row.lower, row.upper, sA, sB);
     // The point stays on the axis line.
     {
         const float k = jc.invMassA + jc.invMassB + jc.invIA * f.sA * f.sA + jc.invIB * f.sB * f.sB;
