@@ -64,7 +64,8 @@ void applyCollideConnected(detail::WorldState& w, detail::Joint& jt, bool collid
     }
 }
 
-/// set…JointDef: the same bodies, a valid definition; features turned off lose their impulse.
+/// set…JointDef: the same bodies, a valid definition; features turned off lose
+/// their impulse. A mouse joint keeps the point of body B it grabbed.
 template <class Def>
 void setDef(detail::WorldState& w, JointId id, const Def& def) {
     w.checkUnlocked();
@@ -81,7 +82,6 @@ void setDef(detail::WorldState& w, JointId id, const Def& def) {
     jt.def = def;
     jt.userData = def.userData;
     if constexpr (std::is_same_v<Def, PulleyJointDef>) jt.constant = def.lengthA + def.ratio * def.lengthB;
-    if constexpr (std::is_same_v<Def, MouseJointDef>) jt.localAnchorB = jt.localAnchorB;  // keeps the grabbed point
     if constexpr (requires { def.enableMotor; })
         if (!def.enableMotor) jt.impulses.motor = 0.0f;
     if constexpr (requires { def.enableSpring; })
