@@ -181,9 +181,11 @@ void stopNonFiniteBodies(SolverArrays& s) {
         const BodyState& st = s.states[i];
         allFinite &= std::isfinite(st.v.x + st.v.y + st.w);
     }
+    allFinite &= std::isfinite(s.states[n].v.x + s.states[n].v.y + s.states[n].w);  // the zero state
     if (allFinite) [[likely]]
         return;
-    std::vector<char> bad(n + 1, 0);  // the zero state last never is
+    s.states[n] = BodyState{};
+    std::vector<char> bad(n + 1, 0);  // the zero state, just reset, is not marked
     for (std::size_t i = 0; i < n; ++i) {
         BodyState& st = s.states[i];
         if (std::isfinite(st.v.x + st.v.y + st.w)) continue;
