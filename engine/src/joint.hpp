@@ -128,6 +128,8 @@ struct JointConstraint {
     JointRow row;
 };
 
+static_assert(sizeof(JointConstraint) == 212, "the layout docs/architecture.md gives");
+
 /// What a joint's solve needs besides its row and its bodies' states.
 struct JointContext {
     float h = 0.0f, invH = 0.0f;  ///< the (sub)step
