@@ -10,7 +10,7 @@
 // C = q1 + r·q2 − constant, J = J1 + r·J2, m_eff = 1/Σ(m⁻¹|J_v|² + I⁻¹ J_ω²) over
 // the four bodies; a bilateral row softened like every rigid row. Angles are
 // not wrapped: the gear keeps the error C at the end of each step
-// (Joint::constant) and adds the change of each coordinate within the step,
+// (Joint::gearError) and adds the change of each coordinate within the step,
 // so it follows any number of turns.
 // Impulses: axial.
 #include "joint_rows.hpp"
@@ -58,7 +58,7 @@ GearNow gearNow(const JointConstraint& jc, const GearStates& s) {
     GearNow g;
     g.p1 = gearPart(row.prismatic1, row.axisC, row.rCAnchor, row.rAAnchor, row.deltaCenterCA, row.reference1, s.a, s.c);
     g.p2 = gearPart(row.prismatic2, row.axisD, row.rDAnchor, row.rBAnchor, row.deltaCenterDB, row.reference2, s.b, s.d);
-    g.C = row.constant + g.p1.delta + row.ratio * g.p2.delta;
+    g.C = row.errorAtStart + g.p1.delta + row.ratio * g.p2.delta;
     return g;
 }
 
@@ -103,7 +103,7 @@ void prepareGearJoint(const WorldState& w, const Joint& joint, JointConstraint& 
     GearRow& row = jc.row.gear;
     row = GearRow{};
     row.ratio = def.ratio;
-    row.constant = joint.constant;
+    row.errorAtStart = joint.gearError;
     row.prismatic1 = j1.type == JointType::prismatic;
     row.prismatic2 = j2.type == JointType::prismatic;
     if (row.prismatic1) {

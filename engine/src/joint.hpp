@@ -36,8 +36,9 @@ struct Joint {
     JointDefVariant def;  ///< as given (handles included), changed by the set…Def calls
     int bodyA = kNullIndex, bodyB = kNullIndex;
     int joint1 = kNullIndex, joint2 = kNullIndex;  ///< gear: the coupled joints
-    /// gear: coordinate1 + ratio·coordinate2 at creation; pulley: lengthA + ratio·lengthB
-    float constant = 0.0f;
+    /// gear: its error coordinate1 + ratio·coordinate2 − (that at creation), kept
+    /// from step to step so that it follows any number of turns (gear_joint.cpp)
+    float gearError = 0.0f;
     Vec2 localAnchorB{};  ///< mouse: body B's point that is pulled (body frame)
     JointImpulses impulses;
     Vec2 reactionForce{};  ///< N, on body B, over the last step it was awake
@@ -94,8 +95,8 @@ struct GearRow {
     // Joint 1: revolute (angle of A relative to C) or prismatic (translation of A along C's axis).
     Vec2 axisC, rCAnchor, rAAnchor, deltaCenterCA;  ///< prismatic 1 only
     Vec2 axisD, rDAnchor, rBAnchor, deltaCenterDB;  ///< prismatic 2 only
-    float reference1, reference2;                   ///< revolute: reference angles
-    float ratio, constant;
+    float reference1, reference2;                   ///< prismatic: the translation at step start
+    float ratio, errorAtStart;                      ///< errorAtStart: Joint::gearError when the step began
     bool prismatic1, prismatic2;
 };
 

@@ -287,7 +287,7 @@ void storeJoints(WorldState& w, float h) {
             case JointType::gear: {
                 GearStates gs{const_cast<BodyState&>(sA), const_cast<BodyState&>(sB), stateOf(s, jc.c),
                               stateOf(s, jc.d)};
-                joint.constant = gearCoordinateError(jc, gs);
+                joint.gearError = gearCoordinateError(jc, gs);
                 torque = jc.row.gear.ratio * acc.axial * invDt;
                 break;
             }

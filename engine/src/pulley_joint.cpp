@@ -45,7 +45,7 @@ void preparePulleyJoint(const WorldState& w, const Joint& joint, JointConstraint
     row.groundFromCenterA = def.groundAnchorA - bA.center;
     row.groundFromCenterB = def.groundAnchorB - bB.center;
     row.ratio = def.ratio;
-    row.constant = joint.constant;
+    row.constant = def.lengthA + def.ratio * def.lengthB;
 }
 
 void warmStartPulleyJoint(const JointConstraint& jc, BodyState& sA, BodyState& sB) {

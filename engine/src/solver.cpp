@@ -281,7 +281,9 @@ void solve(WorldState& w, float dt) {
     jointCtx.jointSoft = makeSoft(std::min(set.jointHertz, 0.25f * jointCtx.invH), set.jointDampingRatio, h);
     jointCtx.pushFactor = set.pushFactor;
     jointCtx.maxLinearSpeed = maxSpeed;
+    // A world without joints pays nothing for them, the check included.
     auto joints = [&](SolvePass pass) {
+        if (s.joints.empty()) return;
         jointCtx.pass = pass;
         solveJoints(w, jointCtx);
         stopNonFiniteBodies(s);

@@ -75,12 +75,7 @@ JointId World::createMouseJoint(const MouseJointDef& def) {
     });
 }
 
-JointId World::createPulleyJoint(const PulleyJointDef& def) {
-    return createSimple(state(), JointType::pulley, def, [](detail::WorldState&, detail::Joint& jt) {
-        const PulleyJointDef& d = std::get<PulleyJointDef>(jt.def);
-        jt.constant = d.lengthA + d.ratio * d.lengthB;
-    });
-}
+JointId World::createPulleyJoint(const PulleyJointDef& def) { return createSimple(state(), JointType::pulley, def); }
 
 JointId World::createGearJoint(const GearJointDef& def) {
     auto& w = state();
@@ -108,7 +103,7 @@ JointId World::createGearJoint(const GearJointDef& def) {
     jt.joint2 = j2;
     jt.collideConnected = def.collideConnected;
     jt.userData = def.userData;
-    jt.constant = 0.0f;  // the coupled coordinates are held where they are now
+    jt.gearError = 0.0f;  // the coupled coordinates are held where they are now
     detail::linkJoint(w, g);
     return w.jointHandle(g);
 }

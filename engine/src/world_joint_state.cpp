@@ -81,7 +81,6 @@ void setDef(detail::WorldState& w, JointId id, const Def& def) {
     detail::validateJointDef(def);
     jt.def = def;
     jt.userData = def.userData;
-    if constexpr (std::is_same_v<Def, PulleyJointDef>) jt.constant = def.lengthA + def.ratio * def.lengthB;
     if constexpr (requires { def.enableMotor; })
         if (!def.enableMotor) jt.impulses.motor = 0.0f;
     if constexpr (requires { def.enableSpring; })
