@@ -9,6 +9,7 @@
 #include <algorithm>
 #include <cmath>
 
+#include "contact_persistence.hpp"
 #include "world_state.hpp"
 
 namespace i2d::detail {
@@ -76,6 +77,11 @@ bool updateContact(WorldState& w, int c) {
         destroyContact(w, c, true);
         return false;
     }
+    const Body& bodyA = w.bodies[ct.bodyA];
+    const Body& bodyB = w.bodies[ct.bodyB];
+    // A touching flat pair that has barely moved keeps its manifold: still
+    // touching, same ids, impulses kept (contact_persistence.hpp).
+    if (ct.touching && reuseManifold(ct, bodyA, bodyB, w.settings.manifoldReuseDistance)) return true;
     Manifold m = computeManifold(w, ct);
     bool touching;
     if (ct.isSensor) {
@@ -100,6 +106,8 @@ bool updateContact(WorldState& w, int c) {
         }
     }
     ct.manifold = m;
+    ct.framed = false;
+    if (!ct.isSensor && canPersist(a, b)) recordManifoldFrame(ct, bodyA, bodyB);
     if (touching != ct.touching) {
         ct.touching = touching;
         if (touching) {

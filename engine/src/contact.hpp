@@ -14,8 +14,24 @@ namespace i2d::detail {
 
 struct WorldState;
 
+/// An overlap deeper than this (m; ten times the linear slop) is not a
+/// resting contact but bodies created or pushed into each other: such
+/// contacts share the push cap (contact_solver.cpp) and never keep a
+/// manifold (contact_persistence.cpp). Resting stacks overlap by millimetres;
+/// the bottom of a column of 50 by 4.4 cm.
+constexpr float kDeepOverlap = 0.05f;
+
+/// Where a manifold was computed, for reusing it (contact_persistence.hpp).
+struct ManifoldFrame {
+    Transform relative{};   ///< B's pose in A's frame then
+    Rot rotationA{};        ///< A's rotation then
+    Vec2 anchorA[2]{};      ///< the manifold points in A's frame then
+    float separation[2]{};  ///< their separations then (m)
+};
+
 struct Contact {
     Manifold manifold{};
+    ManifoldFrame frame{};     ///< valid when `framed`
     float normalImpulse[2]{};  ///< accumulated at each manifold point (N·s)
     float tangentImpulse[2]{};
     float friction = 0.0f, restitution = 0.0f;  ///< mixed from the two shapes
@@ -27,6 +43,7 @@ struct Contact {
     bool touching = false;  ///< the manifold has points (sensors: an overlap)
     bool isSensor = false;
     bool enableEvents = false;
+    bool framed = false;  ///< a flat pair whose manifold has points: it may be reused
 };
 
 /// Finds the new pairs among the shapes whose proxies moved (broad_phase.hpp)

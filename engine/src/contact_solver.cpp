@@ -10,6 +10,7 @@
 #include <algorithm>
 #include <cmath>
 
+#include "contact_persistence.hpp"
 #include "contact_solver.hpp"
 #include "world_state.hpp"
 
@@ -24,7 +25,6 @@ namespace {
 // maxPushSpeed / n (n the larger count of its two bodies), which bounds the
 // push a body receives by about maxPushSpeed. Contacts of resting stacks
 // overlap by millimetres, far less than kDeepOverlap, and keep the full cap.
-constexpr float kDeepOverlap = 0.05f;  ///< m; ten times the linear slop
 
 // Divides the push cap of each deep contact by the larger deep-contact count
 // of its two bodies (counted in prepareContacts).
@@ -118,8 +118,7 @@ void prepareContacts(WorldState& w, float h, bool soft) {
         for (int j = 0; j < cc.pointCount; ++j) {
             const ManifoldPoint& mp = ct.manifold.points[j];
             ContactPointConstraint& cp = cc.points[j];
-            cp.rA = mp.point - bA.center;
-            cp.rB = mp.point - bB.center;
+            contactArms(ct, bA, bB, j, cp.rA, cp.rB);
             cp.adjustedSeparation = mp.separation - dot(cp.rB - cp.rA, n);
             // Effective mass of the normal row: 1 / (J M⁻¹ Jᵀ) with J of Tamis and Maggiore (2015) §5.3.
             float rnA = cross(cp.rA, n), rnB = cross(cp.rB, n);

@@ -35,14 +35,16 @@ void validateSettings(const WorldSettings& s) {
     requireNonNegative(s.restitutionThreshold, "restitutionThreshold");
     requireNonNegative(s.impactThreshold, "impactThreshold");
     requireNonNegative(s.speculativeDistance, "speculativeDistance");
+    requireNonNegative(s.manifoldReuseDistance, "manifoldReuseDistance");
     requireNonNegative(s.aabbMargin, "aabbMargin");
     requireNonNegative(s.timeToSleep, "timeToSleep");
     requireNonNegative(s.linearSleepTolerance, "linearSleepTolerance");
     requireNonNegative(s.angularSleepTolerance, "angularSleepTolerance");
     requireBounded(s.maxLinearSpeed, "maxLinearSpeed");
     if (s.maxLinearSpeed <= 0.0f) fail("maxLinearSpeed must be > 0");
-    if (s.penetrationSlop > 1.0f || s.speculativeDistance > 10.0f || s.aabbMargin > 10.0f)
-        fail("penetrationSlop, speculativeDistance or aabbMargin is unreasonably large");
+    if (s.penetrationSlop > 1.0f || s.speculativeDistance > 10.0f || s.aabbMargin > 10.0f ||
+        s.manifoldReuseDistance > 10.0f)
+        fail("penetrationSlop, speculativeDistance, aabbMargin or manifoldReuseDistance is unreasonably large");
     if (static_cast<int>(s.positionCorrection) > 2) fail("unknown positionCorrection");
     if (static_cast<int>(s.impactModel) > 1) fail("unknown impactModel");
 }

@@ -11,7 +11,8 @@ const char* settingsOptionsHelp() {
            "  --substeps N              substeps per step (soft_step)\n"
            "  --correction MODE         soft_step | baumgarte | split\n"
            "  --impact MODEL            closed_form | velocity_bias\n"
-           "  --sleep on|off            enable or disable sleeping\n";
+           "  --sleep on|off            enable or disable sleeping\n"
+           "  --manifold-reuse D        manifold reuse distance (m); 0 recomputes every manifold every step\n";
 }
 
 void SettingsOverrides::applyTo(i2d::WorldSettings& s) const {
@@ -21,6 +22,7 @@ void SettingsOverrides::applyTo(i2d::WorldSettings& s) const {
     if (correction) s.positionCorrection = *correction;
     if (impact) s.impactModel = *impact;
     if (sleep) s.enableSleep = *sleep;
+    if (manifoldReuse) s.manifoldReuseDistance = *manifoldReuse;
 }
 
 Box2DSettings SettingsOverrides::box2dSettings() const {
@@ -41,6 +43,8 @@ bool parseSettingsOption(ArgReader& r, SettingsOverrides& o) {
         o.correction = r.choice<i2d::PositionCorrection>();
     } else if (r.is("--impact")) {
         o.impact = r.choice<i2d::ImpactModel>();
+    } else if (r.is("--manifold-reuse")) {
+        o.manifoldReuse = static_cast<float>(r.number(0.0, 10.0));
     } else if (r.is("--sleep")) {
         o.sleep = r.onOff();
     } else {

@@ -16,6 +16,7 @@ struct SettingsOverrides {
     std::optional<int> velocityIterations;
     std::optional<int> positionIterations;
     std::optional<int> substeps;
+    std::optional<float> manifoldReuse;
     std::optional<i2d::PositionCorrection> correction;
     std::optional<i2d::ImpactModel> impact;
     std::optional<bool> sleep;

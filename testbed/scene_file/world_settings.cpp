@@ -23,6 +23,7 @@ i2d::WorldSettings parseWorld(const json& j, const Loc& loc) {
            "restitution_threshold",
            "impact_threshold",
            "speculative_distance",
+           "manifold_reuse_distance",
            "aabb_margin",
            "max_linear_speed",
            "enable_warm_starting",
@@ -50,6 +51,7 @@ i2d::WorldSettings parseWorld(const json& j, const Loc& loc) {
     s.restitutionThreshold = o.f("restitution_threshold", s.restitutionThreshold, {0, kMaxSpeed});
     s.impactThreshold = o.f("impact_threshold", s.impactThreshold, {0, kMaxSpeed});
     s.speculativeDistance = o.f("speculative_distance", s.speculativeDistance, {0, 10});
+    s.manifoldReuseDistance = o.f("manifold_reuse_distance", s.manifoldReuseDistance, {0, 10});
     s.aabbMargin = o.f("aabb_margin", s.aabbMargin, {0, 100});
     s.maxLinearSpeed = o.f("max_linear_speed", s.maxLinearSpeed, {0, kMaxSpeed, true});
     s.enableWarmStarting = o.boolean("enable_warm_starting", s.enableWarmStarting);

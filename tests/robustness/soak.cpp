@@ -4,7 +4,10 @@
 // non-finite state or when the resident set grows by more than the allowed
 // amount after warm-up.
 //
-// Usage: soak [--seconds S (3600)] [--sleep on|off] [--assets DIR] SCENE...
+// With --max-sway M it also fails when a body named "top" ever moves more
+// than M metres sideways from where it started (a column that must stand).
+//
+// Usage: soak [--seconds S (3600)] [--sleep on|off] [--max-sway M] [--assets DIR] SCENE...
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
@@ -41,6 +44,7 @@ bool finiteWorld(const i2d::World& world) {
 int main(int argc, char** argv) {
     double seconds = 3600.0;
     bool sleepOff = false;
+    double maxSwayAllowed = -1.0;
     std::string assets;
     std::vector<std::string> scenes;
     for (int i = 1; i < argc; ++i) {
@@ -49,6 +53,8 @@ int main(int argc, char** argv) {
             seconds = std::atof(argv[++i]);
         } else if (a == "--sleep" && i + 1 < argc) {
             sleepOff = std::string(argv[++i]) == "off";
+        } else if (a == "--max-sway" && i + 1 < argc) {
+            maxSwayAllowed = std::atof(argv[++i]);
         } else if (a == "--assets" && i + 1 < argc) {
             assets = argv[++i];
         } else {
@@ -56,7 +62,7 @@ int main(int argc, char** argv) {
         }
     }
     if (scenes.empty() || !(seconds > 0.0)) {
-        std::fprintf(stderr, "usage: soak [--seconds S] [--sleep on|off] [--assets DIR] SCENE...\n");
+        std::fprintf(stderr, "usage: soak [--seconds S] [--sleep on|off] [--max-sway M] [--assets DIR] SCENE...\n");
         return 2;
     }
     // Allowed growth of the resident set after warm-up (the first 10% of the
@@ -73,8 +79,13 @@ int main(int argc, char** argv) {
         long peakKiB = 0;
         long startKiB = residentKiB();
         bool finite = true;
+        const auto topIt = scene.named.find("top");
+        const bool hasTop = topIt != scene.named.end();
+        const float x0 = hasTop ? scene.world->position(topIt->second).x : 0.0f;
+        double maxSway = 0.0;
         for (long s = 1; s <= steps && finite; ++s) {
             scene.world->step(desc.dt);
+            if (hasTop) maxSway = std::max(maxSway, double(std::abs(scene.world->position(topIt->second).x - x0)));
             if (s % 600 == 0 || s == steps || s == warmup) {
                 finite = finiteWorld(*scene.world);
                 long rss = residentKiB();
@@ -91,8 +102,11 @@ int main(int argc, char** argv) {
             "%s: %ld steps (%.0f s), sleep %s, finite %s, RSS start %ld KiB, after warm-up %ld KiB, end %ld KiB, peak %ld KiB%s\n",
             name.c_str(), steps, steps * desc.dt, desc.settings.enableSleep ? "on" : "off", finite ? "yes" : "NO",
             startKiB, warmKiB, endKiB, peakKiB, grew ? "  GREW" : "");
+        const bool swayed = hasTop && maxSwayAllowed >= 0.0 && maxSway > maxSwayAllowed;
+        if (hasTop)
+            std::printf("%s: top box swayed at most %.4f m%s\n", name.c_str(), maxSway, swayed ? "  TOO FAR" : "");
         std::fflush(stdout);
-        if (!finite || grew) ++failures;
+        if (!finite || grew || swayed) ++failures;
     }
     return failures == 0 ? 0 : 1;
 }

@@ -1,0 +1,83 @@
+// Persistent manifolds (contact_persistence.hpp says why and what).
+#include "contact_persistence.hpp"
+
+#include <cmath>
+
+#include "body.hpp"
+#include "shape.hpp"
+
+namespace i2d::detail {
+
+namespace {
+
+bool isFlat(ShapeType t) { return t == ShapeType::polygon || t == ShapeType::segment; }
+
+/// Farthest point of the body's solid shapes from its origin (m).
+float reachFromOrigin(const Body& b) { return std::max(b.reach, 0.0f) + length(b.localCenter); }
+
+/// |sin| of the turn from q0 to q1.
+float turnSine(Rot q0, Rot q1) { return std::abs(q0.c * q1.s - q0.s * q1.c); }
+
+// Beyond a turn of about 11° (cos 0.98) a manifold is recomputed whatever the
+// reach: the fixed normal would be too far from the faces.
+constexpr float kMinTurnCosine = 0.98f;
+
+}  // namespace
+
+bool canPersist(const Shape& a, const Shape& b) { return !a.isSensor && !b.isSensor && isFlat(a.type) && isFlat(b.type); }
+
+void recordManifoldFrame(Contact& c, const Body& a, const Body& b) {
+    ManifoldFrame& f = c.frame;
+    f.relative = invMulTransforms(a.xf, b.xf);
+    f.rotationA = a.xf.q;
+    for (int j = 0; j < c.manifold.pointCount; ++j) {
+        f.anchorA[j] = invTransformPoint(a.xf, c.manifold.points[j].point);
+        f.separation[j] = c.manifold.points[j].separation;
+    }
+    // A deep overlap is not at rest: its geometry changes as it separates.
+    bool shallow = c.manifold.pointCount > 0;
+    for (int j = 0; j < c.manifold.pointCount; ++j) shallow = shallow && c.manifold.points[j].separation > -kDeepOverlap;
+    c.framed = shallow;
+}
+
+bool reuseManifold(Contact& c, const Body& a, const Body& b, float reuseDistance) {
+    if (!c.framed || reuseDistance <= 0.0f) return false;
+    const ManifoldFrame& f = c.frame;
+    const Transform rel = invMulTransforms(a.xf, b.xf);
+    // In A's frame, B's points moved by at most |Δp| + reach·|sin Δθ|; the
+    // normal is fixed in the world, so A's own turn counts too.
+    const float relCos = dot(Vec2{rel.q.c, rel.q.s}, Vec2{f.relative.q.c, f.relative.q.s});
+    const float absCos = dot(Vec2{a.xf.q.c, a.xf.q.s}, Vec2{f.rotationA.c, f.rotationA.s});
+    if (relCos < kMinTurnCosine || absCos < kMinTurnCosine) return false;
+    const float moved = length(rel.p - f.relative.p) + reachFromOrigin(b) * turnSine(f.relative.q, rel.q);
+    if (!(moved < reuseDistance)) return false;
+    const Vec2 n = c.manifold.normal;
+    for (int j = 0; j < c.manifold.pointCount; ++j) {
+        const Vec2 pA = transformPoint(a.xf, f.anchorA[j]);
+        const Vec2 pB = transformPoint(b.xf, invTransformPoint(f.relative, f.anchorA[j]));
+        ManifoldPoint& mp = c.manifold.points[j];
+        mp.separation = f.separation[j] + dot(pB - pA, n);
+        mp.point = 0.5f * (pA + pB);
+    }
+    return true;
+}
+
+void contactArms(const Contact& c, const Body& a, const Body& b, int j, Vec2& rA, Vec2& rB) {
+    if (!c.framed) {
+        const Vec2 p = c.manifold.points[j].point;
+        rA = p - a.center;
+        rB = p - b.center;
+        return;
+    }
+    // The arms as they were when the manifold was computed, in the world's
+    // orientation of that moment: they do not turn with the bodies. A box
+    // that tilts by θ under a load W would otherwise carry that load between
+    // two points offset sideways by θ·(its height), a moment W·θ that tilts
+    // it further: the same feedback as above, from the turn of the arms.
+    const ManifoldFrame& f = c.frame;
+    const Vec2 anchor = f.anchorA[j];
+    rA = rotate(f.rotationA, anchor - a.localCenter);
+    rB = rotate(mulRot(f.rotationA, f.relative.q), invTransformPoint(f.relative, anchor) - b.localCenter);
+}
+
+}  // namespace i2d::detail
