@@ -8,6 +8,17 @@
 
 namespace tb {
 
+double largestBodySpeed(const Simulation& sim) {
+    double maxSpeed = 0.0;
+    for (int i = 0, n = sim.bodyCount(); i < n; ++i) {
+        const BodySample s = sim.sample(i);
+        if (!s.dynamic) continue;
+        const double speed = std::hypot(double(s.vx), double(s.vy));
+        if (!(speed <= maxSpeed)) maxSpeed = speed;
+    }
+    return maxSpeed;
+}
+
 Energy computeEnergy(const Simulation& sim, i2d::Vec2 g) {
     Energy e;
     for (int i = 0, n = sim.bodyCount(); i < n; ++i) {

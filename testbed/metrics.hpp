@@ -22,6 +22,10 @@ Energy computeEnergy(const Simulation& sim, i2d::Vec2 gravity);
 /// True when every body's position, angle and velocities are finite.
 bool allFinite(const Simulation& sim);
 
+/// Largest speed |v| of a dynamic body (m/s); a non-finite speed is returned
+/// as such rather than lost to the comparison.
+double largestBodySpeed(const Simulation& sim);
+
 /// How far a joint is from what it asks (m), from the world anchors computed
 /// from the body samples: for a rigid distance joint |d − L|, for a length
 /// range the amount d lies outside [min, max] (springs without a range count

@@ -26,6 +26,8 @@ std::string reportToJson(const RunReport& r) {
     j["contacts"] = r.contacts;
     j["max_contacts"] = r.maxContacts;
     j["max_penetration"] = r.maxPenetration;
+    j["final_penetration"] = r.finalPenetration;
+    j["max_speed"] = r.maxSpeed;
     j["energy"] = {{"initial", r.energyInitial}, {"final", r.energyFinal}, {"max", r.energyMax}};
     j["nan"] = r.nan;
     j["displaced"] = r.displaced;

@@ -55,6 +55,9 @@ RunReport runScene(const SceneDesc& desc, long steps, EngineKind engine, const B
         rep.maxContacts = std::max(rep.maxContacts, sim->touchingContactCount());
         const float penetration = sim->maxPenetration();
         rep.maxPenetration = std::max(rep.maxPenetration, penetration);
+        rep.finalPenetration = penetration;
+        const double speed = largestBodySpeed(*sim);
+        if (!(speed <= rep.maxSpeed)) rep.maxSpeed = speed;
         if (!allFinite(*sim)) {
             rep.nan = true;
             break;

@@ -29,6 +29,8 @@ struct RunReport {
     int maxContacts = 0;
     int awakeBodies = 0;
     float maxPenetration = 0.0f;
+    float finalPenetration = 0.0f;  ///< deepest contact after the last step (m)
+    double maxSpeed = 0.0;          ///< largest body speed over the run (m/s)
     double energyInitial = 0.0, energyFinal = 0.0, energyMax = 0.0;
     bool nan = false;
     /// Dynamic bodies whose origin ends more than kDisplacedDistance from its start.

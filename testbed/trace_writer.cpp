@@ -54,15 +54,11 @@ void TraceWriter::begin(const SceneDesc& desc) {
 
 void TraceWriter::afterStep(long step, const Simulation& sim) {
     const Energy e = computeEnergy(sim, gravity_);
-    double maxSpeed = 0.0;
+    const double maxSpeed = largestBodySpeed(sim);
     int awake = 0;
     for (int i = 0, n = sim.bodyCount(); i < n; ++i) {
         const BodySample s = sim.sample(i);
-        if (!s.dynamic) continue;
-        if (s.awake) ++awake;
-        const double speed = std::hypot(double(s.vx), double(s.vy));
-        // A non-finite speed must show, not be lost to max().
-        if (!(speed <= maxSpeed)) maxSpeed = speed;
+        if (s.dynamic && s.awake) ++awake;
     }
     float jointErr = 0.0f;
     for (const JointDesc& j : joints_) {

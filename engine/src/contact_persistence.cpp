@@ -24,7 +24,9 @@ constexpr float kMinTurnCosine = 0.98f;
 
 }  // namespace
 
-bool canPersist(const Shape& a, const Shape& b) { return !a.isSensor && !b.isSensor && isFlat(a.type) && isFlat(b.type); }
+bool canPersist(const Shape& a, const Shape& b) {
+    return !a.isSensor && !b.isSensor && isFlat(a.type) && isFlat(b.type);
+}
 
 void recordManifoldFrame(Contact& c, const Body& a, const Body& b) {
     ManifoldFrame& f = c.frame;
@@ -36,7 +38,8 @@ void recordManifoldFrame(Contact& c, const Body& a, const Body& b) {
     }
     // A deep overlap is not at rest: its geometry changes as it separates.
     bool shallow = c.manifold.pointCount > 0;
-    for (int j = 0; j < c.manifold.pointCount; ++j) shallow = shallow && c.manifold.points[j].separation > -kDeepOverlap;
+    for (int j = 0; j < c.manifold.pointCount; ++j)
+        shallow = shallow && c.manifold.points[j].separation > -kDeepOverlap;
     c.framed = shallow;
 }
 

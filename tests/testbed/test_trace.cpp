@@ -112,6 +112,13 @@ void checkTraceAgainstJson(const std::string& engine) {
     double deepest = 0.0;
     for (const auto& r : t.rows) deepest = std::max(deepest, r[col(t, "max_penetration[m]")]);
     EXPECT_NEAR(deepest, j.at("max_penetration").get<double>(), 1e-6);
+    // The run's max_speed and final_penetration are the trace's largest speed
+    // column and its last deepest contact (the same quantities, per step).
+    double fastest = 0.0;
+    for (const auto& r : t.rows) fastest = std::max(fastest, r[col(t, "max_speed[m/s]")]);
+    EXPECT_GT(fastest, 0.0);  // 1.5 s of falling and settling
+    EXPECT_NEAR(fastest, j.at("max_speed").get<double>(), 1e-5 * std::max(1.0, fastest));
+    EXPECT_NEAR(last[col(t, "max_penetration[m]")], j.at("final_penetration").get<double>(), 1e-6);
     ASSERT_EQ(t.comments.size(), 3u);
     EXPECT_EQ(t.comments[0], "# scene: stack5");
     EXPECT_EQ(t.comments[1].rfind("# engine: " + engine, 0), 0u) << t.comments[1];
