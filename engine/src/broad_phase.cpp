@@ -9,6 +9,17 @@ namespace {
 AABB fatten(const AABB& box, float margin) {
     return {{box.lower.x - margin, box.lower.y - margin}, {box.upper.x + margin, box.upper.y + margin}};
 }
+
+// The box a moving shape's fat box must contain: its shape's box grown by the
+// speculative distance. Two shapes closer than that then always have
+// overlapping fat boxes, hence a contact whose manifold can catch them. With
+// the bare box, a ball whose fat box ended just above the ground reached it
+// with no contact at all: continuous collision put it back 5 mm above the
+// floor, the next step found no pair, and it sank 3.8 cm before bouncing
+// (a third bounce 39 % too low). Box2D v3 grows its shape boxes the same way.
+AABB speculativeBox(const WorldState& w, const Shape& sh, const Body& body) {
+    return fatten(shapeAABB(sh, body.xf), body.type == BodyType::static_body ? 0.0f : w.settings.speculativeDistance);
+}
 }  // namespace
 
 void createProxy(WorldState& w, int s) {
@@ -17,7 +28,7 @@ void createProxy(WorldState& w, int s) {
     BroadPhase& bp = w.broadPhase;
     // Static boxes are exact: they never move, so a margin would only make
     // more pairs.
-    sh.fatAABB = fatten(shapeAABB(sh, body.xf), body.type == BodyType::static_body ? 0.0f : w.settings.aabbMargin);
+    sh.fatAABB = fatten(speculativeBox(w, sh, body), body.type == BodyType::static_body ? 0.0f : w.settings.aabbMargin);
     sh.inStaticTree = body.type == BodyType::static_body;
     DynamicTree& tree = sh.inStaticTree ? bp.staticTree : bp.movingTree;
     sh.proxy = tree.createProxy(sh.fatAABB, s);
@@ -54,7 +65,7 @@ void synchronizeProxies(WorldState& w, int b) {
     BroadPhase& bp = w.broadPhase;
     for (int s : bodyShapes(w.shapes, body)) {
         Shape& sh = w.shapes[s];
-        AABB box = shapeAABB(sh, body.xf);
+        AABB box = speculativeBox(w, sh, body);
         if (contains(sh.fatAABB, box)) continue;
         sh.fatAABB = fatten(box, body.type == BodyType::static_body ? 0.0f : w.settings.aabbMargin);
         DynamicTree& tree = sh.inStaticTree ? bp.staticTree : bp.movingTree;

@@ -46,6 +46,9 @@ struct ContactConstraint {
     float biasRate, massScale, impulseScale;  ///< soft contact coefficients
     float maxPush;     ///< push speed cap of this contact (m/s), shared among a body's deep contacts
     bool deepOverlap;  ///< a point overlaps by more than kDeepOverlap (contact_solver.cpp)
+    /// Two points solved together (contact_solver.cpp), unless the overlap is
+    /// so deep that its push is at the cap: bodies being pushed apart, not resting.
+    bool pointsTogether;
     int pointCount;
     ContactPointConstraint points[2];  ///< the first pointCount are in use
 };
