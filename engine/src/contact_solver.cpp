@@ -108,6 +108,8 @@ void prepareContacts(WorldState& w, float h, bool soft) {
         cc.pointCount = ct.manifold.pointCount;
         cc.maxPush = set.maxPushSpeed;
         cc.deepOverlap = false;
+        cc.roundA = w.shapes[ct.shapeA].type == ShapeType::circle;
+        cc.roundB = w.shapes[ct.shapeB].type == ShapeType::circle;
         for (int j = 0; j < cc.pointCount; ++j)
             cc.deepOverlap = cc.deepOverlap || ct.manifold.points[j].separation < -kDeepOverlap;
         if (cc.deepOverlap) {
@@ -287,7 +289,12 @@ void solveContactsFor(WorldState& w, float h) {
         BodyState& sB = states[cc.b];
         Vec2 vA = sA.v, vB = sB.v;
         float wA = sA.w, wB = sB.w;
-        const Rot qA = sA.dq, qB = sB.dq;
+        // The separation follows each side's contact point: fixed in the body
+        // for a polygon's corner or face, but under the centre for a circle,
+        // whose own spin moves no surface towards the other shape (with the
+        // anchor turned, a disc rolling at 20 m/s read a gap opening under it
+        // and sank 10 mm; at 5 m/s, 2.6 mm).
+        const Rot qA = cc.roundA ? Rot{} : sA.dq, qB = cc.roundB ? Rot{} : sB.dq;
         const float mA = cc.invMassA, iA = cc.invIA, mB = cc.invMassB, iB = cc.invIB;
         const Vec2 n = cc.normal;
         const Vec2 dp = sB.dp - sA.dp;

@@ -49,6 +49,9 @@ struct ContactConstraint {
     /// Two points solved together (contact_solver.cpp), unless the overlap is
     /// so deep that its push is at the cap: bodies being pushed apart, not resting.
     bool pointsTogether;
+    /// A side whose contact point does not turn with it: a circle's closest
+    /// point to anything stays under its centre however it spins.
+    bool roundA, roundB;
     int pointCount;
     ContactPointConstraint points[2];  ///< the first pointCount are in use
 };

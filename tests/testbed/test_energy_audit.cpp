@@ -103,7 +103,8 @@ TEST_P(ShippedPassiveScene, NeverGainsEnergy) {
         probe.world->step(desc.dt);
         float deepest = 0.0f;
         for (const i2d::ContactData& c : probe.world->contacts())
-            for (int j = 0; j < c.manifold.pointCount; ++j) deepest = std::min(deepest, c.manifold.points[j].separation);
+            for (int j = 0; j < c.manifold.pointCount; ++j)
+                deepest = std::min(deepest, c.manifold.points[j].separation);
         // Deeper than the speculative distance after one step: created overlapping.
         if (deepest < -desc.settings.speculativeDistance)
             GTEST_SKIP() << GetParam() << " is created overlapping (" << -deepest << " m deep)";
@@ -142,7 +143,9 @@ TEST(RandomPassiveWorlds, NeverGainEnergy) {
     for (int world = 0; world < 12; ++world) {
         for (int substeps : {4, 1}) {
             std::mt19937 local(rng());
-            auto r = [&](float lo, float hi) { return lo + (hi - lo) * std::uniform_real_distribution<float>(0, 1)(local); };
+            auto r = [&](float lo, float hi) {
+                return lo + (hi - lo) * std::uniform_real_distribution<float>(0, 1)(local);
+            };
             i2d::WorldSettings s;
             s.enableSleep = false;
             s.substeps = substeps;
