@@ -9,6 +9,7 @@
 #include <iostream>
 #include <optional>
 #include <stdexcept>
+#include <string>
 
 #include "enum_names.hpp"
 #include "render/camera.hpp"
@@ -46,6 +47,15 @@ struct SdlSession {
 };
 
 void* sdlProc(const char* name) { return SDL_GL_GetProcAddress(name); }
+
+const char* const kNoDisplayHint =
+    "\n  set DISPLAY (X11) or WAYLAND_DISPLAY, or run under xvfb-run; `testbed render` needs no display\n";
+
+/// True when the environment's SDL_VIDEODRIVER names this driver.
+bool requestedDriver(const std::string& name) {
+    const char* wanted = SDL_getenv("SDL_VIDEODRIVER");
+    return wanted != nullptr && !name.empty() && name == wanted;
+}
 
 }  // namespace
 
@@ -269,7 +279,18 @@ namespace {
 int runWindow(ViewerController& viewer, const ViewerOptions& options) {
     SdlSession sdl;
     if (SDL_Init(SDL_INIT_VIDEO) != 0) {
-        std::cerr << "testbed view: SDL_Init failed: " << SDL_GetError() << "\n";
+        std::cerr << "testbed view: cannot open a display: " << SDL_GetError() << kNoDisplayHint;
+        return 1;
+    }
+    // With no display SDL falls back to a driver that draws nowhere
+    // ("offscreen", "dummy"): the viewer would run unseen until killed. Only a
+    // driver the user asked for by name (SDL_VIDEODRIVER) is accepted.
+    const char* driver = SDL_GetCurrentVideoDriver();
+    const std::string name = driver ? driver : "";
+    if ((name == "offscreen" || name == "dummy" || name.empty()) && !requestedDriver(name)) {
+        std::cerr << "testbed view: cannot open a display (no X11 or Wayland display is reachable; SDL offers only "
+                     "its '"
+                  << name << "' video driver)" << kNoDisplayHint;
         return 1;
     }
     SDL_GL_SetAttribute(SDL_GL_CONTEXT_MAJOR_VERSION, 2);
