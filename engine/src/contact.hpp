@@ -18,7 +18,10 @@ struct Contact {
     Manifold manifold{};
     float normalImpulse[2]{};  ///< accumulated at each manifold point (N·s)
     float tangentImpulse[2]{};
+    float rollingImpulse = 0.0f;                ///< accumulated by the rolling-resistance row (N·m·s)
     float friction = 0.0f, restitution = 0.0f;  ///< mixed from the two shapes
+    float rollingResistance = 0.0f;             ///< the larger coefficient × the larger rolling radius (m)
+    float tangentSpeed = 0.0f;                  ///< the sum of the two shapes' (m/s)
     int shapeA = kNullIndex, shapeB = kNullIndex;
     int bodyA = kNullIndex, bodyB = kNullIndex;
     std::uint32_t generation = 1;
@@ -27,6 +30,7 @@ struct Contact {
     bool touching = false;  ///< the manifold has points (sensors: an overlap)
     bool isSensor = false;
     bool enableEvents = false;
+    bool enableHitEvents = false;  ///< either shape enables hit events
 };
 
 /// Finds the new pairs among the shapes whose proxies moved (broad_phase.hpp)
