@@ -22,6 +22,7 @@ i2d::WorldSettings parseWorld(const json& j, const Loc& loc) {
            "joint_damping_ratio",
            "restitution_threshold",
            "impact_threshold",
+           "hit_event_threshold",
            "speculative_distance",
            "aabb_margin",
            "max_linear_speed",
@@ -49,6 +50,7 @@ i2d::WorldSettings parseWorld(const json& j, const Loc& loc) {
     s.jointDampingRatio = o.f("joint_damping_ratio", s.jointDampingRatio, {0, kMaxRate});
     s.restitutionThreshold = o.f("restitution_threshold", s.restitutionThreshold, {0, kMaxSpeed});
     s.impactThreshold = o.f("impact_threshold", s.impactThreshold, {0, kMaxSpeed});
+    s.hitEventThreshold = o.f("hit_event_threshold", s.hitEventThreshold, {0, kMaxSpeed});
     s.speculativeDistance = o.f("speculative_distance", s.speculativeDistance, {0, 10});
     s.aabbMargin = o.f("aabb_margin", s.aabbMargin, {0, 100});
     s.maxLinearSpeed = o.f("max_linear_speed", s.maxLinearSpeed, {0, kMaxSpeed, true});

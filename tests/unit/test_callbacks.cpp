@@ -121,8 +121,10 @@ TEST(RollingResistance, ARollingDiscStopsWhereTheEnergyBalanceSays) {
     auto run = [](float resistance) {
         World w;
         test::makeGround(w, 100.0f);
-        BodyId disc = w.createBody(
-            {.type = BodyType::dynamic_body, .position = {0.0f, 0.5f}, .linearVelocity = {2, 0}, .angularVelocity = -4});
+        BodyId disc = w.createBody({.type = BodyType::dynamic_body,
+                                    .position = {0.0f, 0.5f},
+                                    .linearVelocity = {2, 0},
+                                    .angularVelocity = -4});
         w.createCircleShape(disc, {.rollingResistance = resistance}, {{0, 0}, 0.5f});
         for (int i = 0; i < 600; ++i) w.step(kDt);
         return std::make_pair(w.position(disc).x, w.linearVelocity(disc).x);

@@ -92,7 +92,8 @@ TEST(Events, DestroyingBodiesWhileIteratingSensorEndEventsLeavesTheListAsItWas) 
     w.createPolygonShape(zone, {.isSensor = true}, i2d::makeBox(5.0f, 1.0f));
     std::vector<BodyId> visitors;
     for (int i = 0; i < 6; ++i) {
-        BodyId b = w.createBody({.type = BodyType::dynamic_body, .position = {-4.0f + 1.5f * static_cast<float>(i), 0}});
+        BodyId b = w.createBody(
+            {.type = BodyType::dynamic_body, .position = {-4.0f + 1.5f * static_cast<float>(i), 0}});
         w.createCircleShape(b, {}, {{0, 0}, 0.25f});
         visitors.push_back(b);
     }
@@ -159,8 +160,9 @@ TEST(Events, EveryBeginHasExactlyOneEndWhateverIsChangedBetweenSteps) {
     }
     ASSERT_EQ(ledger.begins, 5);
     w.destroyShape(w.bodyShapes(boxes[0]).front());
-    w.setFilter(w.bodyShapes(boxes[1]).front(), {.categoryBits = 2, .maskBits = 2});  // no longer collides with the ground
-    w.setBodyType(boxes[2], BodyType::static_body);                                    // static–static: no contact
+    w.setFilter(w.bodyShapes(boxes[1]).front(),
+                {.categoryBits = 2, .maskBits = 2});  // no longer collides with the ground
+    w.setBodyType(boxes[2], BodyType::static_body);   // static–static: no contact
     w.disableBody(boxes[3]);
     w.destroyBody(boxes[4]);
     w.step(kDt);

@@ -32,7 +32,8 @@ void walk(const World& w, Walker& m, float speed) {
     MoverResult r = moveCharacter(w, kCapsule, m.position, kDt * m.velocity, m.velocity, {});
     m.position = r.position;
     m.velocity = r.velocity;
-    m.grounded = std::any_of(r.planes.begin(), r.planes.end(), [](const CollisionPlane& p) { return p.normal.y > 0.7f; });
+    m.grounded = std::any_of(r.planes.begin(), r.planes.end(),
+                             [](const CollisionPlane& p) { return p.normal.y > 0.7f; });
     for (const CollisionPlane& p : r.planes) m.deepest = std::max(m.deepest, p.offset);
 }
 
@@ -130,7 +131,7 @@ TEST(Mover, ClimbsSteps) {
     w.createPolygonShape(stairs, {}, makeOffsetBox(5.0f, 0.4f, {10.2f, 0.4f}, 0.0f));  // landing at 0.8 m
     Walker m{{0.0f, kStand}};
     for (int i = 0; i < 300; ++i) walk(w, m, 2.0f);
-    EXPECT_GT(m.position.x, 7.0f);                    // past the stairs
+    EXPECT_GT(m.position.x, 7.0f);                          // past the stairs
     EXPECT_NEAR(m.position.y, 0.8f + kStand, kMaxOverlap);  // on the landing
     EXPECT_LE(m.deepest, kMaxOverlap);
 }

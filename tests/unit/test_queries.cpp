@@ -160,13 +160,13 @@ TEST(RayCast, AcceptCallbackCannotChangeTheWorld) {
     w.createCircleShape(b, {}, {{3.0f, 0.0f}, 0.5f});
     bool refused = false;
     auto hit = w.rayCastClosest({0, 0}, {10, 0}, {.accept = [&](ShapeId) {
-                                                      try {
-                                                          w.destroyBody(b);
-                                                      } catch (const Error&) {
-                                                          refused = true;
-                                                      }
-                                                      return true;
-                                                  }});
+                                    try {
+                                        w.destroyBody(b);
+                                    } catch (const Error&) {
+                                        refused = true;
+                                    }
+                                    return true;
+                                }});
     EXPECT_TRUE(refused);
     EXPECT_TRUE(hit.has_value());
     EXPECT_TRUE(w.isValid(b));
@@ -221,7 +221,8 @@ TEST(EnableBody, JointsOfADisabledBodyActOnNothing) {
     BodyId pivot = w.createBody({.type = BodyType::kinematic_body, .position = {0.0f, 10.0f}});
     BodyId bob = w.createBody({.type = BodyType::dynamic_body, .position = {0.0f, 8.0f}});
     w.createCircleShape(bob, {}, {{0, 0}, 0.25f});
-    w.createDistanceJoint({.bodyA = pivot, .bodyB = bob, .localAnchorA = {0, 0}, .localAnchorB = {0, 0}, .length = 2.0f});
+    w.createDistanceJoint(
+        {.bodyA = pivot, .bodyB = bob, .localAnchorA = {0, 0}, .localAnchorB = {0, 0}, .length = 2.0f});
     for (int i = 0; i < 30; ++i) w.step(kDt);
     EXPECT_NEAR(w.position(bob).y, 8.0f, 0.01f);  // held by the rope
     w.disableBody(pivot);

@@ -57,10 +57,10 @@ struct QueryFilter;
 
 /// The result of moveCharacter.
 struct MoverResult {
-    Vec2 position{};                      ///< where the mover ended (the capsule's frame origin, world)
-    Vec2 velocity{};                      ///< the velocity given, clipped by the planes
-    std::vector<CollisionPlane> planes;   ///< the planes of the last collide
-    int iterations = 0;                   ///< collide-solve-cast rounds used (≤ 5)
+    Vec2 position{};                     ///< where the mover ended (the capsule's frame origin, world)
+    Vec2 velocity{};                     ///< the velocity given, clipped by the planes
+    std::vector<CollisionPlane> planes;  ///< the planes of the last collide
+    int iterations = 0;                  ///< collide-solve-cast rounds used (≤ 5)
 };
 
 /// Move a capsule (given in its own frame, placed at `position`) by
