@@ -310,6 +310,9 @@ private:
                 note("spin limit: Box2D 2.4.1 turns a body at most b2_maxRotation = 90 degrees per step, slower "
                      "than some bodies of this scene start");
         }
+        if (desc.platformer)
+            note("platformer: the game (player control, one-way platforms, moving platforms, coins) is played "
+                 "only in Impulse2D; here the bodies stay as the file places them");
         // Box2D 2.4.1's sleep thresholds are compile-time constants.
         if (ws.enableSleep && (ws.timeToSleep != b2_timeToSleep || ws.linearSleepTolerance != b2_linearSleepTolerance ||
                                ws.angularSleepTolerance != b2_angularSleepTolerance))

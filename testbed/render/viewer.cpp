@@ -12,6 +12,7 @@
 #include <string>
 
 #include "enum_names.hpp"
+#include "game/platformer.hpp"
 #include "render/camera.hpp"
 #include "render/gl_draw.hpp"
 #include "render/offscreen.hpp"
@@ -180,7 +181,7 @@ void ViewerController::apply(ViewerAction action) {
 void ViewerController::stepOnce() {
     if (drag_ && scene_.world->isValid(drag_->joint)) scene_.world->setMouseJointTarget(drag_->joint, mouse_);
     auto t0 = std::chrono::steady_clock::now();
-    scene_.world->step(scene_.desc.dt);
+    stepScene(scene_, scene_.desc.dt, playerKeys_ ? &playerInput_ : nullptr);
     double ms = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - t0).count();
     stepMs_ = steps_ == 0 ? ms : 0.9 * stepMs_ + 0.1 * ms;  // smoothed for reading
     ++steps_;
@@ -349,6 +350,9 @@ int runWindow(ViewerController& viewer, const ViewerOptions& options) {
                 case SDL_KEYDOWN:
                     if (e.key.keysym.sym == SDLK_ESCAPE || e.key.keysym.sym == SDLK_q) {
                         running = false;
+                    } else if (viewer.scene().game && (e.key.keysym.sym == SDLK_LEFT ||
+                                                       e.key.keysym.sym == SDLK_RIGHT || e.key.keysym.sym == SDLK_UP)) {
+                        // A platformer's player keys (read below), not the viewer's.
                     } else if (auto action = actionForKey(e.key.keysym.sym)) {
                         int before = viewer.sceneIndex();
                         viewer.apply(*action);
@@ -382,6 +386,14 @@ int runWindow(ViewerController& viewer, const ViewerOptions& options) {
         auto now = Clock::now();
         double elapsed = std::chrono::duration<double>(now - last).count();
         last = now;
+        if (viewer.scene().game && !shooting) {
+            // Held keys drive a platformer's player; screenshots keep the script.
+            const Uint8* keys = SDL_GetKeyboardState(nullptr);
+            PlayerInput in;
+            in.move = (keys[SDL_SCANCODE_RIGHT] ? 1.0f : 0.0f) - (keys[SDL_SCANCODE_LEFT] ? 1.0f : 0.0f);
+            in.jump = keys[SDL_SCANCODE_UP] != 0;
+            viewer.setPlayerInput(in);
+        }
         if (shooting)
             viewer.stepOnce();  // exactly one step per frame: reproducible screenshots
         else

@@ -51,7 +51,8 @@ TEST(GameFields, TangentSpeedCarriesTheCrateInBothEngines) {
         EXPECT_NEAR(sim->sample(1).vx, 2.0f, 0.02f) << tb::engineName(kind);
         if (kind == tb::EngineKind::box2d) {
             bool noted = false;
-            for (const std::string& n : sim->notes()) noted = noted || n.find("rolling resistance") != std::string::npos;
+            for (const std::string& n : sim->notes())
+                noted = noted || n.find("rolling resistance") != std::string::npos;
             EXPECT_TRUE(noted);
         }
     }

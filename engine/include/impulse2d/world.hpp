@@ -570,8 +570,8 @@ public:
     std::vector<ContactData> contacts() const;
     /// Time spent in each stage of the last step (ms).
     const Profile& profile() const;
-    /// Draw every shape, joint and (by the drawer's flags) AABB and contact,
-    /// in world coordinates. While it runs, the world is locked: a drawer
+    /// Draw every shape (but those of disabled bodies), joint and (by the
+    /// drawer's flags) AABB and contact, in world coordinates. While it runs, the world is locked: a drawer
     /// that calls a locked function gets i2d::Error.
     void draw(DebugDraw& drawer) const;
 
