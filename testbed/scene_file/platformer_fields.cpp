@@ -33,7 +33,8 @@ PlatformerDesc parsePlatformer(const json& j, const Loc& loc, const Builder& bld
     d.coins = bodyList(o, "coins", bld);
     for (std::size_t i = 0; i < d.coins.size(); ++i) {
         bool sensor = false;
-        for (const ShapeDesc& s : bld.bodies[static_cast<std::size_t>(d.coins[i])].shapes) sensor = sensor || s.def.isSensor;
+        for (const ShapeDesc& s : bld.bodies[static_cast<std::size_t>(d.coins[i])].shapes)
+            sensor = sensor || s.def.isSensor;
         if (!sensor) fail(o.at("coins").at(i), "a coin needs a sensor shape");
     }
     if (o.has("moving")) {

@@ -81,8 +81,8 @@ TEST(Platformer, BadSectionsAreRefused) {
     EXPECT_THROW(tb::parseSceneDesc(base + R"({"player": "s"}})", "f", "f"), std::exception);  // not dynamic
     EXPECT_THROW(tb::parseSceneDesc(base + R"({"player": "p", "coins": ["s"]}})", "f", "f"),
                  std::exception);  // no sensor
-    EXPECT_THROW(tb::parseSceneDesc(base + R"({"player": "p", "moving": [{"body": "s", "from": [0, 0], "to": [1, 0]}]}})",
-                                    "f", "f"),
+    EXPECT_THROW(tb::parseSceneDesc(
+                     base + R"({"player": "p", "moving": [{"body": "s", "from": [0, 0], "to": [1, 0]}]}})", "f", "f"),
                  std::exception);  // not kinematic
     EXPECT_THROW(tb::parseSceneDesc(base + R"({"player": "p", "script": [{"until": 2}, {"until": 1}]}})", "f", "f"),
                  std::exception);
