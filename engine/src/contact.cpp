@@ -199,16 +199,32 @@ void createContact(WorldState& w, int s1, int s2) {
     // bounces on anything). Both as in Box2D.
     ct.friction = std::sqrt(a.friction * b.friction);
     ct.restitution = std::max(a.restitution, b.restitution);
-    ct.rollingResistance = std::max(a.rollingResistance, b.rollingResistance) *
-                           std::max(rollingRadius(a), rollingRadius(b));
-    ct.tangentSpeed = a.tangentSpeed + b.tangentSpeed;
     ct.isSensor = a.isSensor || b.isSensor;
     ct.enableHitEvents = !ct.isSensor && (a.enableHitEvents || b.enableHitEvents);
     ct.enableEvents = ct.isSensor ? ((a.isSensor ? a.enableSensorEvents : b.enableSensorEvents))
                                   : (a.enableContactEvents || b.enableContactEvents);
+    setContactSurface(w, c, s1, s2);
     w.broadPhase.pairs.insert(pairKey(s1, s2));
     w.bodies[a.body].contacts.push_back(c);
     w.bodies[b.body].contacts.push_back(c);
+}
+
+const ContactSurface* contactSurface(const WorldState& w, int c) {
+    return w.contactSurfaces.empty() ? nullptr : &w.contactSurfaces[static_cast<std::size_t>(c)];
+}
+
+void setContactSurface(WorldState& w, int c, int shapeA, int shapeB) {
+    const Shape& a = w.shapes[shapeA];
+    const Shape& b = w.shapes[shapeB];
+    ContactSurface s;
+    s.rollingResistance = std::max(a.rollingResistance, b.rollingResistance) *
+                          std::max(rollingRadius(a), rollingRadius(b));
+    s.tangentSpeed = a.tangentSpeed + b.tangentSpeed;
+    std::vector<ContactSurface>& all = w.contactSurfaces;
+    if (all.empty() && s.rollingResistance == 0.0f && s.tangentSpeed == 0.0f) return;
+    if (all.size() < static_cast<std::size_t>(w.contacts.capacity()))
+        all.resize(static_cast<std::size_t>(w.contacts.capacity()));
+    all[static_cast<std::size_t>(c)] = s;
 }
 
 void destroyContact(WorldState& w, int c, bool emitEvents) {

@@ -105,8 +105,9 @@ void prepareContacts(WorldState& w, float h, bool soft) {
         cc.impulseScale = sf.impulseScale;
         cc.pointCount = static_cast<std::uint8_t>(ct.manifold.pointCount);
         cc.maxPush = set.maxPushSpeed;
-        cc.tangentSpeed = ct.tangentSpeed;
-        if (ct.rollingResistance > 0.0f) prepareRollingResistance(w, row, ct);
+        const ContactSurface* surface = contactSurface(w, c);
+        cc.tangentSpeed = surface ? surface->tangentSpeed : 0.0f;
+        if (surface && surface->rollingResistance > 0.0f) prepareRollingResistance(w, row, *surface);
         cc.deepOverlap = false;
         for (int j = 0; j < cc.pointCount; ++j)
             cc.deepOverlap = cc.deepOverlap || ct.manifold.points[j].separation < -kDeepOverlap;
@@ -358,12 +359,12 @@ void storeContactImpulses(WorldState& w) {
 // resistance of Catto's Box2D v3, with the coefficient scaled by the radius as
 // there). The rows live in SolverArrays::rolling, apart from the contact rows.
 
-void prepareRollingResistance(WorldState& w, int row, const Contact& ct) {
+void prepareRollingResistance(WorldState& w, int row, const ContactSurface& surface) {
     const ContactConstraint& cc = w.solver.constraints[static_cast<std::size_t>(row)];
     const float k = cc.invIA + cc.invIB;
     if (k <= 0.0f) return;  // neither body turns
     const float warm = w.settings.enableWarmStarting ? 1.0f : 0.0f;
-    w.solver.rolling.push_back({row, ct.rollingResistance, 1.0f / k, warm * ct.rollingImpulse});
+    w.solver.rolling.push_back({row, surface.rollingResistance, 1.0f / k, warm * surface.rollingImpulse});
 }
 
 void warmStartRollingResistance(WorldState& w) {
@@ -395,7 +396,7 @@ void solveRollingResistance(WorldState& w) {
 void storeRollingResistance(WorldState& w) {
     for (const RollingConstraint& rc : w.solver.rolling) {
         const ContactConstraint& cc = w.solver.constraints[static_cast<std::size_t>(rc.row)];
-        w.contacts[cc.contact].rollingImpulse = rc.impulse;
+        w.contactSurfaces[static_cast<std::size_t>(cc.contact)].rollingImpulse = rc.impulse;
     }
 }
 

@@ -93,7 +93,7 @@ void storeContactImpulses(WorldState& w);
 /// Rolling resistance rows (SolverArrays::rolling), prepared, warm-started,
 /// solved and stored beside the contact rows by the functions above; a step
 /// without rolling resistance does none of it.
-void prepareRollingResistance(WorldState& w, int row, const Contact& ct);
+void prepareRollingResistance(WorldState& w, int row, const ContactSurface& surface);
 void warmStartRollingResistance(WorldState& w);
 void solveRollingResistance(WorldState& w);
 void storeRollingResistance(WorldState& w);

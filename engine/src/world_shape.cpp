@@ -175,11 +175,15 @@ void World::setTangentSpeed(ShapeId id, float speed) {
     int s = w.shapeIndex(id);
     requireBounded(speed, "tangent speed");
     w.shapes[s].tangentSpeed = speed;
-    // Existing contacts hold the sum of their shapes' speeds.
+    // Existing contacts hold the sum of their shapes' speeds (and keep
+    // their rolling impulse).
     for (int c : w.bodies[w.shapes[s].body].contacts) {
-        detail::Contact& ct = w.contacts[c];
-        if (ct.shapeA == s || ct.shapeB == s)
-            ct.tangentSpeed = w.shapes[ct.shapeA].tangentSpeed + w.shapes[ct.shapeB].tangentSpeed;
+        const detail::Contact& ct = w.contacts[c];
+        if (ct.shapeA != s && ct.shapeB != s) continue;
+        const detail::ContactSurface* old = detail::contactSurface(w, c);
+        const float rollingImpulse = old ? old->rollingImpulse : 0.0f;
+        detail::setContactSurface(w, c, ct.shapeA, ct.shapeB);
+        if (!w.contactSurfaces.empty()) w.contactSurfaces[static_cast<std::size_t>(c)].rollingImpulse = rollingImpulse;
     }
 }
 AABB World::shapeAABB(ShapeId id) const {

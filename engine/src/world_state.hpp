@@ -50,6 +50,10 @@ struct WorldState {
     CustomFilterFn customFilter;
     PreSolveFn preSolve;
 
+    /// Rolling resistance and tangent speed by contact slot; empty until a
+    /// contact has either (contact.hpp, ContactSurface).
+    std::vector<ContactSurface> contactSurfaces;
+
     Profile profile{};
     std::uint32_t stepStamp = 0;
     bool locked = false;    ///< true while stepping or drawing (see checkUnlocked)
