@@ -1,8 +1,8 @@
 // Shape casts and overlap tests of a convex proxy against one shape
 // (shape_cast.hpp), on the GJK distance of distance.cpp: conservative
-// advancement along a translation (Mirtich 1996, "Impulse-based dynamic
-// simulation of rigid body systems", §2.3; the root finding Catto describes
-// for Box2D's shape cast), sped up by the convexity of the gap along a line.
+// advancement along a translation (Mirtich (1996), "Impulse-based Dynamic
+// Simulation of Rigid Body Systems", PhD thesis; docs/references.md), sped
+// up by the convexity of the gap along a line.
 #include "shape_cast.hpp"
 
 #include <algorithm>
