@@ -117,6 +117,28 @@ TEST(Mover, StopsAgainstAWallAndSlidesNoFurther) {
     EXPECT_LE(m.deepest, kMaxOverlap);
 }
 
+// Pushing diagonally into a wall (no gravity): the mover slides along it at
+// the speed of the motion's component along the wall, steadily.
+TEST(Mover, SlidesAlongAWall) {
+    World w({.gravity = {0, 0}});
+    BodyId wall = w.createBody({});
+    w.createSegmentShape(wall, {}, {{5.0f, -20.0f}, {5.0f, 20.0f}});
+    Vec2 p{0.0f, 0.0f};
+    float xLow = 100.0f, xHigh = -100.0f;
+    for (int i = 0; i < 180; ++i) {
+        MoverResult r = moveCharacter(w, kCapsule, p, kDt * Vec2{4.0f, 2.0f}, {4.0f, 2.0f}, {});
+        p = r.position;
+        if (i >= 120) {  // long after reaching the wall (1.2 s at 4 m/s)
+            xLow = std::min(xLow, p.x);
+            xHigh = std::max(xHigh, p.x);
+        }
+    }
+    // 3 s at 2 m/s up the wall, never slowed by it.
+    EXPECT_NEAR(p.y, 6.0f, 1e-3f);
+    EXPECT_LE(p.x + kCapsule.radius, 5.0f + kMaxOverlap);
+    EXPECT_LT(xHigh - xLow, 1e-4f);  // no jitter against the wall
+}
+
 // Stairs of 0.1 m risers and 0.4 m treads: the capsule's round bottom meets
 // each nose on a slanted plane and slides up over it.
 TEST(Mover, ClimbsSteps) {
