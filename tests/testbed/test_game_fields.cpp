@@ -58,4 +58,24 @@ TEST(GameFields, TangentSpeedCarriesTheCrateInBothEngines) {
     }
 }
 
+// The shipped `conveyor` scene: the ball with rolling resistance 0.05 (r =
+// 0.5 m, from 3 m/s) stops after v²/(2·(2/3)·c·g) = 13.5 m in Impulse2D
+// (10 %: the resisting torque follows the soft contact's normal impulse);
+// Box2D 2.4.1 has no rolling resistance and lets it roll on at 3 m/s.
+TEST(GameFields, ConveyorSceneRollingResistanceInBothEngines) {
+    const tb::SceneDesc d = tb::loadSceneDesc("conveyor", TB_TEST_ASSETS_DIR);
+    int ball = -1;
+    for (std::size_t i = 0; i < d.bodies.size(); ++i)
+        if (d.bodies[i].name == "ball_resisting") ball = static_cast<int>(i);
+    ASSERT_GE(ball, 0);
+    auto impulse = tb::makeSimulation(d, tb::EngineKind::impulse2d);
+    for (int i = 0; i < 600; ++i) impulse->step(d.dt);
+    EXPECT_NEAR(impulse->sample(ball).x - d.bodies[static_cast<std::size_t>(ball)].def.position.x, 13.5f, 1.35f);
+    EXPECT_NEAR(impulse->sample(ball).vx, 0.0f, 0.01f);
+    if (!tb::box2dAvailable()) return;
+    auto box2d = tb::makeSimulation(d, tb::EngineKind::box2d);
+    for (int i = 0; i < 600; ++i) box2d->step(d.dt);
+    EXPECT_NEAR(box2d->sample(ball).vx, 3.0f, 0.05f);
+}
+
 }  // namespace
