@@ -234,7 +234,11 @@ std::string ViewerController::statusLine() const {
     std::snprintf(line, sizeof line, "step %.2f ms | bodies %d (awake %d) | %s (%d/%d) step %lld%s", stepMs_,
                   scene_.world->bodyCount(), scene_.world->awakeBodyCount(), scene_.desc.name.c_str(), index_ + 1,
                   static_cast<int>(scenes_.size()), steps_, paused_ ? " | PAUSED" : "");
-    return line;
+    std::string out = line;
+    if (scene_.game)
+        out += " | coins " + std::to_string(scene_.game->coinsCollected()) + "/" +
+               std::to_string(scene_.game->coinCount()) + (playerKeys_ ? " | arrows: run, jump" : " | script");
+    return out;
 }
 
 std::string ViewerController::settingsLine() const {

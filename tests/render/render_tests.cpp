@@ -580,4 +580,5 @@ TEST(ViewerControl, PlatformerPlayerFollowsTheKeys) {
     // the script runs right.
     EXPECT_NEAR(keyed.scene().world->position(player).x, x0 - 2.5f, 0.1f);
     EXPECT_NEAR(scripted.scene().world->position(scripted.scene().named.at("player")).x, x0 + 2.5f, 0.1f);
+    EXPECT_NE(keyed.statusLine().find("coins 0/2"), std::string::npos) << keyed.statusLine();
 }
