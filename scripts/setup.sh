@@ -9,7 +9,8 @@ packages=(build-essential cmake pkg-config
   libgtest-dev libgmock-dev libbenchmark-dev
   xvfb xauth gnuplot-nox imagemagick
   clang libclang-rt-14-dev  # libFuzzer and the sanitizer runtimes (scripts/fuzz.sh)
-  clang-format)             # scripts/format.sh and the format check test
+  clang-format              # scripts/format.sh and the format check test
+  doxygen)                  # the optional API reference (target docs_api); the build does not need it
 missing=()
 for p in "${packages[@]}"; do
   dpkg-query -W -f='${Status}' "$p" 2>/dev/null | grep -q "install ok installed" || missing+=("$p")

@@ -9,6 +9,8 @@
 #include <box2d/box2d.h>
 
 #include <cmath>
+#include <cstdint>
+#include <cstring>
 #include <set>
 
 #include "box2d_joints.hpp"
@@ -46,6 +48,31 @@ bool box2dAcceptsPolygon(const b2Vec2* v, int count) {
     return false;
 }
 
+/// A shape's tangent speed travels in its fixture's user data (the float's
+/// bits); Box2D 2.4.1 sets tangent speed per contact, in a pre-solve listener.
+std::uintptr_t packSpeed(float speed) {
+    std::uint32_t bits;
+    std::memcpy(&bits, &speed, sizeof bits);
+    return bits;
+}
+
+float unpackSpeed(b2Fixture* f) {
+    const auto bits = static_cast<std::uint32_t>(f->GetUserData().pointer);
+    float speed;
+    std::memcpy(&speed, &bits, sizeof speed);
+    return speed;
+}
+
+/// Conveyor belts: each contact's tangent speed is the sum of its two
+/// fixtures' (ShapeDef::tangentSpeed); 2.4.1's friction row aims at it with
+/// the same sign convention (tangent = normal × 1, the normal turned clockwise).
+class TangentSpeedListener final : public b2ContactListener {
+public:
+    void PreSolve(b2Contact* contact, const b2Manifold*) override {
+        contact->SetTangentSpeed(unpackSpeed(contact->GetFixtureA()) + unpackSpeed(contact->GetFixtureB()));
+    }
+};
+
 class Box2DSimulation final : public Simulation {
 public:
     Box2DSimulation(const SceneDesc& desc, const Box2DSettings& settings)
@@ -58,6 +85,7 @@ public:
         for (const BodyDesc& b : desc.bodies) bodies_.push_back(createBody(b, ws));
         for (std::size_t i = 0; i < desc.joints.size(); ++i) createJoint(desc, desc.joints[i], i);
         describeDifferences(desc);
+        if (anyTangentSpeed_) world_.SetContactListener(&tangentSpeed_);
     }
 
     EngineKind engine() const override { return EngineKind::box2d; }
@@ -163,6 +191,10 @@ private:
         fd.restitution = s.def.restitution;
         fd.restitutionThreshold = ws.restitutionThreshold;
         fd.isSensor = s.def.isSensor;
+        fd.userData.pointer = packSpeed(s.def.tangentSpeed);
+        anyTangentSpeed_ = anyTangentSpeed_ || s.def.tangentSpeed != 0.0f;
+        if (s.def.rollingResistance > 0.0f)
+            note("rolling resistance: Box2D 2.4.1 has none; shapes roll there without it");
         fd.filter.categoryBits = static_cast<uint16>(s.def.filter.categoryBits & 0xFFFFu);
         fd.filter.maskBits = static_cast<uint16>(s.def.filter.maskBits & 0xFFFFu);
         fd.filter.groupIndex = static_cast<int16>(s.def.filter.groupIndex);
@@ -278,6 +310,9 @@ private:
                 note("spin limit: Box2D 2.4.1 turns a body at most b2_maxRotation = 90 degrees per step, slower "
                      "than some bodies of this scene start");
         }
+        if (desc.platformer)
+            note("platformer: the game (player control, one-way platforms, moving platforms, coins) is played "
+                 "only in Impulse2D; here the bodies stay as the file places them");
         // Box2D 2.4.1's sleep thresholds are compile-time constants.
         if (ws.enableSleep && (ws.timeToSleep != b2_timeToSleep || ws.linearSleepTolerance != b2_linearSleepTolerance ||
                                ws.angularSleepTolerance != b2_angularSleepTolerance))
@@ -285,6 +320,8 @@ private:
                  "not the scene's");
     }
 
+    TangentSpeedListener tangentSpeed_;  ///< declared before world_, which points at it
+    bool anyTangentSpeed_ = false;
     b2World world_;
     Box2DSettings settings_;
     std::vector<b2Body*> bodies_;

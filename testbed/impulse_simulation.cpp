@@ -2,6 +2,7 @@
 #include <algorithm>
 
 #include "enum_names.hpp"
+#include "game/platformer.hpp"
 #include "scene_build.hpp"
 #include "simulation.hpp"
 
@@ -19,7 +20,7 @@ public:
     }
 
     EngineKind engine() const override { return EngineKind::impulse2d; }
-    void step(float dt) override { scene_.world->step(dt); }
+    void step(float dt) override { stepScene(scene_, dt); }
     int bodyCount() const override { return static_cast<int>(scene_.bodies.size()); }
     int jointCount() const override { return scene_.world->jointCount(); }
     int touchingContactCount() const override { return scene_.world->contactCount(); }

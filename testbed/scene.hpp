@@ -73,6 +73,34 @@ struct Camera {
     float height = 20.0f;  ///< world metres visible vertically
 };
 
+/// The player's controls for one step: move ∈ [−1, 1] (left, right), jump.
+struct PlayerInput {
+    float move = 0.0f;
+    bool jump = false;
+};
+
+/// A scene file's "platformer" section: which bodies play which part in the
+/// small game the testbed runs on top of the world (testbed/game/platformer.cpp).
+struct PlatformerDesc {
+    int player = -1;          ///< index into SceneDesc::bodies: a dynamic body
+    std::vector<int> oneWay;  ///< static or kinematic bodies passable from below
+    struct Path {
+        int body = -1;  ///< a kinematic body moved back and forth
+        i2d::Vec2 from{}, to{};
+        float period = 4.0f;  ///< s for a full there-and-back
+    };
+    std::vector<Path> moving;
+    std::vector<int> coins;  ///< bodies whose sensor shapes are collected when the player touches them
+    float runSpeed = 5.0f;   ///< m/s
+    float jumpSpeed = 7.0f;  ///< m/s, upwards
+    /// Scripted input for `run` and `render`: each entry holds until its time (s).
+    struct Key {
+        float until = 0.0f;
+        PlayerInput input;
+    };
+    std::vector<Key> script;
+};
+
 struct SceneDesc {
     std::string name;
     std::string description;
@@ -82,7 +110,10 @@ struct SceneDesc {
     std::vector<BodyDesc> bodies;
     std::vector<JointDesc> joints;  ///< in creation order (a gear after the joints it couples)
     std::optional<Camera> camera;   ///< none: fit the scene's bounds
+    std::optional<PlatformerDesc> platformer;
 };
+
+class PlatformerGame;
 
 /// A scene built as an Impulse2D world.
 struct Scene {
@@ -90,6 +121,8 @@ struct Scene {
     std::unique_ptr<i2d::World> world;
     std::vector<i2d::BodyId> bodies;  ///< bodies[i] built from desc.bodies[i]
     std::map<std::string, i2d::BodyId> named;
+    /// The platformer played on this world (scenes with a "platformer" section).
+    std::shared_ptr<PlatformerGame> game;
 };
 
 }  // namespace tb

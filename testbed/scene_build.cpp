@@ -1,6 +1,8 @@
 // Testbed — SceneDesc → i2d::World.
 #include "scene_build.hpp"
 
+#include "game/platformer.hpp"
+
 #include <string>
 #include <type_traits>
 #include <variant>
@@ -99,6 +101,7 @@ Scene buildScene(const SceneDesc& desc) {
             refused(desc, where, e);
         }
     }
+    if (desc.platformer) scene.game = std::make_shared<PlatformerGame>(scene, *desc.platformer);
     return scene;
 }
 

@@ -45,6 +45,7 @@ struct Body {
     bool awake = true;
     bool enableSleep = true;
     bool alive = false;
+    bool enabled = true;  ///< false: out of the simulation and the broadphase (World::disableBody)
     int firstShape = kNullIndex, lastShape = kNullIndex;  ///< the body's shapes, in creation order (shape.hpp)
     std::uintptr_t userData = 0;
     std::vector<int> contacts;  ///< contact slots

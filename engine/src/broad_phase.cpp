@@ -26,6 +26,7 @@ void createProxy(WorldState& w, int s) {
     Shape& sh = w.shapes[s];
     const Body& body = w.bodies[sh.body];
     BroadPhase& bp = w.broadPhase;
+    if (!body.enabled) return;  // a disabled body's shapes stay out of the trees
     // Static boxes are exact: they never move, so a margin would only make
     // more pairs.
     sh.fatAABB = fatten(speculativeBox(w, sh, body), body.type == BodyType::static_body ? 0.0f : w.settings.aabbMargin);
@@ -63,6 +64,7 @@ void destroyProxy(WorldState& w, int s) {
 void synchronizeProxies(WorldState& w, int b) {
     const Body& body = w.bodies[b];
     BroadPhase& bp = w.broadPhase;
+    if (!body.enabled) return;
     for (int s : bodyShapes(w.shapes, body)) {
         Shape& sh = w.shapes[s];
         AABB box = speculativeBox(w, sh, body);
@@ -76,6 +78,7 @@ void synchronizeProxies(WorldState& w, int b) {
 
 void wakeShapesAround(WorldState& w, int b) {
     BroadPhase& bp = w.broadPhase;
+    if (!w.bodies[b].enabled) return;
     for (int s : bodyShapes(w.shapes, w.bodies[b])) {
         const AABB box = w.shapes[s].fatAABB;
         bp.staticTree.query(box, [&](int other) {

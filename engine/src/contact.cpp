@@ -29,6 +29,17 @@ int typeRank(ShapeType t) {
     return 0;
 }
 
+// The radius a shape rolls on: a circle's or capsule's, a rounded polygon's.
+float rollingRadius(const Shape& s) {
+    switch (s.type) {
+        case ShapeType::circle: return s.geometry.circle.radius;
+        case ShapeType::capsule: return s.geometry.capsule.radius;
+        case ShapeType::polygon: return s.geometry.polygon.radius;
+        case ShapeType::segment: return 0.0f;
+    }
+    return 0.0f;
+}
+
 Manifold computeManifold(const WorldState& w, const Contact& c) {
     const Shape& sa = w.shapes[c.shapeA];
     const Shape& sb = w.shapes[c.shapeB];
@@ -69,6 +80,29 @@ Manifold computeManifold(const WorldState& w, const Contact& c) {
     return {};
 }
 
+// A hit event when the surfaces close faster than the threshold at one of
+// the manifold points, measured with the bodies' velocities at the step's
+// start (before the solver stops them).
+void reportHit(WorldState& w, const Contact& ct) {
+    const Body& bA = w.bodies[ct.bodyA];
+    const Body& bB = w.bodies[ct.bodyB];
+    const Manifold& m = ct.manifold;
+    float fastest = 0.0f;
+    int best = -1;
+    for (int i = 0; i < m.pointCount; ++i) {
+        const Vec2 p = m.points[i].point;
+        const Vec2 dv = (bB.v + cross(bB.w, p - bB.center)) - (bA.v + cross(bA.w, p - bA.center));
+        const float approach = -dot(dv, m.normal);
+        if (approach > fastest) {
+            fastest = approach;
+            best = i;
+        }
+    }
+    if (best < 0 || fastest <= w.settings.hitEventThreshold) return;
+    w.events.contactHit.push_back(
+        {w.shapeHandle(ct.shapeA), w.shapeHandle(ct.shapeB), m.points[best].point, m.normal, fastest});
+}
+
 bool updateContact(WorldState& w, int c) {
     Contact& ct = w.contacts[c];
     const Shape& a = w.shapes[ct.shapeA];
@@ -79,10 +113,17 @@ bool updateContact(WorldState& w, int c) {
     }
     const Body& bodyA = w.bodies[ct.bodyA];
     const Body& bodyB = w.bodies[ct.bodyB];
-    // A touching flat pair that has barely moved keeps its manifold: still
-    // touching, same ids, impulses kept (contact_persistence.hpp).
-    if (ct.touching && reuseManifold(ct, bodyA, bodyB, w.settings.manifoldReuseDistance)) return true;
-    Manifold m = computeManifold(w, ct);
+    // A touching flat pair that has barely moved keeps its manifold (same ids,
+    // so the impulses carry over below; contact_persistence.hpp). The game's
+    // callbacks see it like any other.
+    const bool reused = ct.touching && reuseManifold(ct, bodyA, bodyB, w.settings.manifoldReuseDistance);
+    Manifold m = reused ? ct.manifold : computeManifold(w, ct);
+    // The game's pre-solve callback may switch a touching contact off for
+    // this step (a one-way platform): it then has no points, no row, and
+    // counts as not touching.
+    if (w.preSolve && !ct.isSensor && m.pointCount > 0 &&
+        !w.preSolve(w.shapeHandle(ct.shapeA), w.shapeHandle(ct.shapeB), m))
+        m.pointCount = 0;
     bool touching;
     if (ct.isSensor) {
         touching = false;
@@ -106,8 +147,13 @@ bool updateContact(WorldState& w, int c) {
         }
     }
     ct.manifold = m;
-    ct.framed = false;
-    if (!ct.isSensor && canPersist(a, b)) recordManifoldFrame(ct, bodyA, bodyB);
+    if (!reused) {
+        ct.framed = false;
+        if (!ct.isSensor && canPersist(a, b)) recordManifoldFrame(ct, bodyA, bodyB);
+    } else if (m.pointCount == 0) {
+        ct.framed = false;  // switched off by the pre-solve callback
+    }
+    if (ct.enableHitEvents && touching) reportHit(w, ct);
     if (touching != ct.touching) {
         ct.touching = touching;
         if (touching) {
@@ -146,6 +192,7 @@ void updatePairs(WorldState& w) {
         if (sh.isSensor && o.isSensor) return;
         if (!shouldCollide(sh.filter, o.filter)) return;
         if (jointPreventsCollision(w, sh.body, o.body)) return;
+        if (w.customFilter && !w.customFilter(w.shapeHandle(s), w.shapeHandle(other))) return;
         createContact(w, s, other);
     });
 }
@@ -166,11 +213,31 @@ void createContact(WorldState& w, int s1, int s2) {
     ct.friction = std::sqrt(a.friction * b.friction);
     ct.restitution = std::max(a.restitution, b.restitution);
     ct.isSensor = a.isSensor || b.isSensor;
+    ct.enableHitEvents = !ct.isSensor && (a.enableHitEvents || b.enableHitEvents);
     ct.enableEvents = ct.isSensor ? ((a.isSensor ? a.enableSensorEvents : b.enableSensorEvents))
                                   : (a.enableContactEvents || b.enableContactEvents);
+    setContactSurface(w, c, s1, s2);
     w.broadPhase.pairs.insert(pairKey(s1, s2));
     w.bodies[a.body].contacts.push_back(c);
     w.bodies[b.body].contacts.push_back(c);
+}
+
+const ContactSurface* contactSurface(const WorldState& w, int c) {
+    return w.contactSurfaces.empty() ? nullptr : &w.contactSurfaces[static_cast<std::size_t>(c)];
+}
+
+void setContactSurface(WorldState& w, int c, int shapeA, int shapeB) {
+    const Shape& a = w.shapes[shapeA];
+    const Shape& b = w.shapes[shapeB];
+    ContactSurface s;
+    s.rollingResistance = std::max(a.rollingResistance, b.rollingResistance) *
+                          std::max(rollingRadius(a), rollingRadius(b));
+    s.tangentSpeed = a.tangentSpeed + b.tangentSpeed;
+    std::vector<ContactSurface>& all = w.contactSurfaces;
+    if (all.empty() && s.rollingResistance == 0.0f && s.tangentSpeed == 0.0f) return;
+    if (all.size() < static_cast<std::size_t>(w.contacts.capacity()))
+        all.resize(static_cast<std::size_t>(w.contacts.capacity()));
+    all[static_cast<std::size_t>(c)] = s;
 }
 
 void destroyContact(WorldState& w, int c, bool emitEvents) {
@@ -178,10 +245,11 @@ void destroyContact(WorldState& w, int c, bool emitEvents) {
     if (ct.touching && emitEvents && ct.enableEvents) {
         if (ct.isSensor) {
             bool aSensor = w.shapes[ct.shapeA].isSensor;
-            w.events.sensorEnd.push_back(
-                {w.shapeHandle(aSensor ? ct.shapeA : ct.shapeB), w.shapeHandle(aSensor ? ct.shapeB : ct.shapeA)});
+            w.events.sensorEndList(w.stepping)
+                .push_back(
+                    {w.shapeHandle(aSensor ? ct.shapeA : ct.shapeB), w.shapeHandle(aSensor ? ct.shapeB : ct.shapeA)});
         } else {
-            w.events.contactEnd.push_back({w.shapeHandle(ct.shapeA), w.shapeHandle(ct.shapeB)});
+            w.events.contactEndList(w.stepping).push_back({w.shapeHandle(ct.shapeA), w.shapeHandle(ct.shapeB)});
         }
     }
     w.broadPhase.pairs.erase(pairKey(ct.shapeA, ct.shapeB));

@@ -43,8 +43,26 @@ struct Contact {
     bool touching = false;  ///< the manifold has points (sensors: an overlap)
     bool isSensor = false;
     bool enableEvents = false;
-    bool framed = false;  ///< a flat pair whose manifold has points: it may be reused
+    bool framed = false;           ///< a flat pair whose manifold has points: it may be reused
+    bool enableHitEvents = false;  ///< either shape enables hit events
 };
+
+/// A contact's rolling resistance and tangent speed, and its rolling row's
+/// accumulated impulse. Kept beside the contacts, by contact slot, once any
+/// of the world's contacts has either (WorldState::contactSurfaces): a world
+/// whose shapes have neither holds none.
+struct ContactSurface {
+    float rollingResistance = 0.0f;  ///< the larger coefficient × the larger rolling radius (m)
+    float tangentSpeed = 0.0f;       ///< the sum of the two shapes' (m/s)
+    float rollingImpulse = 0.0f;     ///< accumulated by the rolling-resistance row (N·m·s)
+};
+
+/// The surface of contact `c`, or null when no contact of the world has one.
+const ContactSurface* contactSurface(const WorldState& w, int c);
+
+/// Sets the surface of contact `c` from its two shapes (slots), starting the
+/// side array when they are the first to have one.
+void setContactSurface(WorldState& w, int c, int shapeA, int shapeB);
 
 /// Finds the new pairs among the shapes whose proxies moved (broad_phase.hpp)
 /// and creates a contact for each one that passes the filters.

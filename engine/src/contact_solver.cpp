@@ -72,6 +72,7 @@ void prepareContacts(WorldState& w, float h, bool soft) {
     const float warm = set.enableWarmStarting ? 1.0f : 0.0f;
     SolverArrays& s = w.solver;
     s.deepContactCount.assign(s.states.size(), 0);
+    s.rolling.clear();
     bool anyDeep = false;
     // Each row goes straight to its place in colour order (solver.cpp coloured
     // the contacts and left each colour's first slot in colourOffsets).
@@ -90,7 +91,8 @@ void prepareContacts(WorldState& w, float h, bool soft) {
         const int a = rb.a, b = rb.b;
         // Every field the passes read is written below (a row reads only its
         // first pointCount points), so the slot needs no clearing.
-        ContactConstraint& cc = s.constraints[static_cast<std::size_t>(s.colourOffsets[colour]++)];
+        const int row = s.colourOffsets[colour]++;
+        ContactConstraint& cc = s.constraints[static_cast<std::size_t>(row)];
         cc.contact = c;
         cc.a = a;
         cc.b = b;
@@ -105,8 +107,11 @@ void prepareContacts(WorldState& w, float h, bool soft) {
         cc.biasRate = sf.biasRate;
         cc.massScale = sf.massScale;
         cc.impulseScale = sf.impulseScale;
-        cc.pointCount = ct.manifold.pointCount;
+        cc.pointCount = static_cast<std::uint8_t>(ct.manifold.pointCount);
         cc.maxPush = set.maxPushSpeed;
+        const ContactSurface* surface = contactSurface(w, c);
+        cc.tangentSpeed = surface ? surface->tangentSpeed : 0.0f;
+        if (surface && surface->rollingResistance > 0.0f) prepareRollingResistance(w, row, *surface);
         cc.deepOverlap = false;
         cc.roundA = w.shapes[ct.shapeA].type == ShapeType::circle;
         cc.roundB = w.shapes[ct.shapeB].type == ShapeType::circle;
@@ -164,6 +169,7 @@ void prepareContacts(WorldState& w, float h, bool soft) {
 }
 
 void warmStartContacts(WorldState& w) {
+    if (!w.solver.rolling.empty()) warmStartRollingResistance(w);
     BodyState* states = w.solver.states.data();
     for (ContactConstraint& cc : w.solver.constraints) {
         BodyState& sA = states[cc.a];
@@ -356,7 +362,7 @@ void solveContactsFor(WorldState& w, float h) {
         for (int j = 0; j < cc.pointCount; ++j) {
             ContactPointConstraint& cp = cc.points[j];
             Vec2 dv = (vB + cross(wB, cp.rB)) - (vA + cross(wA, cp.rA));
-            float vt = dot(dv, t);
+            float vt = dot(dv, t) - cc.tangentSpeed;
             float impulse = -cp.tangentMass * vt;
             float maxFriction = cc.friction * cp.normalImpulse;
             float newImpulse = clamp(cp.tangentImpulse + impulse, -maxFriction, maxFriction);
@@ -385,6 +391,7 @@ void solveContacts(WorldState& w, float h, SolvePass target) {
         case SolvePass::baumgarte: solveContactsFor<SolvePass::baumgarte>(w, h); break;
         case SolvePass::no_push: solveContactsFor<SolvePass::no_push>(w, h); break;
     }
+    if (!w.solver.rolling.empty()) solveRollingResistance(w);
 }
 
 /// Split mode (Tamis and Maggiore (2015) §8.1): solve the push alone on pseudo-velocities
@@ -448,12 +455,62 @@ void applyRestitution(WorldState& w) {
 }
 
 void storeContactImpulses(WorldState& w) {
+    if (!w.solver.rolling.empty()) storeRollingResistance(w);
     for (const ContactConstraint& cc : w.solver.constraints) {
         Contact& ct = w.contacts[cc.contact];
         for (int j = 0; j < cc.pointCount; ++j) {
             ct.normalImpulse[j] = cc.points[j].normalImpulse;
             ct.tangentImpulse[j] = cc.points[j].tangentImpulse;
         }
+    }
+}
+
+// ---- Rolling resistance ------------------------------------------------------
+// A contact whose shapes resist rolling gets one more row: the relative
+// angular velocity ω_B − ω_A is driven to zero with an impulse bounded by the
+// resistance times the contact's total normal impulse, so a ball rolling on
+// flat ground loses a torque of c·r·N and comes to rest (the rolling
+// resistance of Catto's Box2D v3, with the coefficient scaled by the radius as
+// there). The rows live in SolverArrays::rolling, apart from the contact rows.
+
+void prepareRollingResistance(WorldState& w, int row, const ContactSurface& surface) {
+    const ContactConstraint& cc = w.solver.constraints[static_cast<std::size_t>(row)];
+    const float k = cc.invIA + cc.invIB;
+    if (k <= 0.0f) return;  // neither body turns
+    const float warm = w.settings.enableWarmStarting ? 1.0f : 0.0f;
+    w.solver.rolling.push_back({row, surface.rollingResistance, 1.0f / k, warm * surface.rollingImpulse});
+}
+
+void warmStartRollingResistance(WorldState& w) {
+    BodyState* states = w.solver.states.data();
+    for (const RollingConstraint& rc : w.solver.rolling) {
+        const ContactConstraint& cc = w.solver.constraints[static_cast<std::size_t>(rc.row)];
+        states[cc.a].w -= cc.invIA * rc.impulse;
+        states[cc.b].w += cc.invIB * rc.impulse;
+    }
+}
+
+void solveRollingResistance(WorldState& w) {
+    BodyState* states = w.solver.states.data();
+    for (RollingConstraint& rc : w.solver.rolling) {
+        const ContactConstraint& cc = w.solver.constraints[static_cast<std::size_t>(rc.row)];
+        BodyState& sA = states[cc.a];
+        BodyState& sB = states[cc.b];
+        float totalNormal = 0.0f;
+        for (int j = 0; j < cc.pointCount; ++j) totalNormal += cc.points[j].normalImpulse;
+        const float maxImpulse = rc.resistance * totalNormal;
+        const float old = rc.impulse;
+        rc.impulse = clamp(old - rc.mass * (sB.w - sA.w), -maxImpulse, maxImpulse);
+        const float impulse = rc.impulse - old;
+        sA.w -= cc.invIA * impulse;
+        sB.w += cc.invIB * impulse;
+    }
+}
+
+void storeRollingResistance(WorldState& w) {
+    for (const RollingConstraint& rc : w.solver.rolling) {
+        const ContactConstraint& cc = w.solver.constraints[static_cast<std::size_t>(rc.row)];
+        w.contactSurfaces[static_cast<std::size_t>(cc.contact)].rollingImpulse = rc.impulse;
     }
 }
 

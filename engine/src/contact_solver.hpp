@@ -44,18 +44,31 @@ struct ContactConstraint {
     float friction, restitution;
     float invMassA, invIA, invMassB, invIB;
     float biasRate, massScale, impulseScale;  ///< soft contact coefficients
-    float maxPush;     ///< push speed cap of this contact (m/s), shared among a body's deep contacts
-    bool deepOverlap;  ///< a point overlaps by more than kDeepOverlap (contact_solver.cpp)
+    float maxPush;         ///< push speed cap of this contact (m/s), shared among a body's deep contacts
+    float tangentSpeed;    ///< friction's target relative tangent speed (m/s): 0 but on conveyors
+    bool deepOverlap : 1;  ///< a point overlaps by more than kDeepOverlap (contact_solver.cpp)
     /// Two points solved together (contact_solver.cpp), unless the overlap is
     /// so deep that its push is at the cap: bodies being pushed apart, not resting.
-    bool pointsTogether;
+    bool pointsTogether : 1;
     /// A side whose contact point does not turn with it: a circle's closest
     /// point to anything stays under its centre however it spins.
-    bool roundA, roundB;
-    int pointCount;
+    bool roundA : 1;
+    bool roundB : 1;
+    std::uint8_t pointCount;
     ContactPointConstraint points[2];  ///< the first pointCount are in use
 };
 static_assert(sizeof(ContactConstraint) == 172, "the layout documented above");
+
+/// The rolling-resistance row of a contact whose shapes resist rolling
+/// (kept apart: most contacts have none and their rows stay as they are). An
+/// angular row on the bodies' relative turning, its impulse bounded by the
+/// resistance (N·m per N) times the contact's total normal impulse.
+struct RollingConstraint {
+    int row;           ///< the contact's row in SolverArrays::constraints
+    float resistance;  ///< coefficient × rolling radius (m)
+    float mass;        ///< 1 / (1/I_A + 1/I_B)
+    float impulse;     ///< accumulated (N·m·s)
+};
 
 /// The bodies of a contact's row: solver state indices (the zero state for a
 /// side that does not move this step) and inverse masses.
@@ -83,5 +96,13 @@ void solveContactPush(WorldState& w, float h);
 void applyRestitution(WorldState& w);
 /// Impulses back into the contacts for the next step's warm start.
 void storeContactImpulses(WorldState& w);
+
+/// Rolling resistance rows (SolverArrays::rolling), prepared, warm-started,
+/// solved and stored beside the contact rows by the functions above; a step
+/// without rolling resistance does none of it.
+void prepareRollingResistance(WorldState& w, int row, const ContactSurface& surface);
+void warmStartRollingResistance(WorldState& w);
+void solveRollingResistance(WorldState& w);
+void storeRollingResistance(WorldState& w);
 
 }  // namespace i2d::detail

@@ -31,6 +31,7 @@ void World::draw(DebugDraw& dd) const {
             const detail::Shape& sh = w.shapes[s];
             if (!sh.alive) continue;
             const detail::Body& b = w.bodies[sh.body];
+            if (!b.enabled) continue;  // out of the world until enabled again
             Color c = bodyColor(b);
             if (sh.isSensor) c.a = 0.3f;
             switch (sh.type) {

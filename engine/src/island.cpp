@@ -39,7 +39,7 @@ int allocateIsland(IslandSet& set) {
 
 void wakeBody(WorldState& w, int b) {
     Body& body = w.bodies[b];
-    if (body.type == BodyType::static_body) return;
+    if (body.type == BodyType::static_body || !body.enabled) return;
     if (body.sleepIsland != kNullIndex) {
         // Wake the whole island it fell asleep with: its contacts hold
         // impulses that only make sense together.

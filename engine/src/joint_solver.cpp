@@ -104,6 +104,7 @@ void prepareJoints(WorldState& w, float dt) {
         const Body& bA = w.bodies[joint.bodyA];
         const Body& bB = w.bodies[joint.bodyB];
         if (!bA.awake && !bB.awake) continue;
+        if (!bA.enabled || !bB.enabled) continue;  // a joint on a disabled body acts on nothing
         JointConstraint& jc = rows.emplace_back();
         jc.joint = j;
         jc.type = joint.type;

@@ -19,6 +19,9 @@ int createShape(WorldState& w, int b, const ShapeDef& def, ShapeType type, const
     sh.isSensor = def.isSensor;
     sh.enableContactEvents = def.enableContactEvents;
     sh.enableSensorEvents = def.enableSensorEvents;
+    sh.enableHitEvents = def.enableHitEvents;
+    sh.rollingResistance = def.rollingResistance;
+    sh.tangentSpeed = def.tangentSpeed;
     sh.userData = def.userData;
     // Appended: a body's shapes stay in creation order (its mass sums and
     // proxy updates visit them in that order).

@@ -30,6 +30,7 @@ struct Shape {
     ShapeGeometry geometry;
     AABB fatAABB{};  ///< the box in the broadphase tree (grown by the margin)
     float density = 1.0f, friction = 0.6f, restitution = 0.0f;
+    float rollingResistance = 0.0f, tangentSpeed = 0.0f;
     Filter filter{};
     int body = kNullIndex;
     int prevShape = kNullIndex, nextShape = kNullIndex;  ///< neighbours in the body's list
@@ -39,6 +40,7 @@ struct Shape {
     bool isSensor = false;
     bool enableContactEvents = true;
     bool enableSensorEvents = true;
+    bool enableHitEvents = false;
     bool alive = false;
     bool inStaticTree = false;
     bool moved = false;  ///< in the broadphase move buffer

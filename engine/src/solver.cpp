@@ -409,20 +409,6 @@ void releaseLargeStepArrays(WorldState& w) {
     releaseIfLarge(w.islands.unionParent);
 }
 
-/// The last step's events are dropped when the next one begins; a burst of
-/// them (a level built at once begins every contact) does not hold its
-/// storage for the rest of the run.
-void clearEvents(EventBuffers& e) {
-    e.contactBegin.clear();
-    e.contactEnd.clear();
-    e.sensorBegin.clear();
-    e.sensorEnd.clear();
-    releaseIfLarge(e.contactBegin);
-    releaseIfLarge(e.contactEnd);
-    releaseIfLarge(e.sensorBegin);
-    releaseIfLarge(e.sensorEnd);
-}
-
 using Clock = std::chrono::steady_clock;
 float msSince(Clock::time_point t0) { return std::chrono::duration<float, std::milli>(Clock::now() - t0).count(); }
 
@@ -430,12 +416,15 @@ float msSince(Clock::time_point t0) { return std::chrono::duration<float, std::m
 
 void stepWorld(WorldState& w, float dt) {
     w.locked = true;
+    w.stepping = true;
     struct Unlock {
         bool& flag;
-        ~Unlock() { flag = false; }
-    } unlock{w.locked};
+        bool& stepping;
+        ~Unlock() { flag = stepping = false; }
+    } unlock{w.locked, w.stepping};
 
-    clearEvents(w.events);
+    // The last step's events go; end events caused since arrive (events.hpp).
+    w.events.beginStep();
 
     Profile& profile = w.profile;
     auto t0 = Clock::now();

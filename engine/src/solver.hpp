@@ -29,7 +29,8 @@ struct SolverArrays {
     std::vector<JointConstraint> joints;          ///< in colour order (joint_solver.cpp)
     std::vector<JointConstraint> jointScratch;    ///< the colour sort's other buffer
     std::vector<std::uint8_t> jointColours;
-    std::vector<int> deepContactCount;  ///< per state: contacts overlapping deeper than kDeepOverlap
+    std::vector<int> deepContactCount;       ///< per state: contacts overlapping deeper than kDeepOverlap
+    std::vector<RollingConstraint> rolling;  ///< contacts with rolling resistance (contact_solver.cpp)
 };
 
 /// Advances the world by dt: pairs → narrowphase → impacts → solve →

@@ -33,6 +33,7 @@ void validateSettings(const WorldSettings& s) {
     requireInRange(s.jointHertz, 0.0f, detail::kMaxRate, "jointHertz");
     requireInRange(s.jointDampingRatio, 0.0f, detail::kMaxRate, "jointDampingRatio");
     requireNonNegative(s.restitutionThreshold, "restitutionThreshold");
+    requireNonNegative(s.hitEventThreshold, "hitEventThreshold");
     requireNonNegative(s.impactThreshold, "impactThreshold");
     requireNonNegative(s.speculativeDistance, "speculativeDistance");
     requireNonNegative(s.manifoldReuseDistance, "manifoldReuseDistance");
@@ -111,6 +112,7 @@ void World::step(float dt) {
 
 std::span<const ContactBeginEvent> World::contactBeginEvents() const { return state().events.contactBegin; }
 std::span<const ContactEndEvent> World::contactEndEvents() const { return state().events.contactEnd; }
+std::span<const ContactHitEvent> World::contactHitEvents() const { return state().events.contactHit; }
 std::span<const SensorBeginEvent> World::sensorBeginEvents() const { return state().events.sensorBegin; }
 std::span<const SensorEndEvent> World::sensorEndEvents() const { return state().events.sensorEnd; }
 
@@ -133,17 +135,21 @@ std::vector<ContactData> World::contacts() const {
     for (int c = 0; c < w.contacts.capacity(); ++c) {
         const detail::Contact& ct = w.contacts[c];
         if (!ct.alive || !ct.touching || ct.isSensor) continue;
-        ContactData d;
-        d.shapeA = w.shapeHandle(ct.shapeA);
-        d.shapeB = w.shapeHandle(ct.shapeB);
-        d.manifold = ct.manifold;
-        for (int i = 0; i < 2; ++i) {
-            d.normalImpulse[i] = ct.normalImpulse[i];
-            d.tangentImpulse[i] = ct.tangentImpulse[i];
-        }
-        out.push_back(d);
+        out.push_back(detail::contactData(w, c));
     }
     return out;
+}
+
+void World::setCustomFilter(CustomFilterFn fn) {
+    auto& w = state();
+    w.checkUnlocked();
+    w.customFilter = std::move(fn);
+}
+
+void World::setPreSolve(PreSolveFn fn) {
+    auto& w = state();
+    w.checkUnlocked();
+    w.preSolve = std::move(fn);
 }
 
 const Profile& World::profile() const { return state().profile; }

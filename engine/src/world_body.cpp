@@ -75,6 +75,64 @@ void World::destroyBody(BodyId id) {
 
 bool World::isValid(BodyId id) const { return state().find(id, state().bodies) != detail::kNullIndex; }
 
+namespace {
+// The bodies at the other end of a body's joints: they start or stop being
+// held by it.
+void wakeJointPartners(detail::WorldState& w, int b) {
+    for (int j : w.bodies[b].joints) {
+        const detail::Joint& jt = w.joints[j];
+        detail::wakeBody(w, jt.bodyA == b ? jt.bodyB : jt.bodyA);
+    }
+}
+}  // namespace
+
+void World::disableBody(BodyId id) {
+    auto& w = state();
+    w.checkUnlocked();
+    int b = w.bodyIndex(id);
+    if (!w.bodies[b].enabled) return;
+    detail::destroyBodyContacts(w, b, detail::kNullIndex);
+    for (int s : detail::bodyShapes(w.shapes, w.bodies[b])) detail::destroyProxy(w, s);
+    wakeJointPartners(w, b);
+    detail::removeAwake(w, b);
+    detail::leaveIsland(w, b);
+    detail::Body& body = w.bodies[b];
+    body.awake = false;
+    body.sleepTime = 0.0f;
+    body.enabled = false;
+}
+
+void World::enableBody(BodyId id) {
+    auto& w = state();
+    w.checkUnlocked();
+    int b = w.bodyIndex(id);
+    detail::Body& body = w.bodies[b];
+    if (body.enabled) return;
+    body.enabled = true;
+    for (int s : detail::bodyShapes(w.shapes, body)) detail::createProxy(w, s);
+    detail::wakeBody(w, b);  // nothing for a static body: it stays "not awake"
+    wakeJointPartners(w, b);
+    // A static body's new proxies do not query: the moving shapes near it look again.
+    if (body.type == BodyType::static_body) detail::wakeShapesAround(w, b);
+}
+
+bool World::isEnabled(BodyId id) const { return state().bodies[state().bodyIndex(id)].enabled; }
+
+std::vector<ContactData> World::bodyContacts(BodyId id) const {
+    const auto& w = state();
+    const detail::Body& body = w.bodies[w.bodyIndex(id)];
+    std::vector<int> slots;
+    for (int c : body.contacts) {
+        const detail::Contact& ct = w.contacts[c];
+        if (ct.touching && !ct.isSensor) slots.push_back(c);
+    }
+    std::sort(slots.begin(), slots.end());
+    std::vector<ContactData> out;
+    out.reserve(slots.size());
+    for (int c : slots) out.push_back(detail::contactData(w, c));
+    return out;
+}
+
 BodyType World::bodyType(BodyId id) const { return state().bodies[state().bodyIndex(id)].type; }
 
 void World::setBodyType(BodyId id, BodyType type) {

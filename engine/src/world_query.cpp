@@ -1,8 +1,9 @@
-// World: the public API facade for queries — ray casts, box overlap and
-// point tests over both broadphase trees.
+// World: the public API facade for queries — ray casts, shape casts, box,
+// shape and point overlap over both broadphase trees.
 #include <algorithm>
 
 #include "impulse2d/world.hpp"
+#include "shape_cast.hpp"
 #include "validation.hpp"
 #include "world_state.hpp"
 
@@ -10,11 +11,33 @@ namespace i2d {
 
 namespace {
 
-bool passes(const Filter& f, const QueryFilter& q) {
+bool passesBits(const Filter& f, const QueryFilter& q) {
     return (f.categoryBits & q.maskBits) != 0 && (f.maskBits & q.categoryBits) != 0;
 }
 
-std::optional<RayHit> castShape(const detail::Shape& sh, const Transform& xf, Vec2 origin, Vec2 translation,
+// While a query calls the game's accept function the world is locked (a
+// callback that tries to change it gets i2d::Error); a query without one
+// costs nothing more.
+class QueryLock {
+public:
+    QueryLock(detail::WorldState& w, const QueryFilter& f) : w_(w), was_(w.locked) {
+        if (f.accept) w_.locked = true;
+    }
+    ~QueryLock() { w_.locked = was_; }
+    QueryLock(const QueryLock&) = delete;
+    QueryLock& operator=(const QueryLock&) = delete;
+
+private:
+    detail::WorldState& w_;
+    bool was_;
+};
+
+bool passes(const detail::WorldState& w, int s, const QueryFilter& q) {
+    if (!passesBits(w.shapes[s].filter, q)) return false;
+    return !q.accept || q.accept(w.shapeHandle(s));
+}
+
+std::optional<RayHit> castRayAt(const detail::Shape& sh, const Transform& xf, Vec2 origin, Vec2 translation,
                                 float maxFraction) {
     RayCastInput in{invTransformPoint(xf, origin), invRotate(xf.q, translation), maxFraction};
     std::optional<RayHit> hit = detail::shapeRayCast(sh, in);
@@ -27,13 +50,11 @@ std::optional<RayHit> castShape(const detail::Shape& sh, const Transform& xf, Ve
 
 // Shapes of both trees whose fat box overlaps `box`, that pass the filter and
 // the exact test `accept`, as handles in slot order (independent of tree shape).
-template <class Accept>
-std::vector<ShapeId> shapesInBox(const detail::WorldState& w, const AABB& box, const QueryFilter& filter,
-                                 Accept accept) {
+template <class Exact>
+std::vector<ShapeId> shapesInBox(const detail::WorldState& w, const AABB& box, const QueryFilter& filter, Exact exact) {
     std::vector<int> found;
     auto visit = [&](int s) {
-        const detail::Shape& sh = w.shapes[s];
-        if (passes(sh.filter, filter) && accept(sh)) found.push_back(s);
+        if (passes(w, s, filter) && exact(w.shapes[s])) found.push_back(s);
         return true;
     };
     w.broadPhase.staticTree.query(box, visit);
@@ -54,15 +75,17 @@ void checkRay(Vec2 origin, Vec2 translation) {
 
 std::optional<RayResult> World::rayCastClosest(Vec2 origin, Vec2 translation, const QueryFilter& filter) const {
     checkRay(origin, translation);
-    const auto& w = state();
+    auto& w = state();
+    QueryLock lock(w, filter);
     std::optional<RayResult> best;
     auto visit = [&](int s, float maxFraction) -> float {
         const detail::Shape& sh = w.shapes[s];
-        if (sh.isSensor || !passes(sh.filter, filter)) return maxFraction;
-        auto hit = castShape(sh, w.bodies[sh.body].xf, origin, translation, maxFraction);
+        if (sh.isSensor) return maxFraction;
+        auto hit = castRayAt(sh, w.bodies[sh.body].xf, origin, translation, maxFraction);
         if (!hit || hit->fraction > maxFraction) return maxFraction;
         // Ties resolved by the lower slot, so the answer does not depend on tree order.
         if (best && hit->fraction == best->fraction && s > static_cast<int>(best->shape.index1) - 1) return maxFraction;
+        if (!passes(w, s, filter)) return maxFraction;
         best = RayResult{w.shapeHandle(s), hit->point, hit->normal, hit->fraction};
         return hit->fraction;
     };
@@ -73,15 +96,35 @@ std::optional<RayResult> World::rayCastClosest(Vec2 origin, Vec2 translation, co
     return best;
 }
 
+std::optional<RayResult> World::rayCastAny(Vec2 origin, Vec2 translation, const QueryFilter& filter) const {
+    checkRay(origin, translation);
+    auto& w = state();
+    QueryLock lock(w, filter);
+    std::optional<RayResult> found;
+    // A negative fraction ends the tree walk at the first accepted hit.
+    auto visit = [&](int s, float maxFraction) -> float {
+        const detail::Shape& sh = w.shapes[s];
+        if (sh.isSensor) return maxFraction;
+        auto hit = castRayAt(sh, w.bodies[sh.body].xf, origin, translation, maxFraction);
+        if (!hit || !passes(w, s, filter)) return maxFraction;
+        found = RayResult{w.shapeHandle(s), hit->point, hit->normal, hit->fraction};
+        return -1.0f;
+    };
+    w.broadPhase.staticTree.rayCast(origin, translation, 1.0f, visit);
+    if (!found) w.broadPhase.movingTree.rayCast(origin, translation, 1.0f, visit);
+    return found;
+}
+
 std::vector<RayResult> World::rayCastAll(Vec2 origin, Vec2 translation, const QueryFilter& filter) const {
     checkRay(origin, translation);
-    const auto& w = state();
+    auto& w = state();
+    QueryLock lock(w, filter);
     std::vector<RayResult> out;
     auto visit = [&](int s, float maxFraction) -> float {
         const detail::Shape& sh = w.shapes[s];
-        if (sh.isSensor || !passes(sh.filter, filter)) return maxFraction;
-        auto hit = castShape(sh, w.bodies[sh.body].xf, origin, translation, 1.0f);
-        if (hit) out.push_back({w.shapeHandle(s), hit->point, hit->normal, hit->fraction});
+        if (sh.isSensor) return maxFraction;
+        auto hit = castRayAt(sh, w.bodies[sh.body].xf, origin, translation, 1.0f);
+        if (hit && passes(w, s, filter)) out.push_back({w.shapeHandle(s), hit->point, hit->normal, hit->fraction});
         return maxFraction;
     };
     w.broadPhase.staticTree.rayCast(origin, translation, 1.0f, visit);
@@ -95,7 +138,8 @@ std::vector<RayResult> World::rayCastAll(Vec2 origin, Vec2 translation, const Qu
 std::vector<ShapeId> World::overlapAABB(const AABB& box, const QueryFilter& filter) const {
     detail::requireBounded(box.lower, "box lower");
     detail::requireBounded(box.upper, "box upper");
-    const auto& w = state();
+    auto& w = state();
+    QueryLock lock(w, filter);
     return shapesInBox(w, box, filter, [&](const detail::Shape& sh) {
         return overlaps(detail::shapeAABB(sh, w.bodies[sh.body].xf), box);
     });
@@ -103,9 +147,48 @@ std::vector<ShapeId> World::overlapAABB(const AABB& box, const QueryFilter& filt
 
 std::vector<ShapeId> World::queryPoint(Vec2 p, const QueryFilter& filter) const {
     detail::requireBounded(p, "point");
-    const auto& w = state();
+    auto& w = state();
+    QueryLock lock(w, filter);
     return shapesInBox(w, AABB{p, p}, filter, [&](const detail::Shape& sh) {
         return detail::shapeContains(sh, invTransformPoint(w.bodies[sh.body].xf, p));
+    });
+}
+
+std::optional<ShapeCastResult> World::castShape(const ShapeProxy& proxy, Vec2 translation,
+                                                const QueryFilter& filter) const {
+    detail::validateProxy(proxy);
+    detail::requireBounded(translation, "cast translation");
+    auto& w = state();
+    QueryLock lock(w, filter);
+    const AABB start = detail::proxyAABB(proxy);
+    const AABB swept = unionOf(start, {start.lower + translation, start.upper + translation});
+    std::vector<int> candidates;
+    auto visit = [&](int s) {
+        if (!w.shapes[s].isSensor) candidates.push_back(s);
+        return true;
+    };
+    w.broadPhase.staticTree.query(swept, visit);
+    w.broadPhase.movingTree.query(swept, visit);
+    // Slot order: the lower slot wins a tie whatever the trees' shape.
+    std::sort(candidates.begin(), candidates.end());
+    std::optional<ShapeCastResult> best;
+    for (int s : candidates) {
+        const detail::Shape& sh = w.shapes[s];
+        const float maxFraction = best ? best->fraction : 1.0f;
+        const detail::CoreCast c = detail::castProxy(proxy, translation, detail::shapeCore(sh), w.bodies[sh.body].xf,
+                                                     0.0f, maxFraction);
+        if (!c.hit || (best && c.fraction >= best->fraction) || !passes(w, s, filter)) continue;
+        best = ShapeCastResult{w.shapeHandle(s), c.point, c.normal, c.fraction};
+    }
+    return best;
+}
+
+std::vector<ShapeId> World::overlapShape(const ShapeProxy& proxy, const QueryFilter& filter) const {
+    detail::validateProxy(proxy);
+    auto& w = state();
+    QueryLock lock(w, filter);
+    return shapesInBox(w, detail::proxyAABB(proxy), filter, [&](const detail::Shape& sh) {
+        return detail::proxyGap(proxy, detail::shapeCore(sh), w.bodies[sh.body].xf).gap <= 0.0f;
     });
 }
 

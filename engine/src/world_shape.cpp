@@ -21,6 +21,8 @@ void validateShapeDef(const ShapeDef& d) {
     requireInRange(d.density, 0.0f, detail::kMaxDensity, "shape density");
     requireInRange(d.friction, 0.0f, detail::kMaxFriction, "shape friction");
     requireUnitInterval(d.restitution, "shape restitution");
+    requireInRange(d.rollingResistance, 0.0f, detail::kMaxFriction, "shape rolling resistance");
+    requireBounded(d.tangentSpeed, "shape tangent speed");
 }
 
 template <class Fill>
@@ -159,6 +161,31 @@ void World::setFilter(ShapeId id, const Filter& f) {
 }
 bool World::isSensor(ShapeId id) const { return state().shapes[state().shapeIndex(id)].isSensor; }
 std::uintptr_t World::userData(ShapeId id) const { return state().shapes[state().shapeIndex(id)].userData; }
+void World::setUserData(ShapeId id, std::uintptr_t data) { state().shapes[state().shapeIndex(id)].userData = data; }
+
+float World::rollingResistance(ShapeId id) const { return state().shapes[state().shapeIndex(id)].rollingResistance; }
+void World::setRollingResistance(ShapeId id, float resistance) {
+    int s = state().shapeIndex(id);
+    requireInRange(resistance, 0.0f, detail::kMaxFriction, "rolling resistance");
+    state().shapes[s].rollingResistance = resistance;
+}
+float World::tangentSpeed(ShapeId id) const { return state().shapes[state().shapeIndex(id)].tangentSpeed; }
+void World::setTangentSpeed(ShapeId id, float speed) {
+    auto& w = state();
+    int s = w.shapeIndex(id);
+    requireBounded(speed, "tangent speed");
+    w.shapes[s].tangentSpeed = speed;
+    // Existing contacts hold the sum of their shapes' speeds (and keep
+    // their rolling impulse).
+    for (int c : w.bodies[w.shapes[s].body].contacts) {
+        const detail::Contact& ct = w.contacts[c];
+        if (ct.shapeA != s && ct.shapeB != s) continue;
+        const detail::ContactSurface* old = detail::contactSurface(w, c);
+        const float rollingImpulse = old ? old->rollingImpulse : 0.0f;
+        detail::setContactSurface(w, c, ct.shapeA, ct.shapeB);
+        if (!w.contactSurfaces.empty()) w.contactSurfaces[static_cast<std::size_t>(c)].rollingImpulse = rollingImpulse;
+    }
+}
 AABB World::shapeAABB(ShapeId id) const {
     const detail::Shape& s = state().shapes[state().shapeIndex(id)];
     return detail::shapeAABB(s, state().bodies[s.body].xf);

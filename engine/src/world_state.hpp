@@ -14,6 +14,7 @@
 #include "body.hpp"
 #include "broad_phase.hpp"
 #include "contact.hpp"
+#include "events.hpp"
 #include "impulse2d/types.hpp"
 #include "island.hpp"
 #include "joint.hpp"
@@ -23,14 +24,6 @@
 #include "validation.hpp"
 
 namespace i2d::detail {
-
-/// Events of the last step (and of calls made since, see World's event accessors).
-struct EventBuffers {
-    std::vector<ContactBeginEvent> contactBegin;
-    std::vector<ContactEndEvent> contactEnd;
-    std::vector<SensorBeginEvent> sensorBegin;
-    std::vector<SensorEndEvent> sensorEnd;
-};
 
 struct WorldState {
     WorldState(const WorldSettings& s, std::uint32_t id) : settings(s), worldId(id) {}
@@ -53,9 +46,18 @@ struct WorldState {
     std::vector<int> gatherScratch;
     std::vector<std::uint32_t> impactChanged;
 
+    // Callbacks (World::setCustomFilter, setPreSolve); empty when not set.
+    CustomFilterFn customFilter;
+    PreSolveFn preSolve;
+
+    /// Rolling resistance and tangent speed by contact slot; empty until a
+    /// contact has either (contact.hpp, ContactSurface).
+    std::vector<ContactSurface> contactSurfaces;
+
     Profile profile{};
     std::uint32_t stepStamp = 0;
-    bool locked = false;  ///< true while stepping or drawing (see checkUnlocked)
+    bool locked = false;    ///< true while stepping or drawing (see checkUnlocked)
+    bool stepping = false;  ///< true inside step(): end events go to this step's lists, not the pending ones
 
     void checkUnlocked() const {
         if (locked) fail("the world cannot be changed while it is stepping or drawing");
@@ -91,5 +93,19 @@ struct WorldState {
     int shapeIndex(ShapeId id) const { return require(id, shapes, "shape"); }
     int jointIndex(JointId id) const { return require(id, joints, "joint"); }
 };
+
+/// A contact as the API reports it (World::contacts, World::bodyContacts).
+inline ContactData contactData(const WorldState& w, int c) {
+    const Contact& ct = w.contacts[c];
+    ContactData d;
+    d.shapeA = w.shapeHandle(ct.shapeA);
+    d.shapeB = w.shapeHandle(ct.shapeB);
+    d.manifold = ct.manifold;
+    for (int i = 0; i < 2; ++i) {
+        d.normalImpulse[i] = ct.normalImpulse[i];
+        d.tangentImpulse[i] = ct.tangentImpulse[i];
+    }
+    return d;
+}
 
 }  // namespace i2d::detail

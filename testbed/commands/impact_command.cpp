@@ -107,7 +107,7 @@ int runImpactCommand(std::istream& in, std::ostream& out, std::ostream& err) {
     try {
         input = json::parse(in);
     } catch (const json::parse_error& e) {
-        err << "impact: malformed JSON: " << e.what() << '\n';
+        err << "testbed impact: malformed JSON: " << e.what() << '\n';
         return 1;
     }
     try {
@@ -121,7 +121,7 @@ int runImpactCommand(std::istream& in, std::ostream& out, std::ostream& err) {
         }
         out << output.dump() << '\n';
     } catch (const InputError& e) {
-        err << "impact: " << e.what() << '\n';
+        err << "testbed impact: " << e.what() << '\n';
         return 1;
     }
     return 0;

@@ -20,7 +20,8 @@ const char* const kViewUsage =
     "usage: testbed view [SCENE] [--assets DIR] [--size WxH] [--paused] [--screenshot FILE --frames N]\n"
     "keys: space pause, s/right step, r restart, n/p (page down/up) next/previous scene,\n"
     "      m position correction, i impact model, z sleep, +/- velocity iterations, ./, substeps,\n"
-    "      c contacts, a AABBs, j joints, h help, q/escape quit; mouse: drag bodies, wheel zoom\n";
+    "      c contacts, a AABBs, j joints, h help, q/escape quit; mouse: drag bodies, wheel zoom;\n"
+    "      platformer scenes: left/right arrows run, up jumps\n";
 
 struct ViewArgs {
     ViewerOptions options;

@@ -8,6 +8,7 @@
 #include <stdexcept>
 #include <string>
 
+#include "game/platformer.hpp"
 #include "render/frame_writer.hpp"
 #include "scene.hpp"
 
@@ -58,7 +59,7 @@ RenderResult renderSceneFrames(Scene& scene, const RenderOptions& options) {
         if (step % options.every == 0)
             writer.add(renderer.renderWorld(*scene.world, view, options.flags,
                                             options.caption ? captionFor(scene, step) : std::string{}));
-        scene.world->step(scene.desc.dt);
+        stepScene(scene, scene.desc.dt);
         if (options.progress) progress.update(step + 1);
     }
     return writer.finish(scene.desc.dt);

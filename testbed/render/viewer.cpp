@@ -9,8 +9,10 @@
 #include <iostream>
 #include <optional>
 #include <stdexcept>
+#include <string>
 
 #include "enum_names.hpp"
+#include "game/platformer.hpp"
 #include "render/camera.hpp"
 #include "render/gl_draw.hpp"
 #include "render/offscreen.hpp"
@@ -46,6 +48,15 @@ struct SdlSession {
 };
 
 void* sdlProc(const char* name) { return SDL_GL_GetProcAddress(name); }
+
+const char* const kNoDisplayHint =
+    "\n  set DISPLAY (X11) or WAYLAND_DISPLAY, or run under xvfb-run; `testbed render` needs no display\n";
+
+/// True when the environment's SDL_VIDEODRIVER names this driver.
+bool requestedDriver(const std::string& name) {
+    const char* wanted = SDL_getenv("SDL_VIDEODRIVER");
+    return wanted != nullptr && !name.empty() && name == wanted;
+}
 
 }  // namespace
 
@@ -170,7 +181,7 @@ void ViewerController::apply(ViewerAction action) {
 void ViewerController::stepOnce() {
     if (drag_ && scene_.world->isValid(drag_->joint)) scene_.world->setMouseJointTarget(drag_->joint, mouse_);
     auto t0 = std::chrono::steady_clock::now();
-    scene_.world->step(scene_.desc.dt);
+    stepScene(scene_, scene_.desc.dt, playerKeys_ ? &playerInput_ : nullptr);
     double ms = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - t0).count();
     stepMs_ = steps_ == 0 ? ms : 0.9 * stepMs_ + 0.1 * ms;  // smoothed for reading
     ++steps_;
@@ -223,7 +234,11 @@ std::string ViewerController::statusLine() const {
     std::snprintf(line, sizeof line, "step %.2f ms | bodies %d (awake %d) | %s (%d/%d) step %lld%s", stepMs_,
                   scene_.world->bodyCount(), scene_.world->awakeBodyCount(), scene_.desc.name.c_str(), index_ + 1,
                   static_cast<int>(scenes_.size()), steps_, paused_ ? " | PAUSED" : "");
-    return line;
+    std::string out = line;
+    if (scene_.game)
+        out += " | coins " + std::to_string(scene_.game->coinsCollected()) + "/" +
+               std::to_string(scene_.game->coinCount()) + (playerKeys_ ? " | arrows: run, jump" : " | script");
+    return out;
 }
 
 std::string ViewerController::settingsLine() const {
@@ -269,7 +284,18 @@ namespace {
 int runWindow(ViewerController& viewer, const ViewerOptions& options) {
     SdlSession sdl;
     if (SDL_Init(SDL_INIT_VIDEO) != 0) {
-        std::cerr << "testbed view: SDL_Init failed: " << SDL_GetError() << "\n";
+        std::cerr << "testbed view: cannot open a display: " << SDL_GetError() << kNoDisplayHint;
+        return 1;
+    }
+    // With no display SDL falls back to a driver that draws nowhere
+    // ("offscreen", "dummy"): the viewer would run unseen until killed. Only a
+    // driver the user asked for by name (SDL_VIDEODRIVER) is accepted.
+    const char* driver = SDL_GetCurrentVideoDriver();
+    const std::string name = driver ? driver : "";
+    if ((name == "offscreen" || name == "dummy" || name.empty()) && !requestedDriver(name)) {
+        std::cerr << "testbed view: cannot open a display (no X11 or Wayland display is reachable; SDL offers only "
+                     "its '"
+                  << name << "' video driver)" << kNoDisplayHint;
         return 1;
     }
     SDL_GL_SetAttribute(SDL_GL_CONTEXT_MAJOR_VERSION, 2);
@@ -328,6 +354,9 @@ int runWindow(ViewerController& viewer, const ViewerOptions& options) {
                 case SDL_KEYDOWN:
                     if (e.key.keysym.sym == SDLK_ESCAPE || e.key.keysym.sym == SDLK_q) {
                         running = false;
+                    } else if (viewer.scene().game && (e.key.keysym.sym == SDLK_LEFT ||
+                                                       e.key.keysym.sym == SDLK_RIGHT || e.key.keysym.sym == SDLK_UP)) {
+                        // A platformer's player keys (read below), not the viewer's.
                     } else if (auto action = actionForKey(e.key.keysym.sym)) {
                         int before = viewer.sceneIndex();
                         viewer.apply(*action);
@@ -361,6 +390,14 @@ int runWindow(ViewerController& viewer, const ViewerOptions& options) {
         auto now = Clock::now();
         double elapsed = std::chrono::duration<double>(now - last).count();
         last = now;
+        if (viewer.scene().game && !shooting) {
+            // Held keys drive a platformer's player; screenshots keep the script.
+            const Uint8* keys = SDL_GetKeyboardState(nullptr);
+            PlayerInput in;
+            in.move = (keys[SDL_SCANCODE_RIGHT] ? 1.0f : 0.0f) - (keys[SDL_SCANCODE_LEFT] ? 1.0f : 0.0f);
+            in.jump = keys[SDL_SCANCODE_UP] != 0;
+            viewer.setPlayerInput(in);
+        }
         if (shooting)
             viewer.stepOnce();  // exactly one step per frame: reproducible screenshots
         else

@@ -81,6 +81,12 @@ public:
     void advance(double elapsedSeconds);
     /// One step of the scene's dt (with the drag force, if dragging).
     void stepOnce();
+    /// Keyboard input for a platformer scene's player; without it (never
+    /// called) the scene's script plays it, as in `run` and `render`.
+    void setPlayerInput(const PlayerInput& input) {
+        playerInput_ = input;
+        playerKeys_ = true;
+    }
 
     /// Grabs the dynamic body under the world point; false when there is none.
     bool beginDrag(i2d::Vec2 worldPoint);
@@ -119,6 +125,8 @@ private:
     std::optional<i2d::WorldSettings> userSettings_;
     std::optional<Drag> drag_;
     i2d::Vec2 mouse_{};
+    PlayerInput playerInput_{};
+    bool playerKeys_ = false;
     bool paused_ = false;
     bool pendingStep_ = false;
     bool showHelp_ = true;

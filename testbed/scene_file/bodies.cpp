@@ -86,7 +86,7 @@ i2d::Filter parseFilter(const json& j, const Loc& loc) {
 ShapeDesc parseShape(const json& j, const Loc& loc) {
     Obj o(j, loc,
           {"comment", "type", "density", "friction", "restitution", "filter", "sensor", "enable_contact_events",
-           "enable_sensor_events"});
+           "enable_sensor_events", "enable_hit_events", "rolling_resistance", "tangent_speed"});
     const std::string type = o.reqStr("type");
     ShapeDesc s;
     if (type == "box") {
@@ -111,6 +111,9 @@ ShapeDesc parseShape(const json& j, const Loc& loc) {
     s.def.isSensor = o.boolean("sensor", false);
     s.def.enableContactEvents = o.boolean("enable_contact_events", s.def.enableContactEvents);
     s.def.enableSensorEvents = o.boolean("enable_sensor_events", s.def.enableSensorEvents);
+    s.def.enableHitEvents = o.boolean("enable_hit_events", s.def.enableHitEvents);
+    s.def.rollingResistance = o.f("rolling_resistance", s.def.rollingResistance, {0, kMaxFriction});
+    s.def.tangentSpeed = o.f("tangent_speed", s.def.tangentSpeed, {-kMaxSpeed, kMaxSpeed});
     o.str("comment", "");
     return s;
 }

@@ -88,4 +88,8 @@ struct Builder {
     int resolveJoint(const json& ref, const Loc& loc, std::size_t self) const;
 };
 
+/// A scene's "platformer" section (platformer_fields.cpp), its body
+/// references resolved against the bodies read so far.
+PlatformerDesc parsePlatformer(const json& j, const Loc& loc, const Builder& bld);
+
 }  // namespace tb::scene_file

@@ -43,7 +43,8 @@ using namespace scene_file;
 SceneDesc parseSceneDesc(const std::string& text, const std::string& file, const std::string& name) {
     json root = parseJson(text, file);
     Loc loc{&file, {}};
-    Obj o(root, loc, {"$schema", "comment", "name", "description", "dt", "world", "camera", "bodies", "joints"});
+    Obj o(root, loc,
+          {"$schema", "comment", "name", "description", "dt", "world", "camera", "bodies", "joints", "platformer"});
     o.checkUnknown();
     o.str("$schema", "");
     o.str("comment", "");
@@ -89,6 +90,7 @@ SceneDesc parseSceneDesc(const std::string& text, const std::string& file, const
 
     desc.joints.reserve(bld.joints.size());
     for (const PendingJoint& pj : bld.joints) desc.joints.push_back(resolveJoint(pj, bld, desc.joints));
+    if (o.has("platformer")) desc.platformer = parsePlatformer(o.get("platformer"), o.at("platformer"), bld);
     desc.bodies = std::move(bld.bodies);
     return desc;
 }

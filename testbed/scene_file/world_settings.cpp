@@ -22,6 +22,7 @@ i2d::WorldSettings parseWorld(const json& j, const Loc& loc) {
            "joint_damping_ratio",
            "restitution_threshold",
            "impact_threshold",
+           "hit_event_threshold",
            "speculative_distance",
            "manifold_reuse_distance",
            "aabb_margin",
@@ -50,6 +51,7 @@ i2d::WorldSettings parseWorld(const json& j, const Loc& loc) {
     s.jointDampingRatio = o.f("joint_damping_ratio", s.jointDampingRatio, {0, kMaxRate});
     s.restitutionThreshold = o.f("restitution_threshold", s.restitutionThreshold, {0, kMaxSpeed});
     s.impactThreshold = o.f("impact_threshold", s.impactThreshold, {0, kMaxSpeed});
+    s.hitEventThreshold = o.f("hit_event_threshold", s.hitEventThreshold, {0, kMaxSpeed});
     s.speculativeDistance = o.f("speculative_distance", s.speculativeDistance, {0, 10});
     s.manifoldReuseDistance = o.f("manifold_reuse_distance", s.manifoldReuseDistance, {0, 10});
     s.aabbMargin = o.f("aabb_margin", s.aabbMargin, {0, 100});

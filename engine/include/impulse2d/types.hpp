@@ -11,6 +11,7 @@
 #pragma once
 
 #include <cstdint>
+#include <functional>
 
 #include "impulse2d/collision.hpp"
 #include "impulse2d/id.hpp"
@@ -87,6 +88,10 @@ struct WorldSettings {
     /// Approach speed (m/s) above which a new contact is resolved as an impact
     /// by the closed-form law (when impactModel == closed_form).
     float impactThreshold = 1.0f;
+
+    /// Approach speed (m/s) above which a touching contact with a shape that
+    /// enables hit events reports a ContactHitEvent.
+    float hitEventThreshold = 1.0f;
 
     /// Contacts are created when shapes are closer than this (m).
     float speculativeDistance = 0.02f;
@@ -166,6 +171,19 @@ struct ShapeDef {
     bool isSensor = false;            ///< detects overlap, makes no contact
     bool enableContactEvents = true;  ///< report contact begin/end events for this shape
     bool enableSensorEvents = true;   ///< a sensor: report sensor events
+    /// Report a ContactHitEvent when this shape's contacts close faster than
+    /// WorldSettings::hitEventThreshold (off by default: nothing is computed).
+    bool enableHitEvents = false;
+    /// Resistance to rolling (dimensionless, ≥ 0): a contact resists the
+    /// relative turning of its two bodies with a torque of at most
+    /// rollingResistance × normal force × 1 m (the larger of the two shapes'
+    /// values). Lets a ball on flat ground come to rest.
+    float rollingResistance = 0.0f;
+    /// Speed of the shape's surface along its contacts' tangent (m/s; the
+    /// two shapes' values add): a conveyor belt. Positive moves a touching
+    /// body in the direction of the contact tangent, the normal turned
+    /// clockwise (for ground under a body: towards +x).
+    float tangentSpeed = 0.0f;
     std::uintptr_t userData = 0;
 };
 
@@ -182,6 +200,17 @@ struct ContactBeginEvent {
 struct ContactEndEvent {
     ShapeId shapeA{};
     ShapeId shapeB{};
+};
+
+/// A touching contact whose shapes approached faster than
+/// WorldSettings::hitEventThreshold at the start of the last step (one of the
+/// shapes enables hit events): for impact sounds and damage.
+struct ContactHitEvent {
+    ShapeId shapeA{};
+    ShapeId shapeB{};
+    Vec2 point{};                ///< the manifold point that approached fastest (world, m)
+    Vec2 normal{};               ///< the manifold normal, from A to B
+    float approachSpeed = 0.0f;  ///< normal speed at which the surfaces closed (m/s, > 0)
 };
 
 /// A shape (`visitor`) began to overlap a sensor shape.
@@ -206,10 +235,60 @@ struct ContactData {
 };
 
 /// Filter for queries: a shape is reported when its category is in `maskBits`
-/// and `categoryBits` is in its mask.
+/// and `categoryBits` is in its mask, and, when `accept` is set, accept(shape)
+/// returns true. `accept` is called for every candidate that passes the bits
+/// (in no particular order) while the world is locked: it may read the
+/// world but not change it (a locked call throws i2d::Error).
 struct QueryFilter {
     std::uint32_t categoryBits = 0x0001;
     std::uint32_t maskBits = 0xFFFFFFFF;
+    std::function<bool(ShapeId)> accept{};
+};
+
+/// A convex shape placed in the world, for shape casts and overlap queries:
+/// the convex hull of `count` points (world, m) grown by `radius`. Build it
+/// with makeProxy.
+struct ShapeProxy {
+    Vec2 points[kMaxPolygonVertices]{};
+    int count = 0;
+    float radius = 0.0f;
+};
+
+/// A shape cast's first hit: the shape hit, the point on its surface and
+/// its outward normal there (world), and the fraction t ∈ [0, 1] of the
+/// translation at which the cast shape reaches it.
+struct ShapeCastResult {
+    ShapeId shape{};
+    Vec2 point{};
+    Vec2 normal{};
+    float fraction = 0.0f;
+};
+
+/// A proxy for a circle, capsule, polygon or segment placed by `xf`.
+ShapeProxy makeProxy(const Circle& shape, const Transform& xf);
+ShapeProxy makeProxy(const Capsule& shape, const Transform& xf);
+ShapeProxy makeProxy(const Polygon& shape, const Transform& xf);
+ShapeProxy makeProxy(const Segment& shape, const Transform& xf);
+
+/// The pair filter of World::setCustomFilter: return false and the two
+/// shapes make no contact.
+using CustomFilterFn = std::function<bool(ShapeId shapeA, ShapeId shapeB)>;
+
+/// The callback of World::setPreSolve: called in the step for each touching
+/// contact with its new manifold (normal from shapeA to shapeB); return false
+/// to switch the contact off for this step (it is then not touching).
+using PreSolveFn = std::function<bool(ShapeId shapeA, ShapeId shapeB, const Manifold& manifold)>;
+
+/// An explosion (World::explode): every dynamic body with a shape within
+/// radius + falloff of the centre gets an impulse pushing it away, at the
+/// point of its shape nearest the centre: `impulse` (N·s) within radius of
+/// the centre, falling linearly to 0 at radius + falloff.
+struct ExplosionDef {
+    Vec2 center{};         ///< world (m)
+    float radius = 1.0f;   ///< m, ≥ 0
+    float falloff = 0.0f;  ///< m, ≥ 0
+    float impulse = 1.0f;  ///< N·s per shape, ≥ 0
+    QueryFilter filter{};  ///< which shapes feel it
 };
 
 /// A ray hit: the shape, the entry point and the surface's outward normal

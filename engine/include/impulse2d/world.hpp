@@ -32,6 +32,7 @@
 #include "impulse2d/debug_draw.hpp"
 #include "impulse2d/error.hpp"
 #include "impulse2d/geometry.hpp"
+#include "impulse2d/mover.hpp"
 #include "impulse2d/types.hpp"
 
 namespace i2d {
@@ -219,6 +220,23 @@ public:
 
     /// The body's shapes, in the order they were added.
     std::vector<ShapeId> bodyShapes(BodyId id) const;
+    /// The body's contacts whose shapes touch (sensors excluded), with their
+    /// manifolds and the impulses of the last step, in contact-slot order.
+    std::vector<ContactData> bodyContacts(BodyId id) const;
+
+    /// Take the body out of the simulation and out of every query, keeping
+    /// it (and its shapes and joints) in memory (locked): its contacts end
+    /// (end events with the next step), its shapes leave the broadphase, it
+    /// stops moving and its joints act on nothing. Its state can still be
+    /// read and set. Disabling a disabled body does nothing.
+    void disableBody(BodyId id);
+    /// Put a disabled body back into the simulation, awake (locked). Its
+    /// contacts are found again by the next step. Enabling an enabled body
+    /// does nothing.
+    void enableBody(BodyId id);
+    /// False while the body is disabled.
+    bool isEnabled(BodyId id) const;
+
     /// The joints attached to the body, in the order they were created.
     std::vector<JointId> bodyJoints(BodyId id) const;
     /// Every live body, in creation-slot order.
@@ -290,8 +308,20 @@ public:
     void setFilter(ShapeId id, const Filter& filter);
     /// True for a sensor: it reports overlaps and makes no contact (fixed at creation).
     bool isSensor(ShapeId id) const;
-    /// The value given in ShapeDef::userData; never read by the engine.
+    /// The value given in ShapeDef::userData or by setUserData; never read by the engine.
     std::uintptr_t userData(ShapeId id) const;
+    /// Store any value with the shape (a pointer or an index of the game's).
+    void setUserData(ShapeId id, std::uintptr_t data);
+    /// Rolling resistance (ShapeDef::rollingResistance). Contacts that already
+    /// exist keep the value mixed when they began.
+    float rollingResistance(ShapeId id) const;
+    /// Throws i2d::Error unless resistance is in [0, 1e3].
+    void setRollingResistance(ShapeId id, float resistance);
+    /// Surface speed along the contact tangent (ShapeDef::tangentSpeed, m/s).
+    /// Applies to existing contacts from the next step.
+    float tangentSpeed(ShapeId id) const;
+    /// Throws i2d::Error unless speed is bounded.
+    void setTangentSpeed(ShapeId id, float speed);
     /// The shape's tight bounding box at its body's current pose (world, m).
     AABB shapeAABB(ShapeId id) const;
 
@@ -405,30 +435,69 @@ public:
     float jointForce(JointId id) const;
 
     // ---- Events of the last step ----------------------------------------
-    // Each buffer holds the events of the last step and is cleared when the
-    // next step begins; a span is valid until then. A contact reports events
-    // when either shape enables contact events; a sensor pair when the
-    // sensor enables sensor events. Destroying a shape or body, creating a
-    // joint (unless collideConnected), changing a filter or a body type add
-    // end events for the touching contacts they drop.
+    // Each list holds the events of the last step. It changes only when the
+    // next step() begins, whatever is called in between: a span stays valid
+    // and unchanged until then, so bodies and shapes may be destroyed while
+    // iterating it. A contact reports events when either shape enables
+    // contact events; a sensor pair when the sensor enables sensor events.
+    //
+    // Every begin event is followed by exactly one end event for the same
+    // pair. Destroying a shape or body, disabling a body, creating a joint
+    // (unless collideConnected), changing a filter or a body type between
+    // steps ends the touching contacts they drop: those end events are
+    // reported with the next step, before that step's own events.
+    //
+    // The handles in an end event name shapes that may no longer exist (the
+    // shape or its body was destroyed): isValid(handle) is then false and
+    // every other call with the handle throws i2d::Error. A stale handle never
+    // names another shape, so it can still be compared with handles the game
+    // kept (e.g. as a key of its own map).
 
     /// Pairs of shapes that began to touch in the last step, with their manifold.
     std::span<const ContactBeginEvent> contactBeginEvents() const;
     /// Pairs of shapes that stopped touching in the last step.
     std::span<const ContactEndEvent> contactEndEvents() const;
+    /// Touching contacts that closed faster than WorldSettings::hitEventThreshold
+    /// in the last step, for shapes that enable hit events.
+    std::span<const ContactHitEvent> contactHitEvents() const;
     /// Shapes that began to overlap a sensor in the last step.
     std::span<const SensorBeginEvent> sensorBeginEvents() const;
     /// Shapes that stopped overlapping a sensor in the last step.
     std::span<const SensorEndEvent> sensorEndEvents() const;
 
+    // ---- Callbacks ------------------------------------------------------
+    // Both are called inside step() while the world is locked: they may read
+    // the world (positions, velocities, user data, queries) but not change
+    // it: a locked call throws i2d::Error, which leaves step() with that
+    // step unfinished (its bodies not moved). A callback should not throw
+    // for the same reason. A world without callbacks pays nothing for them;
+    // an empty function removes one.
+
+    /// A filter called when the broadphase finds a new pair that passes the
+    /// shapes' Filters (and joints and sensors): return false and the pair
+    /// makes no contact. Called again only when the shapes' boxes part and
+    /// meet again, or after setFilter on either shape.
+    void setCustomFilter(CustomFilterFn fn);
+    /// Called each step for each contact whose shapes touch (sensors
+    /// excluded; manifold with points), after its manifold is computed:
+    /// return false to switch the contact off for this step. One-way
+    /// platforms: switch off contacts whose normal does not push the body up
+    /// (docs/guide.md). Called for contacts with an awake body only.
+    void setPreSolve(PreSolveFn fn);
+
     // ---- Queries --------------------------------------------------------
     // Queries read the world and may be called from inside draw. Each throws
     // i2d::Error when a point, translation or box corner (m) is not bounded.
+    // Disabled bodies are never reported. A QueryFilter's accept is called
+    // with the world locked.
 
     /// Closest shape hit by the ray origin → origin + translation (world, m);
     /// sensors are skipped, and so is a shape the ray starts inside. On equal
     /// fractions the shape created in the lower slot wins.
     std::optional<RayResult> rayCastClosest(Vec2 origin, Vec2 translation, const QueryFilter& filter = {}) const;
+    /// Any shape the ray hits (sensors skipped), the first one found: the
+    /// cheapest test of whether a line of sight is blocked.
+    std::optional<RayResult> rayCastAny(Vec2 origin, Vec2 translation, const QueryFilter& filter = {}) const;
     /// Every shape the ray hits (sensors skipped), nearest first.
     std::vector<RayResult> rayCastAll(Vec2 origin, Vec2 translation, const QueryFilter& filter = {}) const;
     /// Shapes whose tight bounding boxes overlap the box (sensors included),
@@ -437,6 +506,53 @@ public:
     /// Solid shapes containing the point, boundary included (segments never;
     /// sensors included), in slot order.
     std::vector<ShapeId> queryPoint(Vec2 point, const QueryFilter& filter = {}) const;
+
+    /// Sweep `proxy` (world) along `translation` (m) and return the first
+    /// shape it touches (sensors skipped): the fraction at which the gap
+    /// between the surfaces has closed to within 0.1·kLinearSlop (0.5 mm)
+    /// — never past the touch —, the point on the hit shape and its outward
+    /// normal. A proxy that already touches a shape at its start hits it at
+    /// fraction 0 (normal: from that shape towards the proxy where the
+    /// surfaces are apart, −translation's direction where they overlap). On
+    /// equal fractions the lower slot wins. Throws i2d::Error when
+    /// translation or a proxy point is not bounded, the proxy has no points
+    /// or more than kMaxPolygonVertices, or its radius is negative, not
+    /// finite or over 1e5 m.
+    std::optional<ShapeCastResult> castShape(const ShapeProxy& proxy, Vec2 translation,
+                                             const QueryFilter& filter = {}) const;
+    /// Shapes that overlap `proxy` (world; surfaces touching counts), sensors
+    /// included, in slot order. Segments count as thin solids. Throws as
+    /// castShape for a bad proxy.
+    std::vector<ShapeId> overlapShape(const ShapeProxy& proxy, const QueryFilter& filter = {}) const;
+
+    // ---- The character mover (impulse2d/mover.hpp) ----------------------
+
+    /// The planes of the shapes (sensors skipped) that a capsule (world, m)
+    /// touches or overlaps: for each, the normal from the shape's nearest
+    /// point towards the capsule's core and the overlap depth. A shape whose
+    /// core the capsule's core crosses has no normal and gives no plane.
+    /// In slot order. Throws i2d::Error unless the centres are bounded and
+    /// the radius is in (0, 1e5] m.
+    std::vector<CollisionPlane> collideMover(const Capsule& mover, const QueryFilter& filter = {}) const;
+    /// How far (fraction of `translation`, in [0, 1]) the capsule (world)
+    /// can move before it would overlap a shape (sensors skipped) by more
+    /// than kLinearSlop. Shapes it already overlaps that much are left to
+    /// collideMover's planes (they do not stop the cast). Throws i2d::Error
+    /// as collideMover, or when translation is not bounded.
+    float castMover(const Capsule& mover, Vec2 translation, const QueryFilter& filter = {}) const;
+
+    // ---- Helpers --------------------------------------------------------
+
+    /// Push dynamic bodies away from a point (locked); see ExplosionDef.
+    /// Each shape within radius + falloff of the centre (by its nearest
+    /// point) gives its body `impulse` scaled by the falloff, directed from the
+    /// centre to that point (to the shape's body centre when the centre is
+    /// inside the shape), applied at that point; bodies are woken. Throws
+    /// i2d::Error, changing nothing, when the centre is not bounded; radius,
+    /// falloff or impulse is negative, not finite or over 1e7; or an impulse
+    /// would give a body a velocity beyond the bounds applyLinearImpulse
+    /// accepts.
+    void explode(const ExplosionDef& def);
 
     // ---- Inspection -----------------------------------------------------
 
@@ -454,8 +570,8 @@ public:
     std::vector<ContactData> contacts() const;
     /// Time spent in each stage of the last step (ms).
     const Profile& profile() const;
-    /// Draw every shape, joint and (by the drawer's flags) AABB and contact,
-    /// in world coordinates. While it runs, the world is locked: a drawer
+    /// Draw every shape (but those of disabled bodies), joint and (by the
+    /// drawer's flags) AABB and contact, in world coordinates. While it runs, the world is locked: a drawer
     /// that calls a locked function gets i2d::Error.
     void draw(DebugDraw& drawer) const;
 
