@@ -38,6 +38,21 @@ void sharePushAmongDeepContacts(WorldState& w) {
     }
 }
 
+/// The coupling scale of a two-point row (solvePointPair), from its anchors.
+float pairScale(const ContactConstraint& cc) {
+    const ContactPointConstraint& c1 = cc.points[0];
+    const ContactPointConstraint& c2 = cc.points[1];
+    const Vec2 n = cc.normal;
+    const float rn1A = cross(c1.rA, n), rn1B = cross(c1.rB, n);
+    const float rn2A = cross(c2.rA, n), rn2B = cross(c2.rB, n);
+    const float mAB = cc.invMassA + cc.invMassB;
+    const float k11 = mAB + cc.invIA * rn1A * rn1A + cc.invIB * rn1B * rn1B;
+    const float k22 = mAB + cc.invIA * rn2A * rn2A + cc.invIB * rn2B * rn2B;
+    const float k12 = mAB + cc.invIA * rn1A * rn2A + cc.invIB * rn1B * rn2B;
+    const float coupling = k11 > 0.0f && k22 > 0.0f ? k12 / std::sqrt(k11 * k22) : 0.0f;
+    return coupling > 0.0f ? 1.0f / (1.0f + coupling) : 1.0f;
+}
+
 }  // namespace
 
 bool contactRowBodies(const WorldState& w, const Contact& ct, int zeroState, RowBodies& out) {
@@ -165,6 +180,7 @@ void prepareContacts(WorldState& w, float h, bool soft) {
         }
         const float push = soft ? -cc.biasRate * deepest : -pushRate * std::min(deepest + set.penetrationSlop, 0.0f);
         cc.pointsTogether = cc.pointCount == 2 && push < cc.maxPush;
+        cc.pairScale = cc.pointsTogether ? pairScale(cc) : 1.0f;
     }
 }
 
@@ -251,17 +267,11 @@ float pointImpulse(ContactPointConstraint& cp, Vec2 n, const PointTarget& t, con
 // applied as computed and converge over the substeps. The exact 2×2 block
 // solve (Box2D 2.4.1's) holds columns as well, but threw a pile of 100 boxes
 // created at one point at 26 m/s instead of 18.
-void solvePointPair(ContactConstraint& cc, const RowMasses& m, const PointTarget* t, BodyVelocities& v) {
+inline void solvePointPair(ContactConstraint& cc, const RowMasses& m, const PointTarget* t, BodyVelocities& v) {
     ContactPointConstraint& c1 = cc.points[0];
     ContactPointConstraint& c2 = cc.points[1];
     const Vec2 n = cc.normal;
-    const float rn1A = cross(c1.rA, n), rn1B = cross(c1.rB, n);
-    const float rn2A = cross(c2.rA, n), rn2B = cross(c2.rB, n);
-    const float k11 = m.mA + m.mB + m.iA * rn1A * rn1A + m.iB * rn1B * rn1B;
-    const float k22 = m.mA + m.mB + m.iA * rn2A * rn2A + m.iB * rn2B * rn2B;
-    const float k12 = m.mA + m.mB + m.iA * rn1A * rn2A + m.iB * rn1B * rn2B;
-    const float coupling = k11 > 0.0f && k22 > 0.0f ? k12 / std::sqrt(k11 * k22) : 0.0f;
-    const float scale = coupling > 0.0f ? 1.0f / (1.0f + coupling) : 1.0f;
+    const float scale = cc.pairScale;
     float increment[2];
     for (int j = 0; j < 2; ++j) {
         ContactPointConstraint& cp = cc.points[j];

@@ -5,7 +5,7 @@
 //
 // Layout: ContactConstraint is one manifold (normal, material, the inverse
 // masses of its two bodies, soft coefficients) with up to two points inline,
-// 172 bytes (static_assert below: 68 for the manifold, 52 per point); a side that cannot move points at the zero
+// 176 bytes (static_assert below: 72 for the manifold, 52 per point); a side that cannot move points at the zero
 // BodyState kept after the awake bodies, so the passes have no branch per
 // side. Rows reference bodies by solver index only: the passes read
 // ContactConstraint and BodyState and nothing else.
@@ -55,9 +55,12 @@ struct ContactConstraint {
     bool roundA : 1;
     bool roundB : 1;
     std::uint8_t pointCount;
+    /// Both points' increments are scaled by this when solved together:
+    /// 1/(1 + ρ) for a positive coupling ρ = K12/√(K11·K22), else 1.
+    float pairScale;
     ContactPointConstraint points[2];  ///< the first pointCount are in use
 };
-static_assert(sizeof(ContactConstraint) == 172, "the layout documented above");
+static_assert(sizeof(ContactConstraint) == 176, "the layout documented above");
 
 /// The rolling-resistance row of a contact whose shapes resist rolling
 /// (kept apart: most contacts have none and their rows stay as they are). An
