@@ -125,6 +125,7 @@ private:
         bd.fixedRotation = b.def.fixedRotation;
         bd.awake = b.def.isAwake;
         bd.allowSleep = b.def.enableSleep;
+        bd.bullet = b.def.isBullet;
         b2Body* body = world_.CreateBody(&bd);
 
         // Mass properties as Impulse2D computes them (parallel-axis sum), so

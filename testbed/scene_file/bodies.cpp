@@ -119,7 +119,7 @@ ShapeDesc parseShape(const json& j, const Loc& loc) {
 BodyDesc parseBody(const json& j, const Loc& loc, bool isTemplate) {
     Obj o(j, loc,
           {"comment", "type", "angle", "linear_velocity", "angular_velocity", "linear_damping", "angular_damping",
-           "gravity_scale", "fixed_rotation", "awake", "enable_sleep", "shapes"});
+           "gravity_scale", "fixed_rotation", "awake", "enable_sleep", "bullet", "shapes"});
     if (!isTemplate) o.allow({"name", "position"});
     if (isTemplate) {
         for (const char* k : {"name", "position"})
@@ -143,6 +143,7 @@ BodyDesc parseBody(const json& j, const Loc& loc, bool isTemplate) {
     b.def.fixedRotation = o.boolean("fixed_rotation", false);
     b.def.isAwake = o.boolean("awake", true);
     b.def.enableSleep = o.boolean("enable_sleep", true);
+    b.def.isBullet = o.boolean("bullet", false);
     if (o.has("shapes")) {
         const json& sh = o.get("shapes");
         Loc sl = o.at("shapes");

@@ -101,7 +101,8 @@ struct WorldSettings {
     /// may move further than speculativeDistance in a step is swept against
     /// the static shapes near its path and, if it would touch one, put back to
     /// its first time of impact (keeping its velocity), so it cannot pass
-    /// through thin walls. Dynamic-versus-dynamic pairs are not swept.
+    /// through thin walls. Dynamic-versus-dynamic pairs are swept only for
+    /// bullets (BodyDef::isBullet) against bodies that are not bullets.
     bool enableContinuous = true;
     bool enableSleep = true;
     /// Seconds an island must rest before it sleeps.
@@ -131,7 +132,12 @@ struct BodyDef {
     bool fixedRotation = false;    ///< no rotation (infinite rotational inertia)
     bool isAwake = true;           ///< false: created asleep (when sleep is enabled)
     bool enableSleep = true;       ///< false: this body never sleeps
-    std::uintptr_t userData = 0;   ///< any value of the game's; never read by the engine
+    /// A fast dynamic body (a projectile): its continuous collision also
+    /// sweeps it against the other dynamic bodies that are not bullets, so it
+    /// cannot pass through a thin moving body (continuous.cpp). Costs a sweep
+    /// per step while it moves fast.
+    bool isBullet = false;
+    std::uintptr_t userData = 0;  ///< any value of the game's; never read by the engine
 };
 
 /// Which shapes may collide. Two shapes collide when each one's category is

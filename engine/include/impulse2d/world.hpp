@@ -203,6 +203,10 @@ public:
     /// angular velocity to 0 when true and recomputes the mass from the shapes
     /// (an override by setMassData is lost).
     void setFixedRotation(BodyId id, bool flag);
+    /// True when the body is a bullet (BodyDef::isBullet).
+    bool isBullet(BodyId id) const;
+    /// Make the body a bullet (swept against non-bullet dynamic bodies too) or not.
+    void setBullet(BodyId id, bool flag);
     /// The value given in BodyDef::userData or by setUserData; never read by
     /// the engine.
     std::uintptr_t userData(BodyId id) const;
