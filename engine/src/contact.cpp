@@ -9,6 +9,7 @@
 #include <algorithm>
 #include <cmath>
 
+#include "seams.hpp"
 #include "world_state.hpp"
 
 namespace i2d::detail {
@@ -77,6 +78,7 @@ bool updateContact(WorldState& w, int c) {
         return false;
     }
     Manifold m = computeManifold(w, ct);
+    dropSeamGhosts(w, ct, m);
     bool touching;
     if (ct.isSensor) {
         touching = false;

@@ -28,7 +28,7 @@
 // driving into a wall keeps its centroid in front, from where the contact
 // pushes it back out on the side it came from. Box2D v3 has the same need
 // and falls back to sweeping a small disc around the fast shape's centroid
-// (Catto, 2024, Box2D v3.1, solver.c, the continuous query); the chord cast
+// (Catto, 2025, Box2D v3.1, solver.c, the continuous query); the chord cast
 // and the removal of the approach speed are this engine's.
 //
 // The sweep runs from the body's pose at the step's start: before the
@@ -37,7 +37,7 @@
 // escapes it.
 //
 // Time of impact by conservative advancement (Mirtich, 1996, Impulse-based
-// dynamic simulation of rigid body systems; Catto, 2024, Box2D v3.1,
+// dynamic simulation of rigid body systems; Catto, 2025, Box2D v3.1,
 // b2TimeOfImpact): with d(t) the distance between the two surfaces at time
 // t ∈ [0, 1] of the step and B a bound on how far any point of the moving
 // shape travels relative to the other over the step (|Δc| + |Δθ|·r_max),

@@ -25,11 +25,11 @@ enum class TargetKind { wall, segment, count };
 struct Case {
     ShapeKind shape{};
     TargetKind target{};
-    float size = 0.0f;   ///< half-extent scale (m)
-    float angle = 0.0f;  ///< rad
-    float spin = 0.0f;   ///< rad/s
-    float speed = 0.0f;  ///< m/s
-    float heading = 0.0f;  ///< direction of flight, rad from +x
+    float size = 0.0f;      ///< half-extent scale (m)
+    float angle = 0.0f;     ///< rad
+    float spin = 0.0f;      ///< rad/s
+    float speed = 0.0f;     ///< m/s
+    float heading = 0.0f;   ///< direction of flight, rad from +x
     bool touching = false;  ///< starts touching the front face
     float gap = 0.0f;       ///< start distance of the nearest point to the front face (m)
     int settings = 0;       ///< which position correction and impact model
@@ -48,9 +48,10 @@ Case randomCase(std::mt19937& rng, unsigned seed) {
     auto uniform = [&](float lo, float hi) { return std::uniform_real_distribution<float>(lo, hi)(rng); };
     Case c;
     c.seed = seed;
-    c.shape = static_cast<ShapeKind>(std::uniform_int_distribution<int>(0, static_cast<int>(ShapeKind::count) - 1)(rng));
-    c.target =
-        static_cast<TargetKind>(std::uniform_int_distribution<int>(0, static_cast<int>(TargetKind::count) - 1)(rng));
+    c.shape = static_cast<ShapeKind>(
+        std::uniform_int_distribution<int>(0, static_cast<int>(ShapeKind::count) - 1)(rng));
+    c.target = static_cast<TargetKind>(
+        std::uniform_int_distribution<int>(0, static_cast<int>(TargetKind::count) - 1)(rng));
     c.size = uniform(0.05f, 0.5f);
     c.angle = uniform(-3.14159f, 3.14159f);
     c.spin = uniform(-100.0f, 100.0f);
@@ -107,9 +108,9 @@ Result run(const Case& c, bool continuous = true) {
     World world(s);
     BodyId wall = world.createBody({});
     if (c.target == TargetKind::wall)
-        world.createPolygonShape(wall, {},
-                                 makeOffsetBox(0.5f * kWallThickness, kHalfHeight,
-                                               {kWallFront + 0.5f * kWallThickness, 0.0f}, 0.0f));
+        world.createPolygonShape(
+            wall, {},
+            makeOffsetBox(0.5f * kWallThickness, kHalfHeight, {kWallFront + 0.5f * kWallThickness, 0.0f}, 0.0f));
     else
         world.createSegmentShape(wall, {}, {{kWallFront, -kHalfHeight}, {kWallFront, kHalfHeight}});
 
