@@ -29,15 +29,10 @@ int typeRank(ShapeType t) {
     return 0;
 }
 
-Manifold computeManifold(const WorldState& w, const Contact& c) {
-    const Shape& sa = w.shapes[c.shapeA];
-    const Shape& sb = w.shapes[c.shapeB];
+/// The manifold of two shapes ordered for the function table.
+Manifold collideOrdered(const Shape& sa, const Transform& xa, const Shape& sb, const Transform& xb, float spec) {
     const ShapeGeometry& a = sa.geometry;
     const ShapeGeometry& b = sb.geometry;
-    const Transform& xa = w.bodies[c.bodyA].xf;
-    const Transform& xb = w.bodies[c.bodyB].xf;
-    // Sensors report overlap only: no speculative margin.
-    const float spec = c.isSensor ? 0.0f : w.settings.speculativeDistance;
     switch (sa.type) {
         case ShapeType::segment:
             switch (sb.type) {
@@ -67,6 +62,12 @@ Manifold computeManifold(const WorldState& w, const Contact& c) {
             break;
     }
     return {};
+}
+
+Manifold computeManifold(const WorldState& w, const Contact& c) {
+    // Sensors report overlap only: no speculative margin.
+    const float spec = c.isSensor ? 0.0f : w.settings.speculativeDistance;
+    return collideOrdered(w.shapes[c.shapeA], w.bodies[c.bodyA].xf, w.shapes[c.shapeB], w.bodies[c.bodyB].xf, spec);
 }
 
 bool updateContact(WorldState& w, int c) {
@@ -129,6 +130,14 @@ bool updateContact(WorldState& w, int c) {
 }
 
 }  // namespace
+
+Manifold collideShapes(const Shape& a, const Transform& xa, const Shape& b, const Transform& xb,
+                       float speculativeDistance) {
+    if (typeRank(a.type) >= typeRank(b.type)) return collideOrdered(a, xa, b, xb, speculativeDistance);
+    Manifold m = collideOrdered(b, xb, a, xa, speculativeDistance);
+    m.normal = -m.normal;
+    return m;
+}
 
 void updatePairs(WorldState& w) {
     w.broadPhase.findNewPairs(w.shapes, [&](int s, int other) {

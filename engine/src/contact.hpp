@@ -13,6 +13,7 @@
 namespace i2d::detail {
 
 struct WorldState;
+struct Shape;
 
 struct Contact {
     Manifold manifold{};
@@ -28,6 +29,11 @@ struct Contact {
     bool isSensor = false;
     bool enableEvents = false;
 };
+
+/// The manifold of two shapes at the given poses, normal from a to b (the
+/// narrowphase without a contact; continuous.cpp measures overlaps with it).
+Manifold collideShapes(const Shape& a, const Transform& xa, const Shape& b, const Transform& xb,
+                       float speculativeDistance);
 
 /// Finds the new pairs among the shapes whose proxies moved (broad_phase.hpp)
 /// and creates a contact for each one that passes the filters.

@@ -168,6 +168,13 @@ bool makeMover(const WorldState& w, const Body& body, const BodyState& s, Mover&
     return true;
 }
 
+/// True when `point` lies behind a chain segment (on its left side).
+bool behindChain(const Shape& chain, const Transform& xf, Vec2 point) {
+    const Vec2 p1 = transformPoint(xf, chain.geometry.segment.point1);
+    const Vec2 p2 = transformPoint(xf, chain.geometry.segment.point2);
+    return cross(p2 - p1, point - p1) > 0.0f;
+}
+
 /// Where a body's sweep stops.
 struct Stop {
     float t = 1.0f;
@@ -193,6 +200,30 @@ std::optional<Entry> chordEntry(Vec2 p0, Vec2 p1, const Shape& other, const Tran
     return Entry{hit->fraction, std::abs(dot(ray.translation, hit->normal)), rotate(xfOther.q, hit->normal)};
 }
 
+/// A hit that needs no stop: the shape reaches the other one along its
+/// surface (onto the next segment of a floor, the next tile) rather than
+/// into it. Its centroid's chord does not enter the other shape, it moved
+/// towards it by no more than the slop, and at the step's end it overlaps it
+/// by no more than the speculative distance, which the contact made at the
+/// next step's start resolves. Stopping such a body
+/// at the first touch stalled it at every joint of a floor it slid along.
+/// (Box2D v3 skips fast motion parallel to a chain segment the same way:
+/// Catto, 2025, Box2D v3.1, solver.c.)
+bool grazes(const Shape& shape, const ShapeCore& core, const Mover& m, const Shape& other, const Transform& xfOther,
+            float speculativeDistance) {
+    const Centroid c = centroidOf(shape, core);
+    const Transform xf1 = m.sweep.at(1.0f);
+    if (chordEntry(transformPoint(m.sweep.at(0.0f), c.point), transformPoint(xf1, c.point), other, xfOther))
+        return false;
+    const Manifold end = collideShapes(shape, xf1, other, xfOther, 0.0f);
+    // Along the surface: the step's motion towards it (the normal points
+    // from the moving shape to the other) is within the slop.
+    if (end.pointCount > 0 && dot(m.sweep.dc, end.normal) > kLinearSlop) return false;
+    for (int i = 0; i < end.pointCount; ++i)
+        if (end.points[i].separation < -speculativeDistance) return false;
+    return true;
+}
+
 /// The shape's centroid must not enter the other shape. Its chord over the
 /// step (its exact path for a body of one shape, whose centroid is the
 /// centre of mass) is cast against the other shape; on a hit the body stops
@@ -212,11 +243,11 @@ void probeCentroid(const Shape& shape, const ShapeCore& core, const Mover& m, co
 
 /// Sweeps one shape of the moving body against one other shape; moves the stop earlier.
 void sweepPair(const Shape& shape, const ShapeCore& core, const Mover& m, const Shape& other, const Transform& xfOther,
-               Stop& stop) {
+               float speculativeDistance, Stop& stop) {
     const ShapeCore otherCore = shapeCore(other);
     const Impact hit = timeOfImpact(core, m.sweep, m.bound, otherCore, xfOther, kLinearSlop);
     if (!hit.startsTouching) {
-        if (hit.t < stop.t) stop = {hit.t, false, {}};
+        if (hit.t < stop.t && !grazes(shape, core, m, other, xfOther, speculativeDistance)) stop = {hit.t, false, {}};
         return;
     }
     // Already touching: the contact keeps the part that touches; the body's
@@ -247,8 +278,10 @@ void sweepBody(WorldState& w, Body& body, const Mover& m) {
             if (o.body == shape.body) return true;
             if (!o.inStaticTree && (ob.type != BodyType::dynamic_body || ob.isBullet)) return true;
             if (jointPreventsCollision(w, shape.body, o.body)) return true;
+            if (o.chainSegment && behindChain(o, ob.xf, transformPoint(xf0, centroidOf(shape, core).point)))
+                return true;  // one-sided: a body coming from behind passes
             Stop pair;
-            sweepPair(shape, core, m, o, ob.xf, pair);
+            sweepPair(shape, core, m, o, ob.xf, w.settings.speculativeDistance, pair);
             pair.byProbe = pair.byProbe && o.inStaticTree;  // a dynamic body takes its momentum through the contact
             if (pair.t < stop.t) stop = pair;
             return true;

@@ -27,6 +27,9 @@
 //   rule of a chain's ghost vertices (Catto, 2025, Box2D v3.1, manifold.c,
 //   the chain segment colliders), with the neighbour found through the
 //   broadphase instead of stored.
+// A chain's segment (World::createChain) keeps its neighbours' far points
+// (ghost vertices) and applies the vertex rule with them, whatever its body,
+// and collides on its right side only.
 // Only static shapes that would collide with the moving shape count as
 // neighbours, and only polygons and segments (a static circle or capsule
 // has no face to continue a floor). Cost: a broadphase query of a
@@ -43,7 +46,7 @@ namespace {
 
 constexpr float kShareTolerance = kLinearSlop;  ///< vertices and faces closer than this are shared
 constexpr float kFaceAlignment = 0.9999f;       ///< cos 0.8°: a normal this close to a face normal is it
-constexpr float kLean = 1.0e-4f;  ///< n·u above this leans over the face (at 20 m/s: 2 mm/s towards it)
+constexpr float kLean = 1.0e-4f;                ///< n·u above this leans over the face (at 20 m/s: 2 mm/s towards it)
 
 /// A static shape's core in world space: a polygon's vertices and normals, or a segment's two points.
 struct Outline {
@@ -165,10 +168,59 @@ bool isGhost(const WorldState& w, int self, const Shape& moving, const Outline& 
     return leansOverNeighbour(w, self, moving, s.vertices[vertex], n);
 }
 
+/// The centroid of a shape in its body frame.
+Vec2 localCentroid(const Shape& s) {
+    switch (s.type) {
+        case ShapeType::circle: return s.geometry.circle.center;
+        case ShapeType::capsule: return 0.5f * (s.geometry.capsule.center1 + s.geometry.capsule.center2);
+        case ShapeType::segment: return 0.5f * (s.geometry.segment.point1 + s.geometry.segment.point2);
+        case ShapeType::polygon: return s.geometry.polygon.centroid;
+    }
+    return {};
+}
+
+/// A chain segment's rule, with its stored ghost vertices as the
+/// neighbours: one-sided (nothing whose centroid is behind the segment's
+/// line collides with it, nor any point whose normal points behind it), and
+/// the vertex rule above at each end that has a neighbour.
+void applyChainRule(const WorldState& w, const Shape& chain, const Shape& moving, Vec2 n, Manifold& m) {
+    const Transform& xf = w.bodies[chain.body].xf;
+    const Vec2 p1 = transformPoint(xf, chain.geometry.segment.point1);
+    const Vec2 p2 = transformPoint(xf, chain.geometry.segment.point2);
+    const Vec2 front = rightPerp(normalize(p2 - p1));
+    const Vec2 c = transformPoint(w.bodies[moving.body].xf, localCentroid(moving));
+    if (dot(front, c - p1) < 0.0f || dot(n, front) < 0.0f) {
+        m.pointCount = 0;
+        return;
+    }
+    if (dot(n, front) >= kFaceAlignment) return;  // the face normal
+    const Vec2 g1 = transformPoint(xf, chain.ghost1), g2 = transformPoint(xf, chain.ghost2);
+    int kept = 0;
+    for (int i = 0; i < m.pointCount; ++i) {
+        const ManifoldPoint& pt = m.points[i];
+        const Vec2 p = pt.point - 0.5f * pt.separation * n;
+        bool ghost = false;
+        if (distance(p, p1) <= kShareTolerance && distance(g1, p1) > 0.0f)
+            ghost = dot(n, normalize(g1 - p1)) > kLean;
+        else if (distance(p, p2) <= kShareTolerance && distance(g2, p2) > 0.0f)
+            ghost = dot(n, normalize(g2 - p2)) > kLean;
+        if (!ghost) m.points[kept++] = pt;
+    }
+    m.pointCount = kept;
+}
+
 }  // namespace
 
 void dropSeamGhosts(const WorldState& w, const Contact& c, Manifold& m) {
     if (m.pointCount == 0 || c.isSensor) return;
+    const Shape& shapeA = w.shapes[c.shapeA];
+    const Shape& shapeB = w.shapes[c.shapeB];
+    if (shapeA.chainSegment || shapeB.chainSegment) {
+        // Two segments never collide, so one side is the chain's.
+        const bool aChain = shapeA.chainSegment;
+        applyChainRule(w, aChain ? shapeA : shapeB, aChain ? shapeB : shapeA, aChain ? m.normal : -m.normal, m);
+        return;
+    }
     const bool aStatic = w.bodies[c.bodyA].type == BodyType::static_body;
     const bool bStatic = w.bodies[c.bodyB].type == BodyType::static_body;
     if (aStatic == bStatic) return;

@@ -61,7 +61,8 @@ Crossing cross(Floor f, Mover mv, float speed, bool driven) {
     BodyId body;
     switch (mv) {
         case Mover::box:  // the player: 0.6 × 1 m, fixed rotation
-            body = world.createBody({.type = BodyType::dynamic_body, .position = {kStartX, 0.5f}, .fixedRotation = true});
+            body = world.createBody(
+                {.type = BodyType::dynamic_body, .position = {kStartX, 0.5f}, .fixedRotation = true});
             world.createPolygonShape(body, {.friction = 0.0f}, makeBox(0.3f, 0.5f));
             break;
         case Mover::circle:
@@ -97,14 +98,14 @@ Crossing cross(Floor f, Mover mv, float speed, bool driven) {
 // mover (friction 0, nothing else acts along x) keeps its speed: it may lose
 // no more than 1 % (a seam that caught it would take all of it).
 TEST(Seams, NothingSnagsOrJumpsAtSeams) {
-    for (Floor f : {Floor::boxes_one_body, Floor::boxes_many_bodies, Floor::segments_one_body,
-                    Floor::segments_many_bodies})
+    for (Floor f :
+         {Floor::boxes_one_body, Floor::boxes_many_bodies, Floor::segments_one_body, Floor::segments_many_bodies})
         for (Mover mv : {Mover::box, Mover::circle, Mover::capsule})
             for (float speed : {1.0f, 3.0f, 6.0f, 12.0f, 20.0f})
                 for (bool driven : {false, true}) {
                     const Crossing c = cross(f, mv, speed, driven);
-                    const std::string what = std::string(name(mv)) + " on " + name(f) + " at " +
-                                              std::to_string(speed) + " m/s" + (driven ? " driven" : " sliding");
+                    const std::string what = std::string(name(mv)) + " on " + name(f) + " at " + std::to_string(speed) +
+                                             " m/s" + (driven ? " driven" : " sliding");
                     EXPECT_LT(c.maxUpSpeed, 0.1f) << what;
                     EXPECT_GT(c.minSpeedX, 0.99f * speed) << what;
                     EXPECT_GE(c.endX, 19.0f) << what;

@@ -169,6 +169,26 @@ struct ShapeDef {
 
 enum class ShapeType : std::uint8_t { circle, capsule, segment, polygon };
 
+/// A chain: segments joined end to end (World::createChain), for static
+/// level geometry such as terrain. Each segment collides on one side only, its
+/// right side looking from a point to the next (so a counter-clockwise loop
+/// is solid inside, as in Box2D), and knows its neighbours' far points (its
+/// ghost vertices), so that a body sliding or rolling across a joint between
+/// two segments meets one smooth surface: no catch on a seam, no kick from a
+/// joint's rounded corner, at any speed.
+struct ChainDef {
+    /// The points in the body frame (m); an open chain needs at least 2, a
+    /// loop at least 3. Consecutive points further apart than kLinearSlop,
+    /// and no segment may cross or touch another one that is not its neighbour.
+    std::span<const Vec2> points{};
+    bool isLoop = false;       ///< true: the last point joins the first
+    float friction = 0.6f;     ///< of every segment (Coulomb μ ≥ 0)
+    float restitution = 0.0f;  ///< of every segment (e ∈ [0, 1])
+    Filter filter{};
+    bool enableContactEvents = true;
+    std::uintptr_t userData = 0;  ///< given to every segment
+};
+
 /// Two shapes began to touch in the last step (manifold at that moment).
 struct ContactBeginEvent {
     ShapeId shapeA{};
