@@ -34,6 +34,14 @@ struct RunReport {
     /// Dynamic bodies whose origin ends more than kDisplacedDistance from its start.
     int displaced = 0;
     static constexpr float kDisplacedDistance = 0.5f;
+    /// Dynamic bodies that tunnelled into or through a static shape (or, for
+    /// a bullet, a non-bullet dynamic body); driven bodies that snagged; how
+    /// many bodies were driven and their largest vertical speed (m/s) after
+    /// the 5th step (tb::CrossingCheck).
+    int tunnelled = 0;
+    int snagged = 0;
+    int driven = 0;
+    float drivenMaxVerticalSpeed = 0.0f;
     float jointErrorMax = 0.0f;    ///< largest tb::maxJointError over the run (m)
     float jointErrorFinal = 0.0f;  ///< after the last step (m)
     struct Named {

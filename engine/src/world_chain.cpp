@@ -66,8 +66,8 @@ void validateChain(const ChainDef& def) {
         for (std::size_t j = i + 2; j < segments; ++j) {
             if (def.isLoop && i == 0 && j == segments - 1) continue;  // the loop's closing neighbours
             if (segmentsDistance(at(i), at(i + 1), at(j), at(j + 1)) <= kLinearSlop)
-                fail("chain crosses or touches itself: segments " + std::to_string(i) + " and " +
-                     std::to_string(j) + " come within the linear slop (0.005 m)");
+                fail("chain crosses or touches itself: segments " + std::to_string(i) + " and " + std::to_string(j) +
+                     " come within the linear slop (0.005 m)");
         }
     }
 }

@@ -39,6 +39,13 @@ void drawSimulation(i2d::DebugDraw& dd, const SceneDesc& desc, const Simulation&
         for (const ShapeDesc& shape : body.shapes) {
             i2d::Color c = colour ? *colour : bodyColour(body, s);
             if (shape.def.isSensor) c.a = 0.3f;
+            if (shape.chain) {
+                const std::size_t n = shape.chainPoints.size();
+                for (std::size_t k = 0; k + 1 < n + (shape.chainLoop ? 1 : 0); ++k)
+                    dd.drawSegment(i2d::transformPoint(xf, shape.chainPoints[k]),
+                                   i2d::transformPoint(xf, shape.chainPoints[(k + 1) % n]), c);
+                continue;
+            }
             switch (shape.type) {
                 case i2d::ShapeType::circle:
                     dd.drawSolidCircle(i2d::transformPoint(xf, shape.circle.center), shape.circle.radius,

@@ -36,10 +36,10 @@ TEST(Chain, BadInputIsRefusedAndChangesNothing) {
         EXPECT_THROW(world.createChain(ground, {.points = points}), Error) << points.size() << " points";
     }
     const std::vector<std::vector<Vec2>> loops = {
-        {{0, 0}, {1, 0}},                    // too few for a loop
-        {{0, 0}, {2, 0}, {0, 2}, {2, 2}},    // a bow tie: overlaps itself
-        {{0, 0}, {1, 0}, {1, 1}, {0, 0}},    // the last point repeats the first
-        {{0, 0}, {2, 0}, {1, 0}},            // flat: folds back
+        {{0, 0}, {1, 0}},                  // too few for a loop
+        {{0, 0}, {2, 0}, {0, 2}, {2, 2}},  // a bow tie: overlaps itself
+        {{0, 0}, {1, 0}, {1, 1}, {0, 0}},  // the last point repeats the first
+        {{0, 0}, {2, 0}, {1, 0}},          // flat: folds back
     };
     for (const auto& points : loops)
         EXPECT_THROW(world.createChain(ground, {.points = points, .isLoop = true}), Error) << points.size();
@@ -173,8 +173,8 @@ TEST(Chain, NothingSnagsOrJumpsAtJoints) {
         for (float speed : {1.0f, 3.0f, 6.0f, 12.0f, 20.0f})
             for (bool wavy : {false, true}) {
                 const Slide r = slide(mover, speed, wavy);
-                const std::string what =
-                    std::string(names[mover]) + (wavy ? " on hills" : " on flat") + " at " + std::to_string(speed);
+                const std::string what = std::string(names[mover]) + (wavy ? " on hills" : " on flat") + " at " +
+                                         std::to_string(speed);
                 EXPECT_LT(r.maxUpSpeed, 0.1f) << what;
                 EXPECT_GE(r.endX, 18.0f) << what;
                 if (!wavy) {
