@@ -135,9 +135,8 @@ void CrossingCheck::observe(const Simulation& sim) {
 
 bool CrossingCheck::passes(int mover, int body, int k, i2d::Vec2 a, i2d::Vec2 b) {
     const ShapeDesc& shape = desc_.bodies[static_cast<std::size_t>(body)].shapes[static_cast<std::size_t>(k)];
-    auto state = std::find_if(insides_.begin(), insides_.end(), [&](const Inside& in) {
-        return in.mover == mover && in.body == body && in.shape == k;
-    });
+    auto state = std::find_if(insides_.begin(), insides_.end(),
+                              [&](const Inside& in) { return in.mover == mover && in.body == body && in.shape == k; });
     if (shape.type == i2d::ShapeType::segment) {
         const std::vector<i2d::Segment> segments = segmentsOf(shape);
         if (state != insides_.end()) {

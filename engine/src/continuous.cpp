@@ -45,6 +45,8 @@
 // past the first touch.
 #include <algorithm>
 #include <cmath>
+#include <utility>
+#include <vector>
 
 #include "continuous.hpp"
 #include "impulse2d/collision.hpp"
@@ -309,23 +311,23 @@ void sweepBody(WorldState& w, Body& body, const Mover& m) {
 
 void solveContinuous(WorldState& w) {
     // Non-bullets first: the bullets then meet them where they ended the step.
-    bool proxiesSynchronized = false;
-    for (const bool bullets : {false, true}) {
-        for (std::size_t i = 0; i < w.solver.stateBodies.size(); ++i) {
-            Body& body = w.bodies[w.solver.stateBodies[i]];
-            if (body.type != BodyType::dynamic_body || body.reach < 0.0f || body.isBullet != bullets) continue;
-            Mover m;
-            if (!makeMover(w, body, w.solver.states[i], m)) continue;
-            if (bullets && !proxiesSynchronized) {
-                // The bullets find the dynamic bodies through their boxes in
-                // the tree, which must hold where those bodies ended the step
-                // (a plank just hit moves fast).
-                for (int b : w.islands.awakeBodies) synchronizeProxies(w, b);
-                proxiesSynchronized = true;
-            }
+    std::vector<std::pair<int, Mover>> bullets;  // allocates only in a step with a fast bullet
+    for (std::size_t i = 0; i < w.solver.stateBodies.size(); ++i) {
+        Body& body = w.bodies[w.solver.stateBodies[i]];
+        if (body.type != BodyType::dynamic_body || body.reach < 0.0f) continue;
+        Mover m;
+        if (!makeMover(w, body, w.solver.states[i], m)) continue;
+        if (body.isBullet)
+            bullets.emplace_back(w.solver.stateBodies[i], m);
+        else
             sweepBody(w, body, m);
-        }
     }
+    if (bullets.empty()) return;
+    // The bullets find the dynamic bodies through their boxes in the tree,
+    // which must hold where those bodies ended the step (a plank just hit
+    // moves fast).
+    for (int b : w.islands.awakeBodies) synchronizeProxies(w, b);
+    for (const auto& [b, m] : bullets) sweepBody(w, w.bodies[b], m);
 }
 
 }  // namespace i2d::detail

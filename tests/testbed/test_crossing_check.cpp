@@ -88,14 +88,14 @@ int tunnelledAlong(const std::vector<float>& xs) {
 }
 
 TEST(CrossingCheck, CountsPassagesNotPenetration) {
-    EXPECT_EQ(tunnelledAlong({-1.0f, 1.0f}), 1);                // through the wall in one step
-    EXPECT_EQ(tunnelledAlong({-1.0f, 0.05f, 0.5f}), 1);         // into it, then out of the far face
-    EXPECT_EQ(tunnelledAlong({-1.0f, 0.004f, -0.2f}), 0);       // sunk 4 mm, back out the near face
-    EXPECT_EQ(tunnelledAlong({-1.0f, -0.5f, -0.1f}), 0);        // never reached it
-    EXPECT_EQ(tunnelledAlong({4.0f, 5.5f}), 1);                 // across the segment, 0.5 m past it
-    EXPECT_EQ(tunnelledAlong({4.0f, 5.01f, 4.9f}), 0);          // 0.01 m past, then back: penetration
-    EXPECT_EQ(tunnelledAlong({4.0f, 5.01f, 5.03f}), 1);         // then 0.03 m past: more than kBeyond
-    EXPECT_EQ(tunnelledAlong({-1.0f, 1.0f, 3.0f, 6.0f}), 1);    // counted once per body
+    EXPECT_EQ(tunnelledAlong({-1.0f, 1.0f}), 1);              // through the wall in one step
+    EXPECT_EQ(tunnelledAlong({-1.0f, 0.05f, 0.5f}), 1);       // into it, then out of the far face
+    EXPECT_EQ(tunnelledAlong({-1.0f, 0.004f, -0.2f}), 0);     // sunk 4 mm, back out the near face
+    EXPECT_EQ(tunnelledAlong({-1.0f, -0.5f, -0.1f}), 0);      // never reached it
+    EXPECT_EQ(tunnelledAlong({4.0f, 5.5f}), 1);               // across the segment, 0.5 m past it
+    EXPECT_EQ(tunnelledAlong({4.0f, 5.01f, 4.9f}), 0);        // 0.01 m past, then back: penetration
+    EXPECT_EQ(tunnelledAlong({4.0f, 5.01f, 5.03f}), 1);       // then 0.03 m past: more than kBeyond
+    EXPECT_EQ(tunnelledAlong({-1.0f, 1.0f, 3.0f, 6.0f}), 1);  // counted once per body
 }
 
 TEST(CrossingCheck, ChainsCountOnlyFromTheirCollidingSide) {

@@ -247,6 +247,7 @@ struct Profile {
     float impacts = 0.0f;
     float solve = 0.0f;
     float continuous = 0.0f;  ///< continuous collision and bounding-box refresh
+    float sweeps = 0.0f;      ///< continuous collision alone (part of `continuous`)
     float sleep = 0.0f;
 };
 
