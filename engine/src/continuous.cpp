@@ -133,14 +133,14 @@ struct Mover {
     float turnBound = 0.0f;  ///< |Δθ| bound (rad)
 };
 
-/// The motion of an awake body over the step, or nothing when every point of
-/// it moved less than the speculative distance (a surface it could reach was
-/// then within the speculative distance at the step's start and has a
-/// contact).
 /// |Δθ| ≤ (π/2)·|sin Δθ| while the turn is under a quarter: a bound
 /// without atan2 for the many bodies that are not fast.
 float turnBoundOf(Rot dq) { return dq.c >= 0.0f ? 1.5707964f * std::abs(dq.s) : 3.1415927f; }
 
+/// The motion of an awake body over the step, or false when every point of
+/// it moved less than the speculative distance (a surface it could reach was
+/// then within the speculative distance at the step's start and has a
+/// contact).
 bool makeMover(const WorldState& w, const Body& body, const BodyState& s, Mover& m) {
     // A body whose points moved less than the speculative distance, both in
     // the solver and in the impact stage's shift, met every surface it could
