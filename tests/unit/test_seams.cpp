@@ -132,4 +132,30 @@ TEST(Seams, RealStepsStillCount) {
     EXPECT_NEAR(world.position(box).x, -0.3f, 0.01f);
 }
 
+// At a convex corner shared by two static segments (the floor bends down by
+// 20° at x = 0), the vertex normals between the two faces are real and are
+// kept: a circle sliding over the corner at 1 m/s stays on the surface, its
+// centre never nearer the corner than its radius less the contact's 0.005 m
+// slop (were the corner's contacts dropped, it would sink into the bend).
+TEST(Seams, ConvexCornersKeepTheirVertexNormals) {
+    WorldSettings s;
+    s.enableSleep = false;
+    World world(s);
+    BodyId ground = world.createBody({});
+    const float a = 20.0f * 3.14159265f / 180.0f;
+    world.createSegmentShape(ground, {.friction = 0.0f}, {{-5.0f, 0.0f}, {0.0f, 0.0f}});
+    world.createSegmentShape(ground, {.friction = 0.0f}, {{0.0f, 0.0f}, {5.0f * std::cos(a), -5.0f * std::sin(a)}});
+    const float r = 0.25f;
+    BodyId ball = world.createBody(
+        {.type = BodyType::dynamic_body, .position = {-1.0f, r}, .linearVelocity = {1.0f, 0.0f}});
+    world.createCircleShape(ball, {.friction = 0.0f}, {{0.0f, 0.0f}, r});
+    float nearest = 1.0e30f;
+    for (int i = 0; i < 120; ++i) {
+        world.step(1.0f / 60.0f);
+        nearest = std::min(nearest, length(world.position(ball)));
+    }
+    EXPECT_GT(nearest, r - 0.005f);
+    EXPECT_GT(world.position(ball).x, 0.5f);  // it went over the corner
+}
+
 }  // namespace
