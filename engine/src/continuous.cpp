@@ -31,6 +31,12 @@
 // (Catto, 2025, Box2D v3.1, solver.c, the continuous query); the chord cast
 // and the removal of the approach speed are this engine's.
 //
+// A hit is ignored when the shape only reaches the other one along its
+// surface (onto the next segment of a floor: its centroid does not enter the
+// other shape, it moves towards it by no more than the slop and ends the step
+// overlapping it by no more than the speculative distance); stopping there
+// stalled sliding bodies at every joint.
+//
 // The sweep runs from the body's pose at the step's start: before the
 // solver's motion, or before the impact stage's time-of-impact shift when
 // that moved the body (Body::startCenter), so no part of the step's motion
