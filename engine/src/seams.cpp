@@ -30,6 +30,9 @@
 // A chain's segment (World::createChain) keeps its neighbours' far points
 // (ghost vertices) and applies the vertex rule with them, whatever its body,
 // and collides on its right side only.
+// A two-sided segment (any body) pushes a body only towards the side its
+// centroid is on: a manifold whose normal points across the line, for a body
+// whose centroid projects onto the segment, is dropped.
 // Only static shapes that would collide with the moving shape count as
 // neighbours, and only polygons and segments (a static circle or capsule
 // has no face to continue a floor). Cost: a broadphase query of a
@@ -211,10 +214,33 @@ void applyChainRule(const WorldState& w, const Shape& chain, const Shape& moving
 
 }  // namespace
 
+/// A two-sided segment pushes a body towards the side its centroid is on,
+/// never across its line: when the centroid projects onto the segment and
+/// the normal points to the other side (a thin body straddling the segment,
+/// whose own face won the separating axis test), the manifold is dropped.
+/// Without this, a sliver stopped across a segment by continuous collision
+/// was pushed through it at less than the speculative distance per step.
+void keepSegmentSide(const WorldState& w, const Shape& segment, const Shape& other, Vec2 n, Manifold& m) {
+    const Transform& xf = w.bodies[segment.body].xf;
+    const Vec2 p1 = transformPoint(xf, segment.geometry.segment.point1);
+    const Vec2 e = transformPoint(xf, segment.geometry.segment.point2) - p1;
+    const Vec2 c = transformPoint(w.bodies[other.body].xf, localCentroid(other)) - p1;
+    const float t = dot(c, e);
+    if (t < 0.0f || t > dot(e, e)) return;
+    const float side = cross(e, c);  // > 0: the centroid is on the left
+    if (side == 0.0f) return;
+    if ((side > 0.0f ? 1.0f : -1.0f) * cross(e, n) < 0.0f) m.pointCount = 0;
+}
+
 void dropSeamGhosts(const WorldState& w, const Contact& c, Manifold& m) {
     if (m.pointCount == 0 || c.isSensor) return;
     const Shape& shapeA = w.shapes[c.shapeA];
     const Shape& shapeB = w.shapes[c.shapeB];
+    // Segments come first in a contact (contact.cpp), and two never collide.
+    if (shapeA.type == ShapeType::segment && !shapeA.chainSegment) {
+        keepSegmentSide(w, shapeA, shapeB, m.normal, m);
+        if (m.pointCount == 0) return;
+    }
     if (shapeA.chainSegment || shapeB.chainSegment) {
         // Two segments never collide, so one side is the chain's.
         const bool aChain = shapeA.chainSegment;
