@@ -6,6 +6,7 @@
 #include <cmath>
 #include <limits>
 #include <string>
+#include <utility>
 #include <vector>
 
 #include <impulse2d/impulse2d.hpp>
@@ -181,6 +182,31 @@ TEST(Chain, NothingSnagsOrJumpsAtJoints) {
                     EXPECT_GT(r.minSpeedX, 0.99f * speed) << what;
                 }
             }
+}
+
+// Debug draw: each chain segment, and a tick from its middle towards the side
+// it collides on (its right side).
+struct SegmentRecorder : DebugDraw {
+    std::vector<std::pair<Vec2, Vec2>> segments;
+    void drawSolidPolygon(const Transform&, const Vec2*, int, float, Color) override {}
+    void drawSolidCircle(Vec2, float, Vec2, Color) override {}
+    void drawSolidCapsule(Vec2, Vec2, float, Color) override {}
+    void drawSegment(Vec2 p1, Vec2 p2, Color) override { segments.emplace_back(p1, p2); }
+    void drawPoint(Vec2, float, Color) override {}
+};
+
+TEST(Chain, DebugDrawShowsTheCollidingSide) {
+    World world;
+    BodyId ground = world.createBody({});
+    const std::vector<Vec2> points = {{2, 0}, {0, 0}, {-2, 0}};  // right to left: its right side is up
+    world.createChain(ground, {.points = points});
+    SegmentRecorder rec;
+    world.draw(rec);
+    ASSERT_EQ(rec.segments.size(), 4u);  // two segments, two ticks
+    int ticksUp = 0;
+    for (const auto& [a, b] : rec.segments)
+        if (a.y == 0.0f && b.y > 0.0f) ++ticksUp;
+    EXPECT_EQ(ticksUp, 2);
 }
 
 }  // namespace
