@@ -5,14 +5,14 @@
 # build-fuzz/artifacts/NAME-crash-* (copy it into tests/fuzz/corpus/NAME once
 # fixed, so that the default test run replays it).
 # Usage: scripts/fuzz.sh [SECONDS_PER_TARGET (default 60)] [TARGET...]
-#        targets: scene_loader hull collide impact world (default: all)
+#        targets: scene_loader hull collide impact world chain (default: all)
 set -euo pipefail
 cd "$(dirname "$0")/.."
 
 seconds=${1:-60}
 shift || true
 targets=("$@")
-[ ${#targets[@]} -gt 0 ] || targets=(scene_loader hull collide impact world)
+[ ${#targets[@]} -gt 0 ] || targets=(scene_loader hull collide impact world chain)
 
 cmake --preset fuzz >/dev/null
 cmake --build --preset fuzz >&2

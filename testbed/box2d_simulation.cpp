@@ -86,10 +86,14 @@ public:
         for (std::size_t i = 0; i < desc.joints.size(); ++i) createJoint(desc, desc.joints[i], i);
         describeDifferences(desc);
         if (anyTangentSpeed_) world_.SetContactListener(&tangentSpeed_);
+        keepDrives(desc);
     }
 
     EngineKind engine() const override { return EngineKind::box2d; }
-    void step(float dt) override { world_.Step(dt, settings_.velocityIterations, settings_.positionIterations); }
+    void step(float dt) override {
+        applyDrives();
+        world_.Step(dt, settings_.velocityIterations, settings_.positionIterations);
+    }
     int bodyCount() const override { return static_cast<int>(bodies_.size()); }
     int jointCount() const override { return world_.GetJointCount(); }
 
@@ -109,6 +113,11 @@ public:
             for (int i = 0; i < c->GetManifold()->pointCount; ++i) worst = std::max(worst, -wm.separations[i]);
         }
         return worst;
+    }
+
+    void driveX(int index, float vx) override {
+        b2Body* b = bodies_[static_cast<std::size_t>(index)];
+        b->SetLinearVelocity({vx, b->GetLinearVelocity().y});
     }
 
     BodySample sample(int index) const override {
@@ -153,6 +162,7 @@ private:
         bd.fixedRotation = b.def.fixedRotation;
         bd.awake = b.def.isAwake;
         bd.allowSleep = b.def.enableSleep;
+        bd.bullet = b.def.isBullet;
         b2Body* body = world_.CreateBody(&bd);
 
         // Mass properties as Impulse2D computes them (parallel-axis sum), so
@@ -165,7 +175,7 @@ private:
                 case i2d::ShapeType::circle: md = i2d::computeMass(s.circle, s.def.density); break;
                 case i2d::ShapeType::capsule: md = i2d::computeMass(s.capsule, s.def.density); break;
                 case i2d::ShapeType::polygon: md = i2d::computeMass(s.polygon, s.def.density); break;
-                case i2d::ShapeType::segment: break;
+                case i2d::ShapeType::segment: break;  // chains too
             }
             mass += md.mass;
             mx += double(md.mass) * md.center.x;
@@ -182,6 +192,28 @@ private:
             body->SetMassData(&md);
         }
         return body;
+    }
+
+    // A chain as b2ChainShape: one-sided on the same (right) side, with ghost
+    // vertices. Box2D 2.4.1's open chain needs a ghost at each end; the
+    // straight continuation is given, so its ends collide as a flat
+    // continuation where Impulse2D's are rounded corners.
+    void addChain(b2Body* body, const ShapeDesc& s, b2FixtureDef& fd) {
+        std::vector<b2Vec2> v;
+        v.reserve(s.chainPoints.size());
+        for (i2d::Vec2 p : s.chainPoints) v.push_back(toB2(p));
+        b2ChainShape chain;
+        const int n = static_cast<int>(v.size());
+        if (s.chainLoop) {
+            chain.CreateLoop(v.data(), n);
+        } else {
+            note("open chains: Box2D 2.4.1 needs ghost vertices at the ends; the straight continuations are given");
+            const b2Vec2 prev = 2.0f * v[0] - v[1], next = 2.0f * v[n - 1] - v[n - 2];
+            chain.CreateChain(v.data(), n, prev, next);
+        }
+        fd.density = 0.0f;
+        fd.shape = &chain;
+        body->CreateFixture(&fd);
     }
 
     void addShape(b2Body* body, const ShapeDesc& s, const i2d::WorldSettings& ws) {
@@ -202,6 +234,10 @@ private:
             s.def.filter.groupIndex > INT16_MAX)
             note("collision filters: Box2D 2.4.1 has 16 category bits and 16-bit groups; higher bits were dropped");
 
+        if (s.chain) {
+            addChain(body, s, fd);
+            return;
+        }
         switch (s.type) {
             case i2d::ShapeType::circle: {
                 b2CircleShape c;

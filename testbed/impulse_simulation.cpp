@@ -12,6 +12,7 @@ namespace {
 class ImpulseSimulation final : public Simulation {
 public:
     explicit ImpulseSimulation(const SceneDesc& desc) : scene_(buildScene(desc)) {
+        keepDrives(desc);
         // The world holds everything the simulation needs; the description's
         // bodies and joints are not kept (the Box2D backend keeps none either,
         // so memory figures compare the two engines, not the testbed).
@@ -20,10 +21,19 @@ public:
     }
 
     EngineKind engine() const override { return EngineKind::impulse2d; }
-    void step(float dt) override { stepScene(scene_, dt); }
+    void step(float dt) override {
+        applyDrives();
+        stepScene(scene_, dt);
+    }
     int bodyCount() const override { return static_cast<int>(scene_.bodies.size()); }
     int jointCount() const override { return scene_.world->jointCount(); }
     int touchingContactCount() const override { return scene_.world->contactCount(); }
+
+    void driveX(int index, float vx) override {
+        i2d::World& w = *scene_.world;
+        const i2d::BodyId id = scene_.bodies[static_cast<std::size_t>(index)];
+        w.setLinearVelocity(id, {vx, w.linearVelocity(id).y});
+    }
 
     BodySample sample(int index) const override {
         const i2d::World& w = *scene_.world;

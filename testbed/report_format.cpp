@@ -31,6 +31,9 @@ std::string reportToJson(const RunReport& r) {
     j["energy"] = {{"initial", r.energyInitial}, {"final", r.energyFinal}, {"max", r.energyMax}};
     j["nan"] = r.nan;
     j["displaced"] = r.displaced;
+    j["tunnelled"] = r.tunnelled;
+    j["snagged"] = r.snagged;
+    j["driven"] = {{"bodies", r.driven}, {"max_vertical_speed", r.drivenMaxVerticalSpeed}};
     j["joint_error"] = {{"max", r.jointErrorMax}, {"final", r.jointErrorFinal}};
     json named = json::object();
     for (const auto& n : r.named)
@@ -74,6 +77,9 @@ void printReportText(const RunReport& r, std::ostream& out) {
         << r.energyMax << " J\n";
     out << "  displaced (> 0.5 m) " << r.displaced << ", joint error max " << std::setprecision(5) << r.jointErrorMax
         << " m, final " << r.jointErrorFinal << " m\n"
+        << std::setprecision(3);
+    out << "  tunnelled " << r.tunnelled << ", snagged " << r.snagged << " of " << r.driven << " driven (largest |vy| "
+        << std::setprecision(4) << r.drivenMaxVerticalSpeed << " m/s)\n"
         << std::setprecision(3);
     if (r.error.metric != ErrorMetric::none)
         out << "  error: " << errorMetricName(r.error.metric) << " " << std::setprecision(5) << r.error.value << " "

@@ -5,12 +5,13 @@
 #include <chrono>
 #include <cmath>
 
+#include "crossing_check.hpp"
 #include "metrics.hpp"
 
 namespace tb {
 
 RunReport runScene(const SceneDesc& desc, long steps, EngineKind engine, const Box2DSettings& box2d,
-                   StepObserver* observer) {
+                   StepObserver* observer, bool checkCrossings) {
     std::unique_ptr<Simulation> sim = makeSimulation(desc, engine, box2d);
     RunReport rep;
     rep.scene = desc.name;
@@ -41,6 +42,8 @@ RunReport runScene(const SceneDesc& desc, long steps, EngineKind engine, const B
     rep.jointErrorMax = rep.jointErrorFinal = maxJointError(desc, *sim);
     ErrorTracker tracker(desc, errorMetricFor(desc.name));
     tracker.start(*sim);
+    CrossingCheck crossings(desc);
+    crossings.start(*sim);
 
     std::vector<double> ms;
     ms.reserve(static_cast<std::size_t>(steps));
@@ -68,6 +71,7 @@ RunReport runScene(const SceneDesc& desc, long steps, EngineKind engine, const B
         rep.jointErrorFinal = maxJointError(desc, *sim);
         rep.jointErrorMax = std::max(rep.jointErrorMax, rep.jointErrorFinal);
         tracker.observe(*sim, penetration, rep.jointErrorFinal);
+        if (checkCrossings) crossings.observe(*sim);
         for (std::size_t k = 0; k < named.size(); ++k) {
             BodySample s = sim->sample(named[k].second);
             RunReport::Named& nb = rep.named[k];
@@ -77,6 +81,10 @@ RunReport runScene(const SceneDesc& desc, long steps, EngineKind engine, const B
         }
     }
     rep.error = tracker.result(*sim);
+    rep.tunnelled = crossings.tunnelled();
+    rep.snagged = crossings.snagged();
+    rep.driven = crossings.driven();
+    rep.drivenMaxVerticalSpeed = crossings.drivenMaxVerticalSpeed();
     rep.contacts = sim->touchingContactCount();
     for (int i = 0; i < rep.bodies; ++i) {
         BodySample s = sim->sample(i);

@@ -31,12 +31,20 @@ struct ShapeDesc {
     i2d::Segment segment{};
     i2d::Polygon polygon{};  ///< built through makePolygon/makeBox from the file's data
     i2d::ShapeDef def{};
+    /// A chain ("type": "chain"): type is segment, and the chain's points
+    /// and loop flag are here (i2d::World::createChain; b2ChainShape).
+    bool chain = false;
+    std::vector<i2d::Vec2> chainPoints;
+    bool chainLoop = false;
 };
 
 struct BodyDesc {
     std::string name;  ///< empty when unnamed; named bodies are measured
     i2d::BodyDef def{};
     std::vector<ShapeDesc> shapes;
+    /// A scripted player ("drive_speed"): its horizontal velocity is set to
+    /// this (m/s) before every step, its vertical one left to the physics.
+    std::optional<float> driveSpeed;
 };
 
 /// Every joint definition, in the order of i2d::JointType (def.index() is the type).

@@ -40,6 +40,16 @@ Scene buildScene(const SceneDesc& desc) {
         for (std::size_t k = 0; k < b.shapes.size(); ++k) {
             const ShapeDesc& s = b.shapes[k];
             try {
+                if (s.chain) {
+                    world.createChain(id, {.points = s.chainPoints,
+                                           .isLoop = s.chainLoop,
+                                           .friction = s.def.friction,
+                                           .restitution = s.def.restitution,
+                                           .filter = s.def.filter,
+                                           .enableContactEvents = s.def.enableContactEvents,
+                                           .userData = s.def.userData});
+                    continue;
+                }
                 switch (s.type) {
                     case i2d::ShapeType::circle: world.createCircleShape(id, s.def, s.circle); break;
                     case i2d::ShapeType::capsule: world.createCapsuleShape(id, s.def, s.capsule); break;

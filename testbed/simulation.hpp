@@ -12,6 +12,7 @@
 
 #include <memory>
 #include <string>
+#include <utility>
 #include <vector>
 
 #include "scene.hpp"
@@ -50,11 +51,15 @@ public:
     virtual ~Simulation() = default;
 
     virtual EngineKind engine() const = 0;
-    /// Advance by dt seconds with the scene's (or the overridden) settings.
+    /// Advance by dt seconds with the scene's (or the overridden) settings;
+    /// the scene's driven bodies (BodyDesc::driveSpeed) are driven first.
     virtual void step(float dt) = 0;
     /// Bodies in scene order: sample(i) is desc.bodies[i].
     virtual int bodyCount() const = 0;
     virtual BodySample sample(int index) const = 0;
+    /// Set the horizontal velocity of the centre of mass (m/s), keeping the
+    /// vertical one (a scripted player, BodyDesc::driveSpeed).
+    virtual void driveX(int index, float vx) = 0;
     virtual int jointCount() const = 0;
     /// Contacts whose shapes touch (at least one manifold point).
     virtual int touchingContactCount() const = 0;
@@ -68,6 +73,16 @@ public:
 
 protected:
     std::vector<std::string> notes_;
+    /// The driven bodies: (index, horizontal speed), from the scene.
+    std::vector<std::pair<int, float>> drives_;
+
+    void keepDrives(const SceneDesc& desc) {
+        for (std::size_t i = 0; i < desc.bodies.size(); ++i)
+            if (desc.bodies[i].driveSpeed) drives_.emplace_back(static_cast<int>(i), *desc.bodies[i].driveSpeed);
+    }
+    void applyDrives() {
+        for (const auto& [index, speed] : drives_) driveX(index, speed);
+    }
 };
 
 /// Build `desc` in the given engine. Impulse2D takes desc.settings as they

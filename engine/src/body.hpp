@@ -37,11 +37,19 @@ struct Body {
     /// surface (continuous.cpp). Set by updateMass.
     float reach = -1.0f;
     std::uint32_t generation = 1;
+    /// The pose at the step's start, kept when a stage before the solver
+    /// moves the body (the impact stage's time-of-impact shift), so that
+    /// continuous collision sweeps the whole motion of the step; valid while
+    /// startStamp is the world's step stamp.
+    Vec2 startCenter{};
+    Rot startQ{};
+    std::uint32_t startStamp = 0;
     int awakeIndex = kNullIndex;   ///< position in IslandSet::awakeBodies
     int sleepIsland = kNullIndex;  ///< sleeping island this body belongs to
     int solverIndex = kNullIndex;  ///< index into the solver arrays during a step
     BodyType type = BodyType::static_body;
     bool fixedRotation = false;
+    bool isBullet = false;  ///< also swept against non-bullet dynamic bodies (continuous.cpp)
     bool awake = true;
     bool enableSleep = true;
     bool alive = false;
@@ -78,6 +86,15 @@ struct BodyIntegration {
     bool movedByForces = false;  ///< dynamic; kinematic bodies keep their velocity
 };
 static_assert(sizeof(BodyIntegration) == 28, "the size docs/architecture.md gives");
+
+/// Keeps the body's pose as the step's start (Body::startCenter) unless it
+/// was kept already in this step.
+inline void keepStepStart(Body& body, std::uint32_t stepStamp) {
+    if (body.startStamp == stepStamp) return;
+    body.startStamp = stepStamp;
+    body.startCenter = body.center;
+    body.startQ = body.xf.q;
+}
 
 /// Mass, centre of mass and rotational inertia from the body's shapes
 /// (parallel-axis sum); keeps the velocity of the centre of mass consistent

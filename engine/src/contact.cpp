@@ -10,6 +10,7 @@
 #include <cmath>
 
 #include "contact_persistence.hpp"
+#include "seams.hpp"
 #include "world_state.hpp"
 
 namespace i2d::detail {
@@ -40,15 +41,10 @@ float rollingRadius(const Shape& s) {
     return 0.0f;
 }
 
-Manifold computeManifold(const WorldState& w, const Contact& c) {
-    const Shape& sa = w.shapes[c.shapeA];
-    const Shape& sb = w.shapes[c.shapeB];
+/// The manifold of two shapes ordered for the function table.
+Manifold collideOrdered(const Shape& sa, const Transform& xa, const Shape& sb, const Transform& xb, float spec) {
     const ShapeGeometry& a = sa.geometry;
     const ShapeGeometry& b = sb.geometry;
-    const Transform& xa = w.bodies[c.bodyA].xf;
-    const Transform& xb = w.bodies[c.bodyB].xf;
-    // Sensors report overlap only: no speculative margin.
-    const float spec = c.isSensor ? 0.0f : w.settings.speculativeDistance;
     switch (sa.type) {
         case ShapeType::segment:
             switch (sb.type) {
@@ -103,6 +99,12 @@ void reportHit(WorldState& w, const Contact& ct) {
         {w.shapeHandle(ct.shapeA), w.shapeHandle(ct.shapeB), m.points[best].point, m.normal, fastest});
 }
 
+Manifold computeManifold(const WorldState& w, const Contact& c) {
+    // Sensors report overlap only: no speculative margin.
+    const float spec = c.isSensor ? 0.0f : w.settings.speculativeDistance;
+    return collideOrdered(w.shapes[c.shapeA], w.bodies[c.bodyA].xf, w.shapes[c.shapeB], w.bodies[c.bodyB].xf, spec);
+}
+
 bool updateContact(WorldState& w, int c) {
     Contact& ct = w.contacts[c];
     const Shape& a = w.shapes[ct.shapeA];
@@ -118,6 +120,8 @@ bool updateContact(WorldState& w, int c) {
     // callbacks see it like any other.
     const bool reused = ct.touching && reuseManifold(ct, bodyA, bodyB, w.settings.manifoldReuseDistance);
     Manifold m = reused ? ct.manifold : computeManifold(w, ct);
+    // Seam ghosts were dropped when a kept manifold was computed.
+    if (!reused) dropSeamGhosts(w, ct, m);
     // The game's pre-solve callback may switch a touching contact off for
     // this step (a one-way platform): it then has no points, no row, and
     // counts as not touching.
@@ -181,6 +185,14 @@ bool updateContact(WorldState& w, int c) {
 }
 
 }  // namespace
+
+Manifold collideShapes(const Shape& a, const Transform& xa, const Shape& b, const Transform& xb,
+                       float speculativeDistance) {
+    if (typeRank(a.type) >= typeRank(b.type)) return collideOrdered(a, xa, b, xb, speculativeDistance);
+    Manifold m = collideOrdered(b, xb, a, xa, speculativeDistance);
+    m.normal = -m.normal;
+    return m;
+}
 
 void updatePairs(WorldState& w) {
     w.broadPhase.findNewPairs(w.shapes, [&](int s, int other) {

@@ -13,6 +13,7 @@
 namespace i2d::detail {
 
 struct WorldState;
+struct Shape;
 
 /// An overlap deeper than this (m; ten times the linear slop) is not a
 /// resting contact but bodies created or pushed into each other: such
@@ -63,6 +64,11 @@ const ContactSurface* contactSurface(const WorldState& w, int c);
 /// Sets the surface of contact `c` from its two shapes (slots), starting the
 /// side array when they are the first to have one.
 void setContactSurface(WorldState& w, int c, int shapeA, int shapeB);
+
+/// The manifold of two shapes at the given poses, normal from a to b (the
+/// narrowphase without a contact; continuous.cpp measures overlaps with it).
+Manifold collideShapes(const Shape& a, const Transform& xa, const Shape& b, const Transform& xb,
+                       float speculativeDistance);
 
 /// Finds the new pairs among the shapes whose proxies moved (broad_phase.hpp)
 /// and creates a contact for each one that passes the filters.

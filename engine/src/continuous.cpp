@@ -1,4 +1,4 @@
-// Continuous collision of fast bodies against static shapes.
+// Continuous collision of fast bodies.
 //
 // A body that moves further in one step than the speculative distance can end
 // the step deep inside a static shape, or pass through a thin one: no contact
@@ -6,21 +6,53 @@
 // and none at its end (the body is already through). After the solver has
 // moved the bodies, each fast body's motion over the step is swept against
 // the static shapes near its path; if it would touch one, the body is put
-// back to the first time of impact along its sweep and keeps its velocity. The contact then
-// exists at the next step's start, closer than the speculative distance, and
-// the impact law and the solver stop the body at the surface. This is the
-// dynamic-versus-static scheme of Box2D v3 (which sweeps only from half the
-// body's thickness on; sweeping from the speculative distance also makes fast
-// impacts happen at the surface); dynamic-versus-dynamic pairs are not swept
-// (two fast bodies can still pass through each other).
+// back to the first time of impact along its sweep and keeps its velocity.
+// The contact then exists at the next step's start, closer than the
+// speculative distance, and the impact law and the solver stop the body at
+// the surface. Bullets (BodyDef::isBullet) are swept afterwards, against the
+// static shapes and against the dynamic bodies that are not bullets, at the
+// poses those have reached (so a bullet cannot pass a thin moving plank).
+// Two fast non-bullet bodies can still pass through each other.
 //
-// Time of impact by conservative advancement: with d(t) the distance between
-// the two surfaces at time t ∈ [0, 1] of the step and B a bound on how fast
-// any point of the moving shape travels (|Δc| + |Δθ|·r_max per step), d can
-// shrink by at most B·Δt, so advancing t by (d − target)/B never steps past
-// the first touch. Iterates until d is within the target band.
+// A shape that already touches a surface when the step begins (within the
+// target band of the sweep at t = 0) cannot be swept against it: the first
+// time of impact is 0, and putting the body back there would stall a body
+// sliding fast along the ground. Skipping the pair instead, as this stage
+// once did, let a body that touched a wall in one step go through it in the
+// next (a rotated or spinning box whose contact did not stop it). Such a pair
+// is probed instead: the chord of the shape's centroid over the step is cast
+// against the other shape, and if the centroid would enter it the body stops
+// with its centroid its smallest extent short of the surface, and the
+// centroid's approach speed is taken out. A body sliding along a surface, or
+// onto the next tile of a floor, never has its centroid enter it; a body
+// driving into a wall keeps its centroid in front, from where the contact
+// pushes it back out on the side it came from. Box2D v3 has the same need
+// and falls back to sweeping a small disc around the fast shape's centroid
+// (Catto, 2025, Box2D v3.1, solver.c, the continuous query); the chord cast
+// and the removal of the approach speed are this engine's.
+//
+// A hit is ignored when the shape only reaches the other one along its
+// surface (onto the next segment of a floor: its centroid does not enter the
+// other shape, it moves towards it by no more than the slop and ends the step
+// overlapping it by no more than the speculative distance); stopping there
+// stalled sliding bodies at every joint.
+//
+// The sweep runs from the body's pose at the step's start: before the
+// solver's motion, or before the impact stage's time-of-impact shift when
+// that moved the body (Body::startCenter), so no part of the step's motion
+// escapes it.
+//
+// Time of impact by conservative advancement (Mirtich, 1996, Impulse-based
+// dynamic simulation of rigid body systems; Catto, 2025, Box2D v3.1,
+// b2TimeOfImpact): with d(t) the distance between the two surfaces at time
+// t ∈ [0, 1] of the step and B a bound on how far any point of the moving
+// shape travels relative to the other over the step (|Δc| + |Δθ|·r_max),
+// d can shrink by at most B·Δt, so advancing t by (d − target)/B never steps
+// past the first touch.
 #include <algorithm>
 #include <cmath>
+#include <utility>
+#include <vector>
 
 #include "continuous.hpp"
 #include "impulse2d/collision.hpp"
@@ -45,79 +77,273 @@ struct Sweep {
 
 constexpr int kMaxAdvances = 30;
 
+/// What a sweep of one shape against one other found.
+struct Impact {
+    float t = 1.0f;               ///< first time of impact, 1 when none within the step
+    bool startsTouching = false;  ///< within the target band at t = 0
+    Vec2 normal{};                ///< at t, from the other core towards the moving one
+};
+
 // First time t ∈ (0, 1) at which the moving core comes within `target` of
-// the static core, or 1 when it does not within the step. A pair already
-// within the target band at t = 0 touches or overlaps: its contact holds it,
-// and sweeping it would stall a body sliding fast along the ground.
-float timeOfImpact(const ShapeCore& moving, const Sweep& sweep, float bound, const ShapeCore& fixed,
-                   const Transform& xfFixed, float target) {
-    const float tolerance = 0.25f * kLinearSlop;
-    const float radii = moving.radius + fixed.radius;
+// the other core (at its end-of-step pose), or 1 when it does not within the
+// step. `bound` is how far any point of the moving core can travel in the step.
+Impact timeOfImpact(const ShapeCore& moving, const Sweep& sweep, float bound, const ShapeCore& other,
+                    const Transform& xfOther, float target) {
+    const float tolerance = std::min(0.25f * kLinearSlop, 0.25f * target);
+    const float radii = moving.radius + other.radius;
     float t = 0.0f;
     for (int i = 0; i < kMaxAdvances; ++i) {
-        const DistanceResult r = shapeDistance(moving.points, moving.count, sweep.at(t), fixed.points, fixed.count,
-                                               xfFixed);
+        const DistanceResult r = shapeDistance(moving.points, moving.count, sweep.at(t), other.points, other.count,
+                                               xfOther);
         const float d = r.distance - radii;
-        if (d <= target + tolerance) return i == 0 ? 1.0f : t;
+        if (d <= target + tolerance)
+            return i == 0 ? Impact{1.0f, true, {}} : Impact{t, false, normalize(r.pointA - r.pointB)};
         t += (d - target) / bound;
-        if (t >= 1.0f) return 1.0f;
+        if (t >= 1.0f) return {};
     }
-    return t;  // still apart at t: stopping here is safe, if early
+    return {t, false, {}};  // still apart at t: stopping here is safe, if early
+}
+
+/// The centroid of a shape (its centre of mass; a segment's midpoint) and
+/// the smallest distance from it to the shape's surface.
+struct Centroid {
+    Vec2 point{};
+    float extent = 0.0f;
+};
+
+Centroid centroidOf(const Shape& shape, const ShapeCore& core) {
+    Centroid c;
+    if (const std::optional<MassData> md = shapeMass(shape)) {
+        c.point = md->center;  // of the rounded shape, where a polygon's centroid is its core's
+    } else {
+        for (int i = 0; i < core.count; ++i) c.point += core.points[i];
+        c.point *= 1.0f / static_cast<float>(core.count);
+    }
+    c.extent = core.radius;
+    if (core.count >= 3) {
+        // Polygon (counter-clockwise): the nearest edge's line.
+        float nearest = INFINITY;
+        for (int i = 0; i < core.count; ++i) {
+            const Vec2 a = core.points[i], e = core.points[(i + 1) % core.count] - a;
+            const float len = length(e);
+            if (len > 0.0f) nearest = std::min(nearest, cross(e, c.point - a) / len);
+        }
+        if (isFinite(nearest)) c.extent += std::max(nearest, 0.0f);
+    }
+    return c;
+}
+
+struct Mover {
+    Sweep sweep;
+    float bound = 0.0f;      ///< how far any core point can travel in the step (m)
+    float turnBound = 0.0f;  ///< |Δθ| bound (rad)
+};
+
+/// |Δθ| ≤ (π/2)·|sin Δθ| while the turn is under a quarter: a bound
+/// without atan2 for the many bodies that are not fast.
+float turnBoundOf(Rot dq) { return dq.c >= 0.0f ? 1.5707964f * std::abs(dq.s) : 3.1415927f; }
+
+/// The motion of an awake body over the step, or false when every point of
+/// it moved less than the speculative distance (a surface it could reach was
+/// then within the speculative distance at the step's start and has a
+/// contact).
+bool makeMover(const WorldState& w, const Body& body, const BodyState& s, Mover& m) {
+    // A body whose points moved less than the speculative distance, both in
+    // the solver and in the impact stage's shift, met every surface it could
+    // reach through a contact made at the step's start (a landing box whose
+    // impact shifted it onto the ground is not swept).
+    const float spec = w.settings.speculativeDistance;
+    const bool shifted = body.startStamp == w.stepStamp;
+    const Vec2 shiftedCenter = body.center - s.dp;
+    const Rot shift = shifted ? invMulRot(body.startQ, invMulRot(s.dq, body.xf.q)) : Rot{};
+    const float solverBound = length(s.dp) + turnBoundOf(s.dq) * body.reach;
+    const float shiftBound = shifted ? length(shiftedCenter - body.startCenter) + turnBoundOf(shift) * body.reach
+                                     : 0.0f;
+    if (solverBound <= spec && shiftBound <= spec) return false;
+    // Swept from the step's start: before the solver's motion (dp, dq), and
+    // before the impact stage's shift when that moved the body.
+    const Vec2 c0 = shifted ? body.startCenter : shiftedCenter;
+    const Rot dq = shifted ? invMulRot(body.startQ, body.xf.q) : s.dq;
+    const Vec2 dc = body.center - c0;
+    m.turnBound = turnBoundOf(dq);
+    m.bound = length(dc) + m.turnBound * body.reach;
+    const float dAngle = angleOf(dq);
+    m.sweep.localCenter = body.localCenter;
+    m.sweep.c0 = c0;
+    m.sweep.dc = dc;
+    m.sweep.dAngle = dAngle;
+    m.sweep.angle0 = angleOf(body.xf.q) - dAngle;
+    return true;
+}
+
+/// True when `point` lies behind a chain segment (on its left side).
+bool behindChain(const Shape& chain, const Transform& xf, Vec2 point) {
+    const Vec2 p1 = transformPoint(xf, chain.geometry.segment.point1);
+    const Vec2 p2 = transformPoint(xf, chain.geometry.segment.point2);
+    return cross(p2 - p1, point - p1) > 0.0f;
+}
+
+/// Where a body's sweep stops.
+struct Stop {
+    float t = 1.0f;
+    bool byProbe = false;  ///< a probe of a shape touching a static surface at the step's start
+    Vec2 normal{};         ///< the probe's normal at t
+};
+
+/// Where a point's chord over the step, from p0 to p1, enters the other
+/// shape: the fraction along it and the distance covered along the
+/// surface's normal over the whole step.
+struct Entry {
+    float fraction = 1.0f;
+    float across = 0.0f;
+    Vec2 normal{};  ///< world
+};
+
+std::optional<Entry> chordEntry(Vec2 p0, Vec2 p1, const Shape& other, const Transform& xfOther) {
+    RayCastInput ray;
+    ray.origin = invTransformPoint(xfOther, p0);
+    ray.translation = invRotate(xfOther.q, p1 - p0);
+    const std::optional<RayHit> hit = shapeRayCast(other, ray);
+    if (!hit) return std::nullopt;
+    return Entry{hit->fraction, std::abs(dot(ray.translation, hit->normal)), rotate(xfOther.q, hit->normal)};
+}
+
+/// A hit that needs no stop: the shape reaches the other one along its
+/// surface (onto the next segment of a floor, the next tile) rather than
+/// into it. Its centroid's chord does not enter the other shape, it moved
+/// towards it by no more than the slop, and at the step's end it overlaps it
+/// by no more than the speculative distance, which the contact made at the
+/// next step's start resolves. Stopping such a body
+/// at the first touch stalled it at every joint of a floor it slid along.
+/// (Box2D v3 skips fast motion parallel to a chain segment the same way:
+/// Catto, 2025, Box2D v3.1, solver.c.)
+bool grazes(const Shape& shape, const ShapeCore& core, const Mover& m, const Shape& other, const Transform& xfOther,
+            float speculativeDistance) {
+    const Centroid c = centroidOf(shape, core);
+    const Transform xf1 = m.sweep.at(1.0f);
+    if (chordEntry(transformPoint(m.sweep.at(0.0f), c.point), transformPoint(xf1, c.point), other, xfOther))
+        return false;
+    const Manifold end = collideShapes(shape, xf1, other, xfOther, 0.0f);
+    // Along the surface: the step's motion towards it (the normal points
+    // from the moving shape to the other) is within the slop.
+    if (end.pointCount > 0 && dot(m.sweep.dc, end.normal) > kLinearSlop) return false;
+    for (int i = 0; i < end.pointCount; ++i)
+        if (end.points[i].separation < -speculativeDistance) return false;
+    return true;
+}
+
+/// The shape's centroid must not enter the other shape. Its chord over the
+/// step (its exact path for a body of one shape, whose centroid is the
+/// centre of mass) is cast against the other shape; on a hit the body stops
+/// with its centroid its smallest extent before the surface along the
+/// normal (or at the start, if it is nearer), so the contact pushes it back
+/// on the side it came from. A body sliding along the surface, or across to
+/// the next tile of a floor, never has its centroid enter it.
+void probeCentroid(const Shape& shape, const ShapeCore& core, const Mover& m, const Shape& other,
+                   const Transform& xfOther, Stop& stop) {
+    const Centroid c = centroidOf(shape, core);
+    const std::optional<Entry> e = chordEntry(transformPoint(m.sweep.at(0.0f), c.point),
+                                              transformPoint(m.sweep.at(1.0f), c.point), other, xfOther);
+    if (!e) return;
+    const float t = e->across > 0.0f ? std::max(0.0f, e->fraction - c.extent / e->across) : 0.0f;
+    if (t < stop.t) stop = {t, true, e->normal};
+}
+
+/// Sweeps one shape of the moving body against one other shape; moves the stop earlier.
+void sweepPair(const Shape& shape, const ShapeCore& core, const Mover& m, const Shape& other, const Transform& xfOther,
+               float speculativeDistance, Stop& stop) {
+    const ShapeCore otherCore = shapeCore(other);
+    const Impact hit = timeOfImpact(core, m.sweep, m.bound, otherCore, xfOther, kLinearSlop);
+    if (!hit.startsTouching) {
+        if (hit.t < stop.t && !grazes(shape, core, m, other, xfOther, speculativeDistance)) stop = {hit.t, false, {}};
+        return;
+    }
+    // Already touching: the contact keeps the part that touches; the body's
+    // centroid is kept from entering the other shape.
+    probeCentroid(shape, core, m, other, xfOther, stop);
+}
+
+/// Sweeps the body against the static shapes, and, for a bullet, against the
+/// shapes of dynamic bodies that are not bullets; moves it back to the first
+/// time of impact.
+void sweepBody(WorldState& w, Body& body, const Mover& m) {
+    const Transform xf0 = m.sweep.at(0.0f), xf1 = body.xf;
+    Stop stop;
+    for (int sh : bodyShapes(w.shapes, body)) {
+        const Shape& shape = w.shapes[sh];
+        if (shape.isSensor) continue;
+        const ShapeCore core = shapeCore(shape);
+        // The boxes at both ends, grown by how far the turn can carry a
+        // point off the straight path between them (|Δθ|·r).
+        AABB swept = unionOf(shapeAABB(shape, xf0), shapeAABB(shape, xf1));
+        const float arc = m.turnBound * body.reach;
+        swept.lower -= Vec2{arc, arc};
+        swept.upper += Vec2{arc, arc};
+        auto visit = [&](int other) {
+            const Shape& o = w.shapes[other];
+            if (o.isSensor || !shouldCollide(shape.filter, o.filter)) return true;
+            const Body& ob = w.bodies[o.body];
+            if (o.body == shape.body) return true;
+            if (!o.inStaticTree && (ob.type != BodyType::dynamic_body || ob.isBullet)) return true;
+            if (jointPreventsCollision(w, shape.body, o.body)) return true;
+            if (o.chainSegment && behindChain(o, ob.xf, transformPoint(xf0, centroidOf(shape, core).point)))
+                return true;  // one-sided: a body coming from behind passes
+            // The game's filters hold here too: a pair its custom filter
+            // refuses never collides, and a pair its pre-solve callback
+            // switches off (a one-way platform passed from below) is not
+            // swept, judged on the manifold at the step's end pose, grown by
+            // the sweep's bound so that there is one.
+            if (w.customFilter && !w.customFilter(w.shapeHandle(sh), w.shapeHandle(other))) return true;
+            if (w.preSolve) {
+                const Manifold at = collideShapes(shape, xf1, o, ob.xf, m.bound + w.settings.speculativeDistance);
+                if (at.pointCount > 0 && !w.preSolve(w.shapeHandle(sh), w.shapeHandle(other), at)) return true;
+            }
+            Stop pair;
+            sweepPair(shape, core, m, o, ob.xf, w.settings.speculativeDistance, pair);
+            pair.byProbe = pair.byProbe && o.inStaticTree;  // a dynamic body takes its momentum through the contact
+            if (pair.t < stop.t) stop = pair;
+            return true;
+        };
+        w.broadPhase.staticTree.query(swept, visit);
+        if (body.isBullet) w.broadPhase.movingTree.query(swept, visit);
+    }
+    if (stop.t >= 1.0f) return;
+    const Transform xf = m.sweep.at(stop.t);
+    body.xf = xf;
+    body.center = transformPoint(xf, body.localCenter);
+    // A body stopped by a probe is driving into a static surface it already
+    // touches, and its contact did not stop it (one contact point, say,
+    // about which the body turned). Kept, that velocity would be put back
+    // again in every step and freeze the body where it is: the centroid's
+    // approach speed is taken out, as an inelastic impact of the centroid
+    // with the static surface would (the surface takes the momentum).
+    if (stop.byProbe) {
+        const float approach = dot(body.v, stop.normal);
+        if (approach < 0.0f) body.v -= approach * stop.normal;
+    }
 }
 
 }  // namespace
 
 void solveContinuous(WorldState& w) {
-    const float target = kLinearSlop;
+    // Non-bullets first: the bullets then meet them where they ended the step.
+    std::vector<std::pair<int, Mover>> bullets;  // allocates only in a step with a fast bullet
     for (std::size_t i = 0; i < w.solver.stateBodies.size(); ++i) {
         Body& body = w.bodies[w.solver.stateBodies[i]];
         if (body.type != BodyType::dynamic_body || body.reach < 0.0f) continue;
-        const BodyState& s = w.solver.states[i];
-        // |Δθ| ≤ (π/2)·|sin Δθ| while the turn is under a quarter: a bound
-        // without atan2 for the many bodies that are not fast.
-        const float turnBound = s.dq.c >= 0.0f ? 1.5707964f * std::abs(s.dq.s) : 3.1415927f;
-        const float bound = length(s.dp) + turnBound * body.reach;
-        // A body moving less than the speculative distance always meets a
-        // surface through a contact made at the step's start. Beyond it, it
-        // could end the step deep inside (or past) a static shape: swept.
-        if (bound <= w.settings.speculativeDistance) continue;
-
-        const float dAngle = angleOf(s.dq);
-        Sweep sweep;
-        sweep.localCenter = body.localCenter;
-        sweep.c0 = body.center - s.dp;
-        sweep.dc = s.dp;
-        const float angle1 = angleOf(body.xf.q);
-        sweep.dAngle = dAngle;
-        sweep.angle0 = angle1 - dAngle;
-
-        const Transform xf0 = sweep.at(0.0f), xf1 = body.xf;
-        float tMin = 1.0f;
-        for (int sh : bodyShapes(w.shapes, body)) {
-            const Shape& shape = w.shapes[sh];
-            if (shape.isSensor) continue;
-            const ShapeCore core = shapeCore(shape);
-            // The boxes at both ends, grown by how far the turn can carry a
-            // point off the straight path between them (|Δθ|·r).
-            AABB swept = unionOf(shapeAABB(shape, xf0), shapeAABB(shape, xf1));
-            const float arc = turnBound * body.reach;
-            swept.lower -= Vec2{arc, arc};
-            swept.upper += Vec2{arc, arc};
-            w.broadPhase.staticTree.query(swept, [&](int other) {
-                const Shape& o = w.shapes[other];
-                if (o.isSensor || !shouldCollide(shape.filter, o.filter)) return true;
-                if (jointPreventsCollision(w, shape.body, o.body)) return true;
-                const float t = timeOfImpact(core, sweep, bound, shapeCore(o), w.bodies[o.body].xf, target);
-                tMin = std::min(tMin, t);
-                return true;
-            });
-        }
-        if (tMin < 1.0f) {
-            const Transform xf = sweep.at(tMin);
-            body.xf = xf;
-            body.center = transformPoint(xf, body.localCenter);
-        }
+        Mover m;
+        if (!makeMover(w, body, w.solver.states[i], m)) continue;
+        if (body.isBullet)
+            bullets.emplace_back(w.solver.stateBodies[i], m);
+        else
+            sweepBody(w, body, m);
     }
+    if (bullets.empty()) return;
+    // The bullets find the dynamic bodies through their boxes in the tree,
+    // which must hold where those bodies ended the step (a plank just hit
+    // moves fast).
+    for (int b : w.islands.awakeBodies) synchronizeProxies(w, b);
+    for (const auto& [b, m] : bullets) sweepBody(w, w.bodies[b], m);
 }
 
 }  // namespace i2d::detail

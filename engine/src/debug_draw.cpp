@@ -1,5 +1,7 @@
 // World::draw: hands every shape, joint and (optionally) AABB and contact to
 // a DebugDraw implementation, in world coordinates.
+#include <algorithm>
+
 #include "impulse2d/world.hpp"
 #include "world_state.hpp"
 
@@ -49,10 +51,19 @@ void World::draw(DebugDraw& dd) const {
                     dd.drawSolidPolygon(b.xf, sh.geometry.polygon.vertices, sh.geometry.polygon.count,
                                         sh.geometry.polygon.radius, c);
                     break;
-                case ShapeType::segment:
-                    dd.drawSegment(transformPoint(b.xf, sh.geometry.segment.point1),
-                                   transformPoint(b.xf, sh.geometry.segment.point2), c);
+                case ShapeType::segment: {
+                    const Vec2 p1 = transformPoint(b.xf, sh.geometry.segment.point1);
+                    const Vec2 p2 = transformPoint(b.xf, sh.geometry.segment.point2);
+                    dd.drawSegment(p1, p2, c);
+                    if (sh.chainSegment) {
+                        // A chain collides on its right side: a tick from the
+                        // middle towards it, a fifth of the segment (≤ 0.2 m).
+                        const Vec2 mid = 0.5f * (p1 + p2);
+                        const float tick = std::min(0.2f * length(p2 - p1), 0.2f);
+                        dd.drawSegment(mid, mid + tick * rightPerp(normalize(p2 - p1)), c);
+                    }
                     break;
+                }
             }
         }
     }

@@ -110,11 +110,13 @@ void resolveImpacts(WorldState& w, float dt) {
             float tHit = approach < 0.0f ? std::min(gap / -approach, dt) : 0.0f;
             if (tHit > 0.0f) {
                 if (bMoves) {
+                    keepStepStart(B, w.stepStamp);
                     B.center += tHit * (vB0 - B.v);
                     B.xf.q = integrateRotation(B.xf.q, tHit * (wB0 - B.w));
                     B.xf.p = B.center - rotate(B.xf.q, B.localCenter);
                 }
                 if (aMoves) {
+                    keepStepStart(A, w.stepStamp);
                     A.center += tHit * (vA0 - A.v);
                     A.xf.q = integrateRotation(A.xf.q, tHit * (wA0 - A.w));
                     A.xf.p = A.center - rotate(A.xf.q, A.localCenter);

@@ -37,6 +37,11 @@ struct Shape {
     int proxy = DynamicTree::kNull;
     std::uint32_t generation = 1;
     ShapeType type = ShapeType::circle;
+    /// A chain's segment (ShapeType::segment): one-sided, with the ghost
+    /// vertices of its neighbours in the body frame (equal to its own end
+    /// point where it has none). seams.cpp applies both.
+    Vec2 ghost1{}, ghost2{};
+    bool chainSegment = false;
     bool isSensor = false;
     bool enableContactEvents = true;
     bool enableSensorEvents = true;

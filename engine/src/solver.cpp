@@ -446,6 +446,7 @@ void stepWorld(WorldState& w, float dt) {
 
     t = Clock::now();
     if (w.settings.enableContinuous) solveContinuous(w);
+    profile.sweeps = msSince(t);
     for (int b : w.islands.awakeBodies) synchronizeProxies(w, b);
     profile.continuous = msSince(t);
 

@@ -35,6 +35,7 @@ BodyId World::createBody(const BodyDef& def) {
     body.angularDamping = def.angularDamping;
     body.gravityScale = def.gravityScale;
     body.fixedRotation = def.fixedRotation;
+    body.isBullet = def.isBullet;
     body.enableSleep = def.enableSleep;
     body.userData = def.userData;
     if (def.type != BodyType::static_body) {
@@ -339,6 +340,11 @@ void World::setFixedRotation(BodyId id, bool flag) {
     body.fixedRotation = flag;
     if (flag) body.w = 0.0f;
     detail::updateMass(state(), b);
+}
+bool World::isBullet(BodyId id) const { return state().bodies[state().bodyIndex(id)].isBullet; }
+void World::setBullet(BodyId id, bool flag) {
+    state().checkUnlocked();
+    state().bodies[state().bodyIndex(id)].isBullet = flag;
 }
 std::uintptr_t World::userData(BodyId id) const { return state().bodies[state().bodyIndex(id)].userData; }
 void World::setUserData(BodyId id, std::uintptr_t data) { state().bodies[state().bodyIndex(id)].userData = data; }

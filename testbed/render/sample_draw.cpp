@@ -39,6 +39,19 @@ void drawSimulation(i2d::DebugDraw& dd, const SceneDesc& desc, const Simulation&
         for (const ShapeDesc& shape : body.shapes) {
             i2d::Color c = colour ? *colour : bodyColour(body, s);
             if (shape.def.isSensor) c.a = 0.3f;
+            if (shape.chain) {
+                const std::size_t n = shape.chainPoints.size();
+                for (std::size_t k = 0; k + 1 < n + (shape.chainLoop ? 1 : 0); ++k) {
+                    const i2d::Vec2 p1 = i2d::transformPoint(xf, shape.chainPoints[k]);
+                    const i2d::Vec2 p2 = i2d::transformPoint(xf, shape.chainPoints[(k + 1) % n]);
+                    dd.drawSegment(p1, p2, c);
+                    // The colliding (right) side, as the engine's debug draw shows it.
+                    const i2d::Vec2 mid = 0.5f * (p1 + p2);
+                    const float tick = std::min(0.2f * i2d::length(p2 - p1), 0.2f);
+                    dd.drawSegment(mid, mid + tick * i2d::rightPerp(i2d::normalize(p2 - p1)), c);
+                }
+                continue;
+            }
             switch (shape.type) {
                 case i2d::ShapeType::circle:
                     dd.drawSolidCircle(i2d::transformPoint(xf, shape.circle.center), shape.circle.radius,

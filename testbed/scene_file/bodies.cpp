@@ -58,6 +58,27 @@ void parsePolygon(Obj& o, ShapeDesc& s) {
     s.polygon = *poly;
 }
 
+// A chain: its points and whether it loops, checked by the engine's own
+// rules (at least 2 points, 3 for a loop; no coincident points; no fold,
+// crossing or touch) so that both engines get a chain they can build.
+void parseChain(Obj& o, ShapeDesc& s) {
+    o.allow({"points", "loop"});
+    o.checkUnknown();
+    const json& pts = o.get("points");
+    Loc pl = o.at("points");
+    if (!pts.is_array()) fail(pl, "expected an array of [x, y] points, got " + typeName(pts));
+    for (std::size_t i = 0; i < pts.size(); ++i) s.chainPoints.push_back(Obj::vec2(pts[i], pl.at(i), kMaxCoordinate));
+    s.chainLoop = o.boolean("loop", false);
+    s.chain = true;
+    s.type = i2d::ShapeType::segment;
+    try {
+        i2d::World check;
+        check.createChain(check.createBody({}), {.points = s.chainPoints, .isLoop = s.chainLoop});
+    } catch (const i2d::Error& e) {
+        fail(pl, e.what());
+    }
+}
+
 // "box" is the format's shorthand for a rectangle, built as a polygon.
 void parseBox(Obj& o, ShapeDesc& s) {
     o.allow({"hx", "hy", "center", "angle", "radius"});
@@ -92,6 +113,8 @@ ShapeDesc parseShape(const json& j, const Loc& loc) {
     if (type == "box") {
         s.type = i2d::ShapeType::polygon;
         parseBox(o, s);
+    } else if (type == "chain") {
+        parseChain(o, s);
     } else if (std::optional<i2d::ShapeType> t = enumFromName<i2d::ShapeType>(type)) {
         s.type = *t;
         switch (*t) {
@@ -102,13 +125,14 @@ ShapeDesc parseShape(const json& j, const Loc& loc) {
         }
     } else {
         fail(o.at("type"), "unknown shape type \"" + type + "\" (expected " +
-                               enumNameList<i2d::ShapeType>("", ", ", ", ") + " or box)");
+                               enumNameList<i2d::ShapeType>("", ", ", ", ") + ", box or chain)");
     }
     s.def.density = o.f("density", s.def.density, {0, kMaxDensity});
     s.def.friction = o.f("friction", s.def.friction, {0, kMaxFriction});
     s.def.restitution = o.f("restitution", s.def.restitution, {0, 1});
     if (o.has("filter")) s.def.filter = parseFilter(o.get("filter"), o.at("filter"));
     s.def.isSensor = o.boolean("sensor", false);
+    if (s.chain && s.def.isSensor) fail(o.at("sensor"), "a chain cannot be a sensor");
     s.def.enableContactEvents = o.boolean("enable_contact_events", s.def.enableContactEvents);
     s.def.enableSensorEvents = o.boolean("enable_sensor_events", s.def.enableSensorEvents);
     s.def.enableHitEvents = o.boolean("enable_hit_events", s.def.enableHitEvents);
@@ -122,7 +146,7 @@ ShapeDesc parseShape(const json& j, const Loc& loc) {
 BodyDesc parseBody(const json& j, const Loc& loc, bool isTemplate) {
     Obj o(j, loc,
           {"comment", "type", "angle", "linear_velocity", "angular_velocity", "linear_damping", "angular_damping",
-           "gravity_scale", "fixed_rotation", "awake", "enable_sleep", "shapes"});
+           "gravity_scale", "fixed_rotation", "awake", "enable_sleep", "bullet", "drive_speed", "shapes"});
     if (!isTemplate) o.allow({"name", "position"});
     if (isTemplate) {
         for (const char* k : {"name", "position"})
@@ -146,6 +170,11 @@ BodyDesc parseBody(const json& j, const Loc& loc, bool isTemplate) {
     b.def.fixedRotation = o.boolean("fixed_rotation", false);
     b.def.isAwake = o.boolean("awake", true);
     b.def.enableSleep = o.boolean("enable_sleep", true);
+    b.def.isBullet = o.boolean("bullet", false);
+    if (o.has("drive_speed")) {
+        b.driveSpeed = o.f("drive_speed", 0.0f, {-kMaxSpeed, kMaxSpeed});
+        if (b.def.type != i2d::BodyType::dynamic_body) fail(o.at("drive_speed"), "only a dynamic body can be driven");
+    }
     if (o.has("shapes")) {
         const json& sh = o.get("shapes");
         Loc sl = o.at("shapes");

@@ -258,7 +258,7 @@ tb::RunReport runPoint(const tb::SceneDesc& base, const Point& p, long steps) {
         desc.settings.contactHertz *= static_cast<float>(p.stiffness);
         desc.settings.jointHertz *= static_cast<float>(p.stiffness);
     }
-    return tb::runScene(desc, steps, p.engine, b2);
+    return tb::runScene(desc, steps, p.engine, b2, nullptr, false);
 }
 
 double median(std::vector<double> v) {
@@ -837,7 +837,7 @@ int main(int argc, char** argv) {
                     const int which = (rep % 2) ? 1 - e : e;
                     const EngineKind kind = which ? EngineKind::box2d : EngineKind::impulse2d;
                     progress.advance(0.0, "scaling " + std::to_string(n) + " " + tb::engineName(kind));
-                    tb::RunReport rr = tb::runScene(desc, scalingSteps, kind);
+                    tb::RunReport rr = tb::runScene(desc, scalingSteps, kind, {}, nullptr, false);
                     ms[which].push_back(rr.msMedian);
                     row.contacts[which] = rr.contacts;
                     progress.advance(runCost(box2d(8, 3), n, scalingSteps) * 3, "scaling");
@@ -873,7 +873,7 @@ int main(int argc, char** argv) {
                 for (int e = 0; e < 2; ++e) {
                     const EngineKind kind = e ? EngineKind::box2d : EngineKind::impulse2d;
                     progress.advance(0.0, std::string("idle bodies ") + tb::engineName(kind));
-                    tb::RunReport rr = tb::runScene(worlds[w].second, idleSteps, kind);
+                    tb::RunReport rr = tb::runScene(worlds[w].second, idleSteps, kind, {}, nullptr, false);
                     ms[w][e].push_back(rr.msMedian);
                     awake[w][e] = rr.awakeBodies;
                 }

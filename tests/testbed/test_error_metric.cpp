@@ -27,6 +27,7 @@ public:
     void step(float) override {}
     int bodyCount() const override { return static_cast<int>(bodies.size()); }
     tb::BodySample sample(int i) const override { return bodies[static_cast<std::size_t>(i)]; }
+    void driveX(int i, float vx) override { bodies[static_cast<std::size_t>(i)].vx = vx; }
     int jointCount() const override { return 0; }
     int touchingContactCount() const override { return 0; }
     float maxPenetration() const override { return 0.0f; }

@@ -294,3 +294,41 @@ TEST(ShippedScenes, CountsMatchTheirDescriptions) {
 }
 
 }  // namespace
+
+namespace {
+
+// Chains, bullets and driven bodies in the scene format.
+TEST(SceneLoader, ChainsBulletsAndDrivenBodies) {
+    const tb::SceneDesc d = tb::parseSceneDesc(
+        scene(
+            R"({"type": "static", "shapes": [{"type": "chain", "points": [[3, 0], [0, 0], [-3, 0]], "friction": 0.2}]},
+                 {"type": "static", "shapes": [{"type": "chain", "points": [[0, 0], [1, 0], [1, 1]], "loop": true}]},
+                 {"position": [0, 1], "bullet": true, "drive_speed": 5, "shapes": [{"type": "circle", "radius": 0.5}]})"),
+        "ok.json", "ok");
+    ASSERT_EQ(d.bodies.size(), 3u);
+    const tb::ShapeDesc& open = d.bodies[0].shapes[0];
+    EXPECT_TRUE(open.chain);
+    EXPECT_FALSE(open.chainLoop);
+    EXPECT_EQ(open.chainPoints.size(), 3u);
+    EXPECT_FLOAT_EQ(open.def.friction, 0.2f);
+    EXPECT_TRUE(d.bodies[1].shapes[0].chainLoop);
+    EXPECT_TRUE(d.bodies[2].def.isBullet);
+    ASSERT_TRUE(d.bodies[2].driveSpeed.has_value());
+    EXPECT_FLOAT_EQ(*d.bodies[2].driveSpeed, 5.0f);
+
+    expectError(scene(R"({"type": "static", "shapes": [{"type": "chain", "points": [[0, 0]]}]})"),
+                {"bad.json", "bodies[0].shapes[0].points", "at least 2 points"});
+    expectError(scene(R"({"type": "static", "shapes": [{"type": "chain", "points": [[0, 0], [0, 0]]}]})"),
+                {"bodies[0].shapes[0].points", "apart"});
+    expectError(
+        scene(
+            R"({"type": "static", "shapes": [{"type": "chain", "points": [[0, 0], [2, 0], [0, 2], [2, 2]], "loop": true}]})"),
+        {"bodies[0].shapes[0].points", "crosses or touches itself"});
+    expectError(
+        scene(R"({"type": "static", "shapes": [{"type": "chain", "points": [[0, 0], [1, 0]], "sensor": true}]})"),
+        {"bodies[0].shapes[0].sensor", "cannot be a sensor"});
+    expectError(scene(R"({"type": "static", "drive_speed": 3, "shapes": []})"),
+                {"bodies[0].drive_speed", "only a dynamic body"});
+}
+
+}  // namespace

@@ -103,4 +103,48 @@ TEST(Continuous, SpinningRodDoesNotPassAThinWall) {
     EXPECT_LT(spinningRodFurthestX(true), 5.04f);
 }
 
+// A ball fired at a free 0.1 m plank (dynamic, no gravity), at its middle
+// so that the plank does not spin out of the way: as a bullet it is swept
+// against the plank and cannot pass it; without the flag (dynamic-versus-
+// dynamic pairs are not swept) it does, so the test can fail. Returns the
+// largest x of the ball's centre in the plank's frame over the run (the
+// plank's near face is at x = −0.05 in its frame).
+float ballIntoPlank(bool bullet, float speed) {
+    WorldSettings s;
+    s.gravity = {0.0f, 0.0f};
+    s.enableSleep = false;
+    World world(s);
+    BodyId plank = world.createBody({.type = BodyType::dynamic_body, .position = {5.0f, 0.0f}});
+    world.createPolygonShape(plank, {.density = 1.0f}, makeBox(0.05f, 1.0f));
+    BodyId ball = world.createBody({.type = BodyType::dynamic_body,
+                                    .position = {0.0f, 0.0f},
+                                    .linearVelocity = {speed, 0.0f},
+                                    .isBullet = bullet});
+    world.createCircleShape(ball, {.density = 4.0f}, {{0.0f, 0.0f}, 0.05f});
+    float worst = -1.0e30f;
+    for (int i = 0; i < 60; ++i) {
+        world.step(1.0f / 60.0f);
+        const Transform plankXf{world.position(plank), world.rotation(plank)};
+        worst = std::max(worst, invTransformPoint(plankXf, world.position(ball)).x);
+    }
+    return worst;
+}
+
+TEST(Continuous, BulletDoesNotPassADynamicPlank) {
+    for (float speed : {50.0f, 200.0f, 400.0f}) {
+        // The ball's centre never gets past the plank's near face: its
+        // surface may sink into the plank by at most its own radius.
+        EXPECT_LT(ballIntoPlank(true, speed), -0.05f) << speed << " m/s";
+    }
+    EXPECT_GT(ballIntoPlank(false, 200.0f), 0.05f);  // beyond the far face
+}
+
+TEST(Continuous, BulletFlagIsKept) {
+    World world;
+    BodyId b = world.createBody({.type = BodyType::dynamic_body, .isBullet = true});
+    EXPECT_TRUE(world.isBullet(b));
+    world.setBullet(b, false);
+    EXPECT_FALSE(world.isBullet(b));
+}
+
 }  // namespace

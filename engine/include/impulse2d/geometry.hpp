@@ -38,6 +38,14 @@ struct Segment {
     Vec2 point2{1.0f, 0.0f};
 };
 
+/// A segment of a chain with its neighbours' far points (ghost vertices);
+/// a ghost equal to the segment's own point means that end has no neighbour.
+struct ChainSegment {
+    Segment segment{};
+    Vec2 ghost1{};  ///< the point before point1
+    Vec2 ghost2{};  ///< the point after point2
+};
+
 /// A solid convex polygon, counter-clockwise, with an optional rounding
 /// radius (the Minkowski sum of the polygon and a disk). Build it with
 /// makePolygon / makeBox so that normals and centroid are consistent.

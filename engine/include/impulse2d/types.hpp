@@ -114,7 +114,8 @@ struct WorldSettings {
     /// may move further than speculativeDistance in a step is swept against
     /// the static shapes near its path and, if it would touch one, put back to
     /// its first time of impact (keeping its velocity), so it cannot pass
-    /// through thin walls. Dynamic-versus-dynamic pairs are not swept.
+    /// through thin walls. Dynamic-versus-dynamic pairs are swept only for
+    /// bullets (BodyDef::isBullet) against bodies that are not bullets.
     bool enableContinuous = true;
     bool enableSleep = true;
     /// Seconds an island must rest before it sleeps.
@@ -144,7 +145,12 @@ struct BodyDef {
     bool fixedRotation = false;    ///< no rotation (infinite rotational inertia)
     bool isAwake = true;           ///< false: created asleep (when sleep is enabled)
     bool enableSleep = true;       ///< false: this body never sleeps
-    std::uintptr_t userData = 0;   ///< any value of the game's; never read by the engine
+    /// A fast dynamic body (a projectile): its continuous collision also
+    /// sweeps it against the other dynamic bodies that are not bullets, so it
+    /// cannot pass through a thin moving body (continuous.cpp). Costs a sweep
+    /// per step while it moves fast.
+    bool isBullet = false;
+    std::uintptr_t userData = 0;  ///< any value of the game's; never read by the engine
 };
 
 /// Which shapes may collide. Two shapes collide when each one's category is
@@ -188,6 +194,26 @@ struct ShapeDef {
 };
 
 enum class ShapeType : std::uint8_t { circle, capsule, segment, polygon };
+
+/// A chain: segments joined end to end (World::createChain), for static
+/// level geometry such as terrain. Each segment collides on one side only, its
+/// right side looking from a point to the next (so a counter-clockwise loop
+/// is solid inside, as in Box2D), and knows its neighbours' far points (its
+/// ghost vertices), so that a body sliding or rolling across a joint between
+/// two segments meets one smooth surface: no catch on a seam, no kick from a
+/// joint's rounded corner, at any speed.
+struct ChainDef {
+    /// The points in the body frame (m); an open chain needs at least 2, a
+    /// loop at least 3. Consecutive points further apart than kLinearSlop,
+    /// and no segment may cross or touch another one that is not its neighbour.
+    std::span<const Vec2> points{};
+    bool isLoop = false;       ///< true: the last point joins the first
+    float friction = 0.6f;     ///< of every segment (Coulomb μ ≥ 0)
+    float restitution = 0.0f;  ///< of every segment (e ∈ [0, 1])
+    Filter filter{};
+    bool enableContactEvents = true;
+    std::uintptr_t userData = 0;  ///< given to every segment
+};
 
 /// Two shapes began to touch in the last step (manifold at that moment).
 struct ContactBeginEvent {
@@ -308,6 +334,7 @@ struct Profile {
     float impacts = 0.0f;
     float solve = 0.0f;
     float continuous = 0.0f;  ///< continuous collision and bounding-box refresh
+    float sweeps = 0.0f;      ///< continuous collision alone (part of `continuous`)
     float sleep = 0.0f;
 };
 

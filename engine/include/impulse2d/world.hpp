@@ -204,6 +204,10 @@ public:
     /// angular velocity to 0 when true and recomputes the mass from the shapes
     /// (an override by setMassData is lost).
     void setFixedRotation(BodyId id, bool flag);
+    /// True when the body is a bullet (BodyDef::isBullet).
+    bool isBullet(BodyId id) const;
+    /// Make the body a bullet (swept against non-bullet dynamic bodies too) or not.
+    void setBullet(BodyId id, bool flag);
     /// The value given in BodyDef::userData or by setUserData; never read by
     /// the engine.
     std::uintptr_t userData(BodyId id) const;
@@ -269,6 +273,16 @@ public:
     /// i2d::Error when a point is not bounded or the points are no more than
     /// kLinearSlop (5 mm) apart.
     ShapeId createSegmentShape(BodyId body, const ShapeDef& def, const Segment& segment);
+    /// Creates the segments of a chain (ChainDef) on the body, in order (a
+    /// loop's last segment joins the last point to the first), and returns
+    /// them. Each is a segment shape (no mass) that collides on its right side
+    /// only and smoothly across its joints; it can be inspected, changed and
+    /// destroyed like any shape. Throws i2d::Error, creating nothing, when the
+    /// body handle is invalid, there are fewer than 2 points (3 for a loop), a
+    /// point is not bounded, two consecutive points are no more than
+    /// kLinearSlop apart, the chain crosses, touches or folds back on itself,
+    /// or friction or restitution is out of range.
+    std::vector<ShapeId> createChain(BodyId body, const ChainDef& def);
     /// Destroy the shape and its contacts and wake its body (locked); with
     /// updateBodyMass false the body keeps its mass until resetMassData.
     void destroyShape(ShapeId id, bool updateBodyMass = true);
@@ -285,6 +299,10 @@ public:
     Capsule shapeCapsule(ShapeId id) const;
     Polygon shapePolygon(ShapeId id) const;
     Segment shapeSegment(ShapeId id) const;
+    /// True when the shape is a segment of a chain (createChain).
+    bool isChainSegment(ShapeId id) const;
+    /// A chain segment with its ghost vertices; throws i2d::Error for any other shape.
+    ChainSegment shapeChainSegment(ShapeId id) const;
     /// Density (kg/m²).
     float density(ShapeId id) const;
     /// Set the density (kg/m², locked); with updateBodyMass the body's mass is

@@ -1,0 +1,274 @@
+// Seams between separate static shapes.
+//
+// A floor of adjacent boxes, of segments laid end to end or of boxes in
+// different bodies is flat, but each piece is collided on its own. At a seam
+// the narrowphase of the next piece can report a normal that the floor as a
+// whole does not have: the side face of the next box (hidden by the box
+// before it), or the rounded normal of the next segment's end vertex. Such a
+// ghost normal, in a speculative contact, stops a sliding box at the seam or
+// kicks a rolling circle upwards (Catto, 2020, "Ghost Collisions", Box2D
+// blog).
+//
+// The manifold of a static shape S and a moving shape is kept as computed,
+// except for the points whose normal n (from S to the moving shape) is a
+// ghost. With p the point's witness on S's core:
+// - n is a face normal of S, and p is near an end of that face: the face is
+//   internal when another static polygon T has a coincident face of opposite
+//   normal that spans p (two boxes side by side). No body can touch an
+//   internal face from outside the union, so the point is a ghost.
+// - n is a vertex normal of S (strictly between S's face normals at a vertex
+//   v, or at a segment's end): when another static shape T has a face that
+//   passes through v, and n leans over that face (n·u > 0 for u the unit
+//   direction from v along T's face), then the body lies over T's face,
+//   whose own contact supports it: the point is a ghost. At a convex corner
+//   of the union the vertex normals between the two faces do not lean over
+//   either face and are kept; at a flat or concave seam every vertex normal
+//   leans over the neighbour's face and is dropped. This is the vertex-region
+//   rule of a chain's ghost vertices (Catto, 2025, Box2D v3.1, manifold.c,
+//   the chain segment colliders), with the neighbour found through the
+//   broadphase instead of stored.
+// A chain's segment (World::createChain) keeps its neighbours' far points
+// (ghost vertices) and applies the vertex rule with them, whatever its body,
+// and collides on its right side only.
+// A two-sided segment (any body) pushes a body only towards the side its
+// centroid is on: a manifold whose normal points across the line, for a body
+// whose centroid projects onto the segment, is dropped.
+// Only static shapes that would collide with the moving shape count as
+// neighbours, and only polygons and segments (a static circle or capsule
+// has no face to continue a floor). Cost: a broadphase query of a
+// slop-sized box for vertex normals, and for face normals within the
+// speculative distance of a face's end; none for a body resting inside a face.
+#include <cmath>
+
+#include "seams.hpp"
+#include "world_state.hpp"
+
+namespace i2d::detail {
+
+namespace {
+
+constexpr float kShareTolerance = kLinearSlop;  ///< vertices and faces closer than this are shared
+constexpr float kFaceAlignment = 0.9999f;       ///< cos 0.8°: a normal this close to a face normal is it
+constexpr float kLean = 1.0e-4f;                ///< n·u above this leans over the face (at 20 m/s: 2 mm/s towards it)
+
+/// A static shape's core in world space: a polygon's vertices and normals, or a segment's two points.
+struct Outline {
+    Vec2 vertices[kMaxPolygonVertices];
+    Vec2 normals[kMaxPolygonVertices];
+    int count = 0;
+    float radius = 0.0f;
+    bool segment = false;
+};
+
+bool outlineOf(const Shape& s, const Transform& xf, Outline& o) {
+    if (s.type == ShapeType::polygon) {
+        const Polygon& p = s.geometry.polygon;
+        o.count = p.count;
+        o.radius = p.radius;
+        for (int i = 0; i < p.count; ++i) {
+            o.vertices[i] = transformPoint(xf, p.vertices[i]);
+            o.normals[i] = rotate(xf.q, p.normals[i]);
+        }
+        return true;
+    }
+    if (s.type == ShapeType::segment) {
+        o.count = 2;
+        o.segment = true;
+        o.vertices[0] = transformPoint(xf, s.geometry.segment.point1);
+        o.vertices[1] = transformPoint(xf, s.geometry.segment.point2);
+        const Vec2 n = leftPerp(normalize(o.vertices[1] - o.vertices[0]));
+        o.normals[0] = n;
+        o.normals[1] = -n;
+        return true;
+    }
+    return false;
+}
+
+/// The faces of an outline as (start, end) pairs: a polygon's edges, a segment once.
+int faceCount(const Outline& o) { return o.segment ? 1 : o.count; }
+Vec2 faceEnd(const Outline& o, int i) { return o.vertices[(i + 1) % o.count]; }
+
+/// Calls visit(outline) for every static polygon or segment near `box`
+/// other than `self` that collides with the moving shape.
+template <class Visit>
+void forNeighbours(const WorldState& w, int self, const Shape& moving, const AABB& box, Visit&& visit) {
+    w.broadPhase.staticTree.query(box, [&](int other) {
+        if (other == self) return true;
+        const Shape& t = w.shapes[other];
+        if (t.isSensor || !shouldCollide(t.filter, moving.filter)) return true;
+        Outline o;
+        if (!outlineOf(t, w.bodies[t.body].xf, o)) return true;
+        return visit(o);
+    });
+}
+
+AABB around(Vec2 p, float r) { return {p - Vec2{r, r}, p + Vec2{r, r}}; }
+
+/// True when face `face` of S (outward normal m) is hidden at p by a
+/// coincident, opposite face of a neighbouring polygon.
+bool faceIsInternal(const WorldState& w, int self, const Shape& moving, const Outline& s, int face, Vec2 p) {
+    const Vec2 m = s.normals[face];
+    bool internal = false;
+    forNeighbours(w, self, moving, around(p, kShareTolerance), [&](const Outline& t) {
+        if (t.segment) return true;
+        for (int j = 0; j < t.count; ++j) {
+            if (dot(t.normals[j], m) > -kFaceAlignment) continue;
+            const Vec2 a = t.vertices[j], b = faceEnd(t, j);
+            // On the same line (S's face through p), and spanning p.
+            if (std::abs(dot(a - p, m)) > kShareTolerance + t.radius + s.radius) continue;
+            const Vec2 e = b - a;
+            const float len = length(e);
+            if (len <= 0.0f) continue;
+            const float along = dot(p - a, e) / len;
+            if (along < -kShareTolerance || along > len + kShareTolerance) continue;
+            internal = true;
+            return false;
+        }
+        return true;
+    });
+    return internal;
+}
+
+/// True when a neighbouring static shape has a face through v over which n leans.
+bool leansOverNeighbour(const WorldState& w, int self, const Shape& moving, Vec2 v, Vec2 n) {
+    bool leans = false;
+    forNeighbours(w, self, moving, around(v, kShareTolerance), [&](const Outline& t) {
+        for (int j = 0; j < faceCount(t); ++j) {
+            const Vec2 a = t.vertices[j], b = faceEnd(t, j);
+            float len = 0.0f;
+            const Vec2 u = normalize(b - a, len);
+            if (len <= 0.0f) continue;
+            // Does the face pass through v?
+            const float along = clamp(dot(v - a, u), 0.0f, len);
+            if (distance(v, a + along * u) > kShareTolerance + t.radius) continue;
+            const bool atA = distance(v, a) <= kShareTolerance, atB = distance(v, b) <= kShareTolerance;
+            // Directions from v along the face: into it from an end, both ways from inside.
+            const float lean = atA ? dot(n, u) : atB ? -dot(n, u) : std::abs(dot(n, u));
+            if (lean > kLean) {
+                leans = true;
+                return false;
+            }
+        }
+        return true;
+    });
+    return leans;
+}
+
+bool isGhost(const WorldState& w, int self, const Shape& moving, const Outline& s, Vec2 p, Vec2 n, float reach) {
+    // A face normal of S?
+    for (int i = 0; i < (s.segment ? 2 : s.count); ++i) {
+        if (dot(n, s.normals[i]) < kFaceAlignment) continue;
+        if (s.segment) return false;  // a segment's side: never hidden
+        const Vec2 a = s.vertices[i], b = faceEnd(s, i);
+        if (distance(p, a) > reach && distance(p, b) > reach) return false;  // well inside the face
+        return faceIsInternal(w, self, moving, s, i, p);
+    }
+    // A vertex normal: at which vertex?
+    int vertex = -1;
+    for (int i = 0; i < s.count; ++i)
+        if (distance(p, s.vertices[i]) <= kShareTolerance) vertex = i;
+    if (vertex < 0) return false;
+    return leansOverNeighbour(w, self, moving, s.vertices[vertex], n);
+}
+
+/// The centroid of a shape in its body frame.
+Vec2 localCentroid(const Shape& s) {
+    switch (s.type) {
+        case ShapeType::circle: return s.geometry.circle.center;
+        case ShapeType::capsule: return 0.5f * (s.geometry.capsule.center1 + s.geometry.capsule.center2);
+        case ShapeType::segment: return 0.5f * (s.geometry.segment.point1 + s.geometry.segment.point2);
+        case ShapeType::polygon: return s.geometry.polygon.centroid;
+    }
+    return {};
+}
+
+/// A chain segment's rule, with its stored ghost vertices as the
+/// neighbours: one-sided (nothing whose centroid is behind the segment's
+/// line collides with it, nor any point whose normal points behind it), and
+/// the vertex rule above at each end that has a neighbour.
+void applyChainRule(const WorldState& w, const Shape& chain, const Shape& moving, Vec2 n, Manifold& m) {
+    const Transform& xf = w.bodies[chain.body].xf;
+    const Vec2 p1 = transformPoint(xf, chain.geometry.segment.point1);
+    const Vec2 p2 = transformPoint(xf, chain.geometry.segment.point2);
+    const Vec2 front = rightPerp(normalize(p2 - p1));
+    const Vec2 c = transformPoint(w.bodies[moving.body].xf, localCentroid(moving));
+    if (dot(front, c - p1) < 0.0f || dot(n, front) < 0.0f) {
+        m.pointCount = 0;
+        return;
+    }
+    if (dot(n, front) >= kFaceAlignment) return;  // the face normal
+    const Vec2 g1 = transformPoint(xf, chain.ghost1), g2 = transformPoint(xf, chain.ghost2);
+    int kept = 0;
+    for (int i = 0; i < m.pointCount; ++i) {
+        const ManifoldPoint& pt = m.points[i];
+        const Vec2 p = pt.point - 0.5f * pt.separation * n;
+        bool ghost = false;
+        if (distance(p, p1) <= kShareTolerance && distance(g1, p1) > 0.0f)
+            ghost = dot(n, normalize(g1 - p1)) > kLean;
+        else if (distance(p, p2) <= kShareTolerance && distance(g2, p2) > 0.0f)
+            ghost = dot(n, normalize(g2 - p2)) > kLean;
+        if (!ghost) m.points[kept++] = pt;
+    }
+    m.pointCount = kept;
+}
+
+}  // namespace
+
+/// A two-sided segment pushes a body towards the side its centroid is on,
+/// never across its line: when the centroid projects onto the segment and
+/// the normal points to the other side (a thin body straddling the segment,
+/// whose own face won the separating axis test), the manifold is dropped.
+/// Without this, a sliver stopped across a segment by continuous collision
+/// was pushed through it at less than the speculative distance per step.
+void keepSegmentSide(const WorldState& w, const Shape& segment, const Shape& other, Vec2 n, Manifold& m) {
+    const Transform& xf = w.bodies[segment.body].xf;
+    const Vec2 p1 = transformPoint(xf, segment.geometry.segment.point1);
+    const Vec2 e = transformPoint(xf, segment.geometry.segment.point2) - p1;
+    const Vec2 c = transformPoint(w.bodies[other.body].xf, localCentroid(other)) - p1;
+    const float t = dot(c, e);
+    if (t < 0.0f || t > dot(e, e)) return;
+    const float side = cross(e, c);  // > 0: the centroid is on the left
+    if (side == 0.0f) return;
+    if ((side > 0.0f ? 1.0f : -1.0f) * cross(e, n) < 0.0f) m.pointCount = 0;
+}
+
+void dropSeamGhosts(const WorldState& w, const Contact& c, Manifold& m) {
+    if (m.pointCount == 0 || c.isSensor) return;
+    const Shape& shapeA = w.shapes[c.shapeA];
+    const Shape& shapeB = w.shapes[c.shapeB];
+    // Segments come first in a contact (contact.cpp), and two never collide.
+    if (shapeA.type == ShapeType::segment && !shapeA.chainSegment) {
+        keepSegmentSide(w, shapeA, shapeB, m.normal, m);
+        if (m.pointCount == 0) return;
+    }
+    if (shapeA.chainSegment || shapeB.chainSegment) {
+        // Two segments never collide, so one side is the chain's.
+        const bool aChain = shapeA.chainSegment;
+        applyChainRule(w, aChain ? shapeA : shapeB, aChain ? shapeB : shapeA, aChain ? m.normal : -m.normal, m);
+        return;
+    }
+    const bool aStatic = w.bodies[c.bodyA].type == BodyType::static_body;
+    const bool bStatic = w.bodies[c.bodyB].type == BodyType::static_body;
+    if (aStatic == bStatic) return;
+    const int self = aStatic ? c.shapeA : c.shapeB;
+    const Shape& fixed = w.shapes[self];
+    const Shape& moving = w.shapes[aStatic ? c.shapeB : c.shapeA];
+    Outline s;
+    if (!outlineOf(fixed, w.bodies[fixed.body].xf, s)) return;
+    const Vec2 n = aStatic ? m.normal : -m.normal;  // from the static shape to the moving one
+    // How near a face's end a face contact may be a seam's: the speculative
+    // distance (how far above a surface a point is reported) and the slop
+    // (how deep a resting point sinks).
+    const float reach = w.settings.speculativeDistance + kLinearSlop;
+    int kept = 0;
+    for (int i = 0; i < m.pointCount; ++i) {
+        const ManifoldPoint& pt = m.points[i];
+        // The point is midway between the surfaces: S's core is half the
+        // separation and S's radius behind it.
+        const Vec2 p = pt.point - (0.5f * pt.separation + s.radius) * n;
+        if (!isGhost(w, self, moving, s, p, n, reach)) m.points[kept++] = pt;
+    }
+    m.pointCount = kept;
+}
+
+}  // namespace i2d::detail

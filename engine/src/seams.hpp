@@ -1,0 +1,17 @@
+// Seams between separate static shapes (seams.cpp): ghost contact points at
+// internal edges and shared vertices are dropped from a manifold.
+#pragma once
+
+#include "impulse2d/collision.hpp"
+
+namespace i2d::detail {
+
+struct WorldState;
+struct Contact;
+
+/// For a contact between a static shape and a moving one: drops the points of
+/// `m` whose normal is not a normal of the static geometry as a whole (it
+/// points into an adjacent static shape at a face or vertex the two share).
+void dropSeamGhosts(const WorldState& w, const Contact& c, Manifold& m);
+
+}  // namespace i2d::detail

@@ -1,0 +1,161 @@
+// Seams between separate static shapes: a box, a circle or a capsule sliding
+// or driven across a floor of adjacent pieces neither stops at a seam nor
+// leaves the floor.
+#include <gtest/gtest.h>
+
+#include <algorithm>
+#include <cmath>
+#include <string>
+
+#include <impulse2d/impulse2d.hpp>
+
+namespace {
+
+using namespace i2d;
+
+enum class Floor { boxes_one_body, boxes_many_bodies, segments_one_body, segments_many_bodies };
+enum class Mover { box, circle, capsule };
+
+const char* name(Floor f) {
+    switch (f) {
+        case Floor::boxes_one_body: return "boxes in one body";
+        case Floor::boxes_many_bodies: return "boxes in separate bodies";
+        case Floor::segments_one_body: return "segments in one body";
+        case Floor::segments_many_bodies: return "segments in separate bodies";
+    }
+    return "";
+}
+const char* name(Mover m) { return m == Mover::box ? "box" : m == Mover::circle ? "circle" : "capsule"; }
+
+constexpr int kPieces = 40;        ///< 1 m pieces from x = −20 to 20, top face at y = 0
+constexpr float kStartX = -19.0f;  ///< the mover starts over the second piece
+
+void buildFloor(World& world, Floor f) {
+    BodyId shared = world.createBody({});
+    for (int i = 0; i < kPieces; ++i) {
+        const float x0 = -20.0f + static_cast<float>(i);
+        const bool own = f == Floor::boxes_many_bodies || f == Floor::segments_many_bodies;
+        BodyId body = own ? world.createBody({}) : shared;
+        if (f == Floor::boxes_one_body || f == Floor::boxes_many_bodies)
+            world.createPolygonShape(body, {.friction = 0.0f}, makeOffsetBox(0.5f, 0.5f, {x0 + 0.5f, -0.5f}, 0.0f));
+        else
+            world.createSegmentShape(body, {.friction = 0.0f}, {{x0, 0.0f}, {x0 + 1.0f, 0.0f}});
+    }
+}
+
+struct Crossing {
+    float maxUpSpeed = 0.0f;  ///< largest |v_y| once settled (m/s)
+    float minSpeedX = 1.0e30f;
+    float endX = 0.0f;
+};
+
+// The mover rests on the floor at x = −19 and moves at `speed` along +x with
+// friction 0, either sliding freely (driven = false) or with its horizontal
+// velocity set before every step (a character controller), until it nears
+// the floor's end.
+Crossing cross(Floor f, Mover mv, float speed, bool driven) {
+    WorldSettings s;
+    s.enableSleep = false;
+    World world(s);
+    buildFloor(world, f);
+    BodyId body;
+    switch (mv) {
+        case Mover::box:  // the player: 0.6 × 1 m, fixed rotation
+            body = world.createBody(
+                {.type = BodyType::dynamic_body, .position = {kStartX, 0.5f}, .fixedRotation = true});
+            world.createPolygonShape(body, {.friction = 0.0f}, makeBox(0.3f, 0.5f));
+            break;
+        case Mover::circle:
+            body = world.createBody({.type = BodyType::dynamic_body, .position = {kStartX, 0.25f}});
+            world.createCircleShape(body, {.friction = 0.0f}, {{0.0f, 0.0f}, 0.25f});
+            break;
+        case Mover::capsule:
+            body = world.createBody({.type = BodyType::dynamic_body, .position = {kStartX, 0.2f}});
+            world.createCapsuleShape(body, {.friction = 0.0f}, {{-0.3f, 0.0f}, {0.3f, 0.0f}, 0.2f});
+            break;
+    }
+    world.setLinearVelocity(body, {speed, 0.0f});
+    Crossing c;
+    const float dt = 1.0f / 60.0f;
+    // Enough steps to cover the 38 m to x = 19 (1 m before the floor's end)
+    // and half a metre more, where the run stops.
+    const int steps = static_cast<int>(std::ceil(38.5f / (speed * dt)));
+    for (int i = 0; i < steps && world.position(body).x < 19.0f; ++i) {
+        if (driven) world.setLinearVelocity(body, {speed, world.linearVelocity(body).y});
+        world.step(dt);
+        const Vec2 v = world.linearVelocity(body);
+        // The first steps settle the exact placement into the contact's slop.
+        if (i < 5) continue;
+        c.maxUpSpeed = std::max(c.maxUpSpeed, std::abs(v.y));
+        c.minSpeedX = std::min(c.minSpeedX, v.x);
+    }
+    c.endX = world.position(body).x;
+    return c;
+}
+
+// Every floor, mover and speed up to the 20 m/s, sliding and
+// driven: the vertical speed stays under the 0.1 m/s, and a sliding
+// mover (friction 0, nothing else acts along x) keeps its speed: it may lose
+// no more than 1 % (a seam that caught it would take all of it).
+TEST(Seams, NothingSnagsOrJumpsAtSeams) {
+    for (Floor f :
+         {Floor::boxes_one_body, Floor::boxes_many_bodies, Floor::segments_one_body, Floor::segments_many_bodies})
+        for (Mover mv : {Mover::box, Mover::circle, Mover::capsule})
+            for (float speed : {1.0f, 3.0f, 6.0f, 12.0f, 20.0f})
+                for (bool driven : {false, true}) {
+                    const Crossing c = cross(f, mv, speed, driven);
+                    const std::string what = std::string(name(mv)) + " on " + name(f) + " at " + std::to_string(speed) +
+                                             " m/s" + (driven ? " driven" : " sliding");
+                    EXPECT_LT(c.maxUpSpeed, 0.1f) << what;
+                    EXPECT_GT(c.minSpeedX, 0.99f * speed) << what;
+                    EXPECT_GE(c.endX, 19.0f) << what;
+                }
+}
+
+// The filter keeps real steps: a box driven into a step up (the next box
+// 0.2 m higher, in the same body) stops at the step's exposed face.
+TEST(Seams, RealStepsStillCount) {
+    WorldSettings s;
+    s.enableSleep = false;
+    World world(s);
+    BodyId ground = world.createBody({});
+    world.createPolygonShape(ground, {.friction = 0.0f}, makeOffsetBox(2.0f, 0.5f, {-2.0f, -0.5f}, 0.0f));
+    world.createPolygonShape(ground, {.friction = 0.0f}, makeOffsetBox(2.0f, 0.5f, {2.0f, -0.3f}, 0.0f));
+    BodyId box = world.createBody({.type = BodyType::dynamic_body, .position = {-1.0f, 0.5f}, .fixedRotation = true});
+    world.createPolygonShape(box, {.friction = 0.0f}, makeBox(0.3f, 0.5f));
+    for (int i = 0; i < 120; ++i) {
+        world.setLinearVelocity(box, {3.0f, world.linearVelocity(box).y});
+        world.step(1.0f / 60.0f);
+    }
+    // The step's face is at x = 0; the box's right face stops there (its
+    // centre 0.3 m before it), give or take the contact's 0.005 m slop.
+    EXPECT_NEAR(world.position(box).x, -0.3f, 0.01f);
+}
+
+// At a convex corner shared by two static segments (the floor bends down by
+// 20° at x = 0), the vertex normals between the two faces are real and are
+// kept: a circle sliding over the corner at 1 m/s stays on the surface, its
+// centre never nearer the corner than its radius less the contact's 0.005 m
+// slop (were the corner's contacts dropped, it would sink into the bend).
+TEST(Seams, ConvexCornersKeepTheirVertexNormals) {
+    WorldSettings s;
+    s.enableSleep = false;
+    World world(s);
+    BodyId ground = world.createBody({});
+    const float a = 20.0f * 3.14159265f / 180.0f;
+    world.createSegmentShape(ground, {.friction = 0.0f}, {{-5.0f, 0.0f}, {0.0f, 0.0f}});
+    world.createSegmentShape(ground, {.friction = 0.0f}, {{0.0f, 0.0f}, {5.0f * std::cos(a), -5.0f * std::sin(a)}});
+    const float r = 0.25f;
+    BodyId ball = world.createBody(
+        {.type = BodyType::dynamic_body, .position = {-1.0f, r}, .linearVelocity = {1.0f, 0.0f}});
+    world.createCircleShape(ball, {.friction = 0.0f}, {{0.0f, 0.0f}, r});
+    float nearest = 1.0e30f;
+    for (int i = 0; i < 120; ++i) {
+        world.step(1.0f / 60.0f);
+        nearest = std::min(nearest, length(world.position(ball)));
+    }
+    EXPECT_GT(nearest, r - 0.005f);
+    EXPECT_GT(world.position(ball).x, 0.5f);  // it went over the corner
+}
+
+}  // namespace
