@@ -1,6 +1,7 @@
 // Persistent manifolds (contact_persistence.hpp says why and what).
 #include "contact_persistence.hpp"
 
+#include <algorithm>
 #include <cmath>
 
 #include "body.hpp"
@@ -47,8 +48,9 @@ bool reuseManifold(Contact& c, const Body& a, const Body& b, float reuseDistance
     if (!c.framed || reuseDistance <= 0.0f) return false;
     const ManifoldFrame& f = c.frame;
     const Transform rel = invMulTransforms(a.xf, b.xf);
-    // In A's frame, B's points moved by at most |Δp| + reach·|sin Δθ|; the
-    // normal is fixed in the world, so A's own turn counts too.
+    // In A's frame, B's points moved by at most |Δp| + reach·|sin Δθ|. The
+    // normal is fixed in the world: A's own turn (and B's) is bounded by the
+    // 11° check, as in Box2D v3 (a column's boxes lean together by far less).
     const float relCos = dot(Vec2{rel.q.c, rel.q.s}, Vec2{f.relative.q.c, f.relative.q.s});
     const float absCos = dot(Vec2{a.xf.q.c, a.xf.q.s}, Vec2{f.rotationA.c, f.rotationA.s});
     if (relCos < kMinTurnCosine || absCos < kMinTurnCosine) return false;

@@ -13,21 +13,23 @@
 // EI = 2·k·b² per metre: about 14 boxes of 1 m at 30 Hz. A column of 20
 // therefore fell within 10 s whatever the substep count, and Box2D 2.4.1 and
 // Box2D v3 with its contact recycling off fall the same way (measured). The
-// first asymmetry that starts the lean is the order in which the first
-// step's Gauss-Seidel sweep meets a manifold's two points; with the feedback
-// it grows by e every 1.4 s.
+// first asymmetry that started the lean was the order in which the first
+// step's Gauss-Seidel sweep met a manifold's two points; with the feedback
+// it grew by e every 1.4 s. (That seed is gone too: contact_solver.cpp now
+// solves a manifold's two points together. This file removes the feedback,
+// which any other seed, a column built leaning, would still drive.)
 //
 // What. While the two bodies' relative pose stays within `reuseDistance`
-// (the largest distance any point of B has moved in A's frame, plus the turn
-// of A that the fixed normal ignores), the manifold keeps its normal (fixed
+// (the largest distance any point of B has moved in A's frame) and neither
+// A nor B relative to A has turned by more than about 11°, the manifold keeps its normal (fixed
 // in the world) and its points stay fixed in the bodies: each point is a
 // material point of A and one of B, which coincided when the manifold was
 // computed; its separation is the one computed then plus their relative
 // motion along the normal, the same update the substeps make within a step.
 // A displaced box then keeps pressing on the same material points, the load
 // split between them no longer follows the displacement, and the column
-// stands. It is the "contact recycling" of Box2D v3.2 (Catto, 2025, Box2D
-// v3.2 release notes), in the tradition of persistent contact manifolds.
+// stands. It is the "contact recycling" of Catto (2025), Box2D v3.2, in
+// the tradition of persistent contact manifolds (docs/references.md).
 //
 // Only flat pairs persist (polygons and segments): a point fixed in a round
 // shape would roll away from the true contact (a rolling disc would sink).
