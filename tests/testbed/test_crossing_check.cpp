@@ -13,34 +13,14 @@
 #include "run_command.hpp"
 #include "run_report.hpp"
 #include "scene_loader.hpp"
+#include "scripted_simulation.hpp"
 #include "simulation.hpp"
 
 namespace {
 
 const std::string kAssets = TB_TEST_ASSETS_DIR;
 
-// A Simulation whose state the test writes.
-class ScriptedSimulation : public tb::Simulation {
-public:
-    std::vector<tb::BodySample> bodies;
-
-    tb::EngineKind engine() const override { return tb::EngineKind::impulse2d; }
-    void step(float) override {}
-    int bodyCount() const override { return static_cast<int>(bodies.size()); }
-    tb::BodySample sample(int i) const override { return bodies[static_cast<std::size_t>(i)]; }
-    void driveX(int i, float vx) override { bodies[static_cast<std::size_t>(i)].vx = vx; }
-    int jointCount() const override { return 0; }
-    int touchingContactCount() const override { return 0; }
-    float maxPenetration() const override { return 0.0f; }
-
-    void place(int i, float x, float y, float vx = 0.0f, float vy = 0.0f) {
-        tb::BodySample& s = bodies[static_cast<std::size_t>(i)];
-        s.x = s.cx = x;
-        s.y = s.cy = y;
-        s.vx = vx;
-        s.vy = vy;
-    }
-};
+using tb::test::ScriptedSimulation;
 
 // A static wall 0.1 m thick (x from 0 to 0.1, y from −5 to 5), a static
 // segment on x = 5 and a dynamic ball.

@@ -13,25 +13,13 @@
 #include "error_metric.hpp"
 #include "run_command.hpp"
 #include "scene_loader.hpp"
+#include "scripted_simulation.hpp"
 
 namespace {
 
 const std::string kAssets = TB_TEST_ASSETS_DIR;
 
-// A Simulation whose state the test writes: the trajectory is scripted.
-class ScriptedSimulation : public tb::Simulation {
-public:
-    std::vector<tb::BodySample> bodies;
-
-    tb::EngineKind engine() const override { return tb::EngineKind::impulse2d; }
-    void step(float) override {}
-    int bodyCount() const override { return static_cast<int>(bodies.size()); }
-    tb::BodySample sample(int i) const override { return bodies[static_cast<std::size_t>(i)]; }
-    void driveX(int i, float vx) override { bodies[static_cast<std::size_t>(i)].vx = vx; }
-    int jointCount() const override { return 0; }
-    int touchingContactCount() const override { return 0; }
-    float maxPenetration() const override { return 0.0f; }
-};
+using tb::test::ScriptedSimulation;
 
 tb::BodySample dynamicAt(float x, float y, float mass = 1.0f) {
     tb::BodySample s;
