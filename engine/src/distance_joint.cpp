@@ -71,7 +71,9 @@ void solveDistanceJoint(JointConstraint& jc, const JointContext& ctx, BodyState&
         Vec2 dv = (sB.v + cross(sB.w, f.rB)) - (sA.v + cross(sA.w, f.rA));
         return dot(dv, f.axis);
     };
-    if (row.rigid) {
+    if (row.rigid && jc.inTree) {
+        // the length is solved with its tree (joint_tree.cpp)
+    } else if (row.rigid) {
         const RowBias rb = rigidBias(ctx, f.length - row.length);
         float impulse = -rb.massScale * row.axialMass * (cdot() + rb.bias) - rb.impulseScale * jc.impulses.axial;
         impulse = boundedIncrement(jc.impulses.axial, impulse, -maxImpulse, maxImpulse);
@@ -97,6 +99,15 @@ void solveDistanceJoint(JointConstraint& jc, const JointContext& ctx, BodyState&
         // Upper limit: length ≤ maxLength, a rope (pulls together).
         limitRow(row.maxLength - f.length, -1.0f, jc.impulses.upper);
     }
+}
+
+void distanceEqualityRows(const JointConstraint& jc, const BodyState& sA, const BodyState& sB, EqualityRows& rows) {
+    const JointFrame f = currentFrame(jc, sA, sB);
+    const float crA = cross(f.rA, f.axis), crB = cross(f.rB, f.axis);
+    rows.count = 1;
+    rows.jA[0][0] = -f.axis.x, rows.jA[0][1] = -f.axis.y, rows.jA[0][2] = -crA;
+    rows.jB[0][0] = f.axis.x, rows.jB[0][1] = f.axis.y, rows.jB[0][2] = crB;
+    rows.error[0] = f.length - jc.row.distance.length;
 }
 
 void pushDistanceJoint(const JointConstraint& jc, const JointContext& ctx, const BodyState& sA, const BodyState& sB,

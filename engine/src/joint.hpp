@@ -118,6 +118,12 @@ union JointRow {
 struct JointConstraint {
     int joint = kNullIndex;
     JointType type = JointType::distance;
+    /// Its equality rows are solved exactly with its tree (joint_tree.cpp),
+    /// not in the Gauss-Seidel sweep.
+    bool inTree = false;
+    /// The entries of its anchors' point matrix fit single precision with room
+    /// for their products (solvePointRows in joint_rows.hpp).
+    bool singlePrecision = false;
     int a = kNullIndex, b = kNullIndex;  ///< solver body indices; kNullIndex for a body that does not move
     int c = kNullIndex, d = kNullIndex;  ///< gear only: the frames of its two joints
     float invMassA = 0, invIA = 0, invMassB = 0, invIB = 0;
@@ -138,6 +144,8 @@ struct JointContext {
     Softness jointSoft;       ///< softness of rigid rows in the soft_bias pass
     float pushFactor = 0.0f;  ///< β of baumgarte (and of split's push)
     float maxLinearSpeed = 0.0f;
+    int positionUpdates =
+        0;  ///< position updates so far in the step (joint_tree.cpp reuses its factorization between them)
 };
 
 /// Links a new joint to its bodies, drops the contacts between them when

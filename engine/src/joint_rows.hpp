@@ -83,6 +83,21 @@ inline Vec2 solveSymmetric22(const Sym22& k, Vec2 b) {
             static_cast<float>(det * (k.k11 * b.y - k.k12 * b.x))};
 }
 
+/// K⁻¹ b for the point rows of anchors rA, rB (pointMatrix): in single
+/// precision when prepareJoints found every entry of K small enough for it
+/// (JointConstraint::singlePrecision: every practical mass ratio), which
+/// costs a third less in the sweep; in double precision otherwise.
+inline Vec2 solvePointRows(const JointConstraint& jc, Vec2 rA, Vec2 rB, Vec2 b) {
+    const float mA = jc.invMassA, iA = jc.invIA, mB = jc.invMassB, iB = jc.invIB;
+    if (!jc.singlePrecision) return solveSymmetric22(pointMatrix(mA, iA, mB, iB, rA, rB), b);
+    const float k11 = mA + mB + rA.y * rA.y * iA + rB.y * rB.y * iB;
+    const float k12 = -rA.y * rA.x * iA - rB.y * rB.x * iB;
+    const float k22 = mA + mB + rA.x * rA.x * iA + rB.x * rB.x * iB;
+    float inv = k11 * k22 - k12 * k12;
+    if (inv != 0.0f) inv = 1.0f / inv;
+    return {inv * (k22 * b.x - k12 * b.y), inv * (k11 * b.y - k12 * b.x)};
+}
+
 /// Relative angle of B to A now: angle(qB·qA⁻¹) with the rotations since the step began.
 inline float relativeAngle(const JointConstraint& jc, const BodyState& sA, const BodyState& sB) {
     const Rot qA = mulRot(sA.dq, jc.qA), qB = mulRot(sB.dq, jc.qB);
@@ -185,6 +200,36 @@ inline float axialMass(const JointConstraint& jc, const SliderFrame& f) {
     const float k = jc.invMassA + jc.invMassB + jc.invIA * f.aA * f.aA + jc.invIB * f.aB * f.aB;
     return k > 0.0f ? 1.0f / k : 0.0f;
 }
+
+/// A joint's equality rows for the exact solve of joint trees
+/// (joint_tree.cpp): row k's rate is J v = jA[k]·(v_A, ω_A) + jB[k]·(v_B, ω_B),
+/// its position error error[k]; the accumulated impulses are read and written
+/// through the type's own fields (readEqualityImpulse, addEqualityImpulse).
+struct EqualityRows {
+    int count = 0;
+    float jA[3][3]{}, jB[3][3]{};
+    float error[3]{};
+};
+/// The equality rows a joint hands to the tree solve: the revolute joint's
+/// point, the rigid weld's point and angle, the rigid distance joint's length;
+/// 0 rows for every other joint (its rows stay in the Gauss-Seidel sweep).
+/// Each type's part is in its own file; the dispatch is in joint_tree.cpp.
+int equalityRowCount(const JointConstraint& jc);
+/// Fills the rows at the states' current motion (count = equalityRowCount).
+void equalityRows(const JointConstraint& jc, const BodyState& sA, const BodyState& sB, EqualityRows& rows);
+/// The point rows of anchors rA, rB turned to now: C = p_B − p_A.
+inline void pointRows(Vec2 rA, Vec2 rB, Vec2 separation, EqualityRows& rows) {
+    // ∂(v + ω × r)/∂(v, ω) = [1 0 −r_y; 0 1 r_x].
+    rows.jA[0][0] = -1.0f, rows.jA[0][1] = 0.0f, rows.jA[0][2] = rA.y;
+    rows.jA[1][0] = 0.0f, rows.jA[1][1] = -1.0f, rows.jA[1][2] = -rA.x;
+    rows.jB[0][0] = 1.0f, rows.jB[0][1] = 0.0f, rows.jB[0][2] = -rB.y;
+    rows.jB[1][0] = 0.0f, rows.jB[1][1] = 1.0f, rows.jB[1][2] = rB.x;
+    rows.error[0] = separation.x;
+    rows.error[1] = separation.y;
+}
+void revoluteEqualityRows(const JointConstraint& jc, const BodyState& sA, const BodyState& sB, EqualityRows& rows);
+void weldEqualityRows(const JointConstraint& jc, const BodyState& sA, const BodyState& sB, EqualityRows& rows);
+void distanceEqualityRows(const JointConstraint& jc, const BodyState& sA, const BodyState& sB, EqualityRows& rows);
 
 void prepareDistanceJoint(const WorldState& w, const Joint& joint, JointConstraint& jc);
 void warmStartDistanceJoint(const JointConstraint& jc, BodyState& sA, BodyState& sB);

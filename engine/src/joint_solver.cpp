@@ -11,6 +11,7 @@
 
 #include "distance_joint.hpp"
 #include "joint_solver.hpp"
+#include "joint_tree.hpp"
 #include "world_state.hpp"
 
 namespace i2d::detail {
@@ -129,8 +130,15 @@ void prepareJoints(WorldState& w, float dt) {
                 prepareGearJoint(w, joint, jc);
                 break;
         }
+        // Every entry of the point matrix is at most m_A⁻¹ + m_B⁻¹ + I_A⁻¹|r_A|² + I_B⁻¹|r_B|²
+        // (the anchors turn, their lengths stay); its products stay in single
+        // precision below 1e18 each.
+        const double bound = double(jc.invMassA) + jc.invMassB + double(jc.invIA) * lengthSquared(jc.rA) +
+                             double(jc.invIB) * lengthSquared(jc.rB);
+        jc.singlePrecision = bound < 1.0e18;
     }
     colourJoints(s);
+    buildJointTrees(w);
 }
 
 void warmStartJoints(WorldState& w) {
@@ -171,6 +179,8 @@ void solveJoints(WorldState& w, const JointContext& ctx) {
         }
     }
     clearZeroState(s);
+    solveJointTrees(w, ctx, ctx.positionUpdates);
+    clearZeroState(s);
 }
 
 void pushJoints(WorldState& w, const JointContext& ctx) {
@@ -201,6 +211,7 @@ void pushJoints(WorldState& w, const JointContext& ctx) {
             // motors and drives are velocity effects and do not push.
             JointConstraint row = jc;
             row.impulses = JointImpulses{};
+            row.inTree = false;  // the push sweeps every row
             switch (jc.type) {
                 case JointType::revolute:
                     row.row.revolute.enableMotor = row.row.revolute.enableSpring = false;

@@ -87,17 +87,23 @@ void solveRevoluteJoint(JointConstraint& jc, const JointContext& ctx, BodyState&
         }
     }
 
+    if (jc.inTree) return;  // the point is solved with its tree (joint_tree.cpp)
+
     // The point constraint, solved as one 2×2 block.
     const Vec2 rA = rotate(sA.dq, jc.rA), rB = rotate(sB.dq, jc.rB);
     const Vec2 cdot = (sB.v + cross(sB.w, rB)) - (sA.v + cross(sA.w, rA));
     const Vec2 separation = (sB.dp - sA.dp) + (rB - rA) + jc.deltaCenter;
     const RowBias rb = rigidBias(ctx, 1.0f);  // the rates, applied to each component of the separation
-    const float mA = jc.invMassA, mB = jc.invMassB;
-    const Sym22 K = pointMatrix(mA, iA, mB, iB, rA, rB);
-    const Vec2 x = solveSymmetric22(K, cdot + rb.bias * separation);
+    const Vec2 x = solvePointRows(jc, rA, rB, cdot + rb.bias * separation);
     const Vec2 impulse = -rb.massScale * x - rb.impulseScale * acc.linear;
     acc.linear += impulse;
     applyImpulse(jc, rA, rB, impulse, 0.0f, sA, sB);
+}
+
+void revoluteEqualityRows(const JointConstraint& jc, const BodyState& sA, const BodyState& sB, EqualityRows& rows) {
+    const Vec2 rA = rotate(sA.dq, jc.rA), rB = rotate(sB.dq, jc.rB);
+    rows.count = 2;
+    pointRows(rA, rB, (sB.dp - sA.dp) + (rB - rA) + jc.deltaCenter, rows);
 }
 
 }  // namespace i2d::detail

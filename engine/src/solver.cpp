@@ -217,12 +217,11 @@ void dropNonFinitePush(SolverArrays& s) {
 
 /// Joint sweeps in each substep's solve stage (soft_step). A chain carrying a
 /// heavy body (heavy_chain: 100 kg on 1 kg links) is a stiff, badly
-/// conditioned system: one Gauss-Seidel sweep per substep left most of each
-/// link's share of the load unresolved, so the soft rows stretched far beyond
-/// their spring compliance and, at jointHertz 60, grew unstable. A second sweep
-/// costs little (joints are few next to contacts) and holds the chain: total
-/// stretch after 5 s 3.09 m → 1.01 m (docs/performance.md).
-constexpr int kJointSolvePasses = 2;
+/// conditioned system that one Gauss-Seidel sweep per substep left stretched
+/// (3.1 m in total after 5 s; two sweeps: 1.0 m). Such trees of unlike masses
+/// are now solved exactly (joint_tree.cpp: 0.35 m, the rows' compliance), so
+/// one sweep suffices, as in Box2D v3; it saves a seventh of joint_grid's step.
+constexpr int kJointSolvePasses = 1;
 
 // ---------------------------------------------------------------------------
 // The solve stage
@@ -271,10 +270,9 @@ void solve(WorldState& w, float dt) {
     prepareContacts(w, h, soft);
     prepareJoints(w, dt);
     // Joint stiffness capped at 1/4 of the substep rate, so jointHertz 60 holds
-    // at 4 substeps as in Box2D v3 (twice its contact hertz). This needs the two
-    // joint sweeps of the solve stage (kJointSolvePasses): with one, a 100:1
-    // chain of distance joints diverged at this stiffness, and at the former
-    // cap of 1/8 it stretched by 3.1 m.
+    // at 4 substeps as in Box2D v3 (twice its contact hertz). Swept by one
+    // Gauss-Seidel pass, a 100:1 chain of distance joints diverged at this
+    // stiffness; the exact solve of such trees (joint_tree.cpp) holds it.
     JointContext jointCtx;
     jointCtx.h = h;
     jointCtx.invH = 1.0f / h;
@@ -305,6 +303,7 @@ void solve(WorldState& w, float dt) {
             for (int pass = 0; pass < kJointSolvePasses; ++pass) joints(SolvePass::soft_bias);
             contacts(SolvePass::soft_bias, h);
             integratePositions(s, h, maxSpeed);
+            ++jointCtx.positionUpdates;
             joints(SolvePass::soft_relax);
             contacts(i + 1 == substeps ? SolvePass::soft_relax_last : SolvePass::soft_relax, h);
         }

@@ -7,6 +7,7 @@
 #include "body.hpp"
 #include "contact_solver.hpp"
 #include "joint.hpp"
+#include "joint_tree.hpp"
 #include "scratch_array.hpp"
 
 namespace i2d::detail {
@@ -28,6 +29,7 @@ struct SolverArrays {
     int rowCount = 0;                             ///< contact rows this step
     std::vector<JointConstraint> joints;          ///< in colour order (joint_solver.cpp)
     std::vector<JointConstraint> jointScratch;    ///< the colour sort's other buffer
+    JointTrees trees;                             ///< joints solved exactly (joint_tree.cpp)
     std::vector<std::uint8_t> jointColours;
     std::vector<int> deepContactCount;       ///< per state: contacts overlapping deeper than kDeepOverlap
     std::vector<RollingConstraint> rolling;  ///< contacts with rolling resistance (contact_solver.cpp)

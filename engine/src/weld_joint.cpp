@@ -45,6 +45,7 @@ void solveWeldJoint(JointConstraint& jc, const JointContext& ctx, BodyState& sA,
         sA.w -= iA * impulse;
         sB.w += iB * impulse;
     }
+    if (jc.inTree) return;  // a rigid weld is solved with its tree (joint_tree.cpp)
     const Vec2 rA = rotate(sA.dq, jc.rA), rB = rotate(sB.dq, jc.rB);
     const Vec2 cdot = (sB.v + cross(sB.w, rB)) - (sA.v + cross(sA.w, rA));
     const Vec2 separation = (sB.dp - sA.dp) + (rB - rA) + jc.deltaCenter;
@@ -86,6 +87,16 @@ void solveWeldJoint(JointConstraint& jc, const JointContext& ctx, BodyState& sA,
     const Vec2 impulse = -rb.massScale * x - rb.impulseScale * acc.linear;
     acc.linear += impulse;
     applyImpulse(jc, rA, rB, impulse, 0.0f, sA, sB);
+}
+
+void weldEqualityRows(const JointConstraint& jc, const BodyState& sA, const BodyState& sB, EqualityRows& rows) {
+    const Vec2 rA = rotate(sA.dq, jc.rA), rB = rotate(sB.dq, jc.rB);
+    rows.count = 3;
+    pointRows(rA, rB, (sB.dp - sA.dp) + (rB - rA) + jc.deltaCenter, rows);
+    rows.jA[2][0] = rows.jA[2][1] = rows.jB[2][0] = rows.jB[2][1] = 0.0f;
+    rows.jA[2][2] = -1.0f;
+    rows.jB[2][2] = 1.0f;
+    rows.error[2] = unwindAngle(relativeAngle(jc, sA, sB) - jc.row.weld.referenceAngle);
 }
 
 }  // namespace i2d::detail

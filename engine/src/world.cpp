@@ -32,6 +32,8 @@ void validateSettings(const WorldSettings& s) {
     requireInRange(s.contactDampingRatio, 0.0f, detail::kMaxRate, "contactDampingRatio");
     requireInRange(s.jointHertz, 0.0f, detail::kMaxRate, "jointHertz");
     requireInRange(s.jointDampingRatio, 0.0f, detail::kMaxRate, "jointDampingRatio");
+    if (!(s.exactJointMassRatio >= 1.0f))
+        fail("exactJointMassRatio must be >= 1 (infinity: no joint tree is solved exactly)");
     requireNonNegative(s.restitutionThreshold, "restitutionThreshold");
     requireNonNegative(s.hitEventThreshold, "hitEventThreshold");
     requireNonNegative(s.impactThreshold, "impactThreshold");

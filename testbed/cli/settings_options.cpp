@@ -12,7 +12,9 @@ const char* settingsOptionsHelp() {
            "  --correction MODE         soft_step | baumgarte | split\n"
            "  --impact MODEL            closed_form | velocity_bias\n"
            "  --sleep on|off            enable or disable sleeping\n"
-           "  --manifold-reuse D        manifold reuse distance (m); 0 recomputes every manifold every step\n";
+           "  --manifold-reuse D        manifold reuse distance (m); 0 recomputes every manifold every step\n"
+           "  --exact-joint-mass-ratio R  joint trees whose heaviest body is at least R times the lightest\n"
+           "                            are solved exactly (1: every tree; 1e30: none)\n";
 }
 
 void SettingsOverrides::applyTo(i2d::WorldSettings& s) const {
@@ -23,6 +25,7 @@ void SettingsOverrides::applyTo(i2d::WorldSettings& s) const {
     if (impact) s.impactModel = *impact;
     if (sleep) s.enableSleep = *sleep;
     if (manifoldReuse) s.manifoldReuseDistance = *manifoldReuse;
+    if (exactJointMassRatio) s.exactJointMassRatio = *exactJointMassRatio;
 }
 
 Box2DSettings SettingsOverrides::box2dSettings() const {
@@ -45,6 +48,8 @@ bool parseSettingsOption(ArgReader& r, SettingsOverrides& o) {
         o.impact = r.choice<i2d::ImpactModel>();
     } else if (r.is("--manifold-reuse")) {
         o.manifoldReuse = static_cast<float>(r.number(0.0, 10.0));
+    } else if (r.is("--exact-joint-mass-ratio")) {
+        o.exactJointMassRatio = static_cast<float>(r.number(1.0, 1.0e30));
     } else if (r.is("--sleep")) {
         o.sleep = r.onOff();
     } else {

@@ -17,6 +17,7 @@ struct SettingsOverrides {
     std::optional<int> positionIterations;
     std::optional<int> substeps;
     std::optional<float> manifoldReuse;
+    std::optional<float> exactJointMassRatio;
     std::optional<i2d::PositionCorrection> correction;
     std::optional<i2d::ImpactModel> impact;
     std::optional<bool> sleep;

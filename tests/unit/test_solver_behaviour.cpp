@@ -3,6 +3,7 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <cstdio>
 #include <cstring>
 #include <vector>
 
@@ -78,9 +79,10 @@ TEST(SolverBehaviour, PyramidSettlesWithoutSwaying) {
 
 TEST(SolverBehaviour, ChainHoldsAHundredTimesHeavierWeight) {
     // heavy_chain: a 100 kg box swinging on 21 distance joints through 20
-    // links of 1 kg. With one joint sweep per substep and joints capped at
-    // 30 Hz the joints stretched by 3.1 m in total after 5 s; with two sweeps
-    // at 60 Hz by about 1.0 m.
+    // links of 1 kg. Swept by Gauss-Seidel, one sweep per substep with joints
+    // capped at 30 Hz, the joints stretched by 3.1 m in total after 5 s, two
+    // sweeps at 60 Hz by about 1.0 m. The chain is a tree with a mass ratio of
+    // 100, so its rows are now solved exactly (joint_tree.cpp).
     World world;
     BodyId prev = world.createBody({});
     Vec2 prevAnchor{0.0f, 21.0f};
@@ -112,7 +114,11 @@ TEST(SolverBehaviour, ChainHoldsAHundredTimesHeavierWeight) {
     for (int i = 0; i < 5 * 60; ++i) world.step(kDt);
     for (JointId j : joints) stretch += world.distanceJointCurrentLength(j) - world.distanceJointDef(j).length;
     ASSERT_TRUE(std::isfinite(stretch));
-    EXPECT_LT(stretch, 1.5f);
+    std::printf("[figure] heavy chain: total stretch after 5 s %.3f m\n", stretch);
+    // Measured 0.35 m, the soft rows' compliance under the swinging load (each
+    // row's stiffness is its own effective mass times (2π·60 Hz)²); the sweep's
+    // 1.0 m fails the bound, so losing the exact solve is caught.
+    EXPECT_LT(stretch, 0.5f);
 }
 
 TEST(SolverBehaviour, SlidingBoxStopsAtTheAnalyticDistance) {

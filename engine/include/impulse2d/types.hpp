@@ -80,6 +80,13 @@ struct WorldSettings {
     /// (the stiffness is capped at a quarter of the substep rate: 60 Hz at 60 Hz × 4 substeps).
     float jointHertz = 60.0f;
     float jointDampingRatio = 2.0f;
+    /// Joints whose bodies form a tree (a chain, a ragdoll) have their
+    /// equality rows (the revolute joint's point, a rigid weld, a rigid
+    /// distance joint) solved exactly, not swept, when the tree's heaviest
+    /// body is at least this many times its lightest: Gauss-Seidel leaves a
+    /// chain carrying a heavy body stretched (docs/joints.md). 1 solves every
+    /// tree exactly; infinity none. Dimensionless, ≥ 1.
+    float exactJointMassRatio = 10.0f;
 
     /// Approach speed (m/s) below which a contact gets no restitution
     /// (velocity_bias; with closed_form, impactThreshold decides which

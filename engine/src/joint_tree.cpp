@@ -1,0 +1,426 @@
+// The exact solve of joint trees: Baraff (1996), Linear-Time Dynamics using
+// Lagrange Multipliers, §4–§6.
+//
+// Why. A chain of joints carrying a heavy body is badly conditioned: a
+// Gauss-Seidel sweep moves each link by its own small mass, so the load of a
+// body 100× a link's mass reaches the top of a 20-link chain only over many
+// sweeps, and what is not resolved stretches the joints (chain_swing: 7.2 cm).
+// The equality rows of joints whose bodies form a tree can instead be solved
+// exactly, in time linear in their number.
+//
+// The system. With unknowns Δv (every body of the tree) and Δλ (every row of
+// its joints), the rows' velocity targets J(v + Δv) + b + Γ(λ + Δλ) = 0 and
+// Newton's law M Δv = Jᵀ Δλ form the symmetric system
+//   [ M   Jᵀ ] [  Δv ]   [ 0 ]
+//   [ J  −Γ  ] [ −Δλ ] = [ r ],   r = −(J v + b + Γ λ).
+// Γ is the soft step's compliance: a row whose impulse is
+// −massScale·K⁻¹(Jv + b) − impulseScale·λ (joint_rows.hpp) satisfies
+// Jv + b + Γλ = 0 with Γ = K·impulseScale/massScale, K the joint's own block;
+// Γ = 0 in the relax and baumgarte passes.
+//
+// The graph of this matrix has a node per body and per joint, and an edge
+// where a joint acts on a body: a tree when the joints form one. Eliminating
+// the nodes leaves first, each node's block becomes D_i = H_ii − Σ_c B_cᵀ D_c⁻¹ B_c
+// over its children c (B_c = H_c,parent), with no fill-in (Baraff's §5).
+// Bodies that do not move (static, kinematic, sleeping) are not nodes; the
+// forest is spanned with all of them as one node, so a tree holds at most one
+// joint to them and that joint is its root. Every other joint node then has a
+// body child, so its block never is the bare −Γ (zero when rigid).
+#include "joint_tree.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <numeric>
+
+#include "world_state.hpp"
+
+namespace i2d::detail {
+
+// ---------------------------------------------------------------------------
+// The rows each joint type hands over (their maths is in each type's file).
+
+int equalityRowCount(const JointConstraint& jc) {
+    switch (jc.type) {
+        case JointType::revolute: return 2;
+        case JointType::weld: return jc.row.weld.linearHertz == 0.0f && jc.row.weld.angularHertz == 0.0f ? 3 : 0;
+        case JointType::distance: return jc.row.distance.rigid ? 1 : 0;
+        default: return 0;
+    }
+}
+
+void equalityRows(const JointConstraint& jc, const BodyState& sA, const BodyState& sB, EqualityRows& rows) {
+    switch (jc.type) {
+        case JointType::revolute: revoluteEqualityRows(jc, sA, sB, rows); break;
+        case JointType::weld: weldEqualityRows(jc, sA, sB, rows); break;
+        case JointType::distance: distanceEqualityRows(jc, sA, sB, rows); break;
+        default: rows.count = 0; break;
+    }
+}
+
+namespace {
+
+void readImpulse(const JointConstraint& jc, double out[3]) {
+    const JointImpulses& acc = jc.impulses;
+    out[0] = out[1] = out[2] = 0.0;
+    if (jc.type == JointType::distance) {
+        out[0] = acc.axial;
+    } else {
+        out[0] = acc.linear.x;
+        out[1] = acc.linear.y;
+        out[2] = acc.angular;  // the weld's angle row (0 for a revolute joint)
+    }
+}
+
+void addImpulse(JointConstraint& jc, const double delta[3]) {
+    JointImpulses& acc = jc.impulses;
+    if (jc.type == JointType::distance) {
+        acc.axial += static_cast<float>(delta[0]);
+    } else {
+        acc.linear.x += static_cast<float>(delta[0]);
+        acc.linear.y += static_cast<float>(delta[1]);
+        if (jc.type == JointType::weld) acc.angular += static_cast<float>(delta[2]);
+    }
+}
+
+using Block = double[3][3];
+
+void setZero(Block m) {
+    for (int i = 0; i < 3; ++i)
+        for (int j = 0; j < 3; ++j) m[i][j] = 0.0;
+}
+
+/// m ← m⁻¹ for a symmetric 3×3 block (cofactors); a singular block becomes
+/// zero, which drops what it couples instead of spreading infinities.
+void invertSymmetric(Block m) {
+    const double a = m[0][0], b = m[0][1], c = m[0][2], d = m[1][1], e = m[1][2], f = m[2][2];
+    const double c00 = d * f - e * e, c01 = c * e - b * f, c02 = b * e - c * d;
+    const double det = a * c00 + b * c01 + c * c02;
+    if (!(std::abs(det) > 0.0) || !std::isfinite(det)) {
+        setZero(m);
+        return;
+    }
+    const double inv = 1.0 / det;
+    const double c11 = a * f - c * c, c12 = b * c - a * e, c22 = a * d - b * b;
+    m[0][0] = c00 * inv, m[0][1] = m[1][0] = c01 * inv, m[0][2] = m[2][0] = c02 * inv;
+    m[1][1] = c11 * inv, m[1][2] = m[2][1] = c12 * inv, m[2][2] = c22 * inv;
+}
+
+/// Union-find root with path halving.
+int findRoot(std::vector<int>& parent, int i) {
+    while (parent[static_cast<std::size_t>(i)] != i) {
+        int& p = parent[static_cast<std::size_t>(i)];
+        p = parent[static_cast<std::size_t>(p)];
+        i = p;
+    }
+    return i;
+}
+
+/// The state index of a joint side that moves, or `ground` for one that does not.
+int movingSide(int index, float invMass, float invI, int ground) {
+    return index >= 0 && (invMass != 0.0f || invI != 0.0f) ? index : ground;
+}
+
+}  // namespace
+
+void buildJointTrees(WorldState& w) {
+    SolverArrays& s = w.solver;
+    JointTrees& t = s.trees;
+    t.nodes.clear();
+    t.factoredPositions = -1;
+    const int ground = static_cast<int>(s.stateBodies.size());
+    const std::size_t bodySlots = static_cast<std::size_t>(ground) + 1;
+
+    // The spanning forest, all immovable bodies one node, in row order.
+    t.unionParent.resize(bodySlots);
+    std::iota(t.unionParent.begin(), t.unionParent.end(), 0);
+    int treeJoints = 0;
+    for (JointConstraint& jc : s.joints) {
+        jc.inTree = false;
+        if (equalityRowCount(jc) == 0) continue;
+        const int a = movingSide(jc.a, jc.invMassA, jc.invIA, ground);
+        const int b = movingSide(jc.b, jc.invMassB, jc.invIB, ground);
+        const int ra = findRoot(t.unionParent, a), rb = findRoot(t.unionParent, b);
+        if (ra == rb) continue;  // closes a loop (or joins two immovable bodies): stays in the sweep
+        t.unionParent[static_cast<std::size_t>(ra)] = rb;
+        jc.inTree = true;
+        ++treeJoints;
+    }
+    if (treeJoints == 0) return;
+
+    // Which components could hold a tree worth solving exactly: those whose
+    // heaviest body is massRatio times their lightest (a component joined
+    // through the immovable bodies holds several trees; each is checked again
+    // below). Most worlds of alike bodies stop here.
+    const float massRatio = w.settings.exactJointMassRatio;
+    t.lightest.assign(bodySlots, INFINITY);
+    t.heaviest.assign(bodySlots, 0.0f);
+    for (int body = 0; body < ground; ++body) {
+        const float invMass = w.bodies[s.stateBodies[static_cast<std::size_t>(body)]].invMass;
+        const float mass = invMass > 0.0f ? 1.0f / invMass : INFINITY;
+        const std::size_t root = static_cast<std::size_t>(findRoot(t.unionParent, body));
+        t.lightest[root] = std::min(t.lightest[root], mass);
+        t.heaviest[root] = std::max(t.heaviest[root], mass);
+    }
+    treeJoints = 0;
+    for (JointConstraint& jc : s.joints) {
+        if (!jc.inTree) continue;
+        const std::size_t root = static_cast<std::size_t>(
+            findRoot(t.unionParent, movingSide(jc.a, jc.invMassA, jc.invIA, ground)));
+        jc.inTree = t.heaviest[root] >= massRatio * t.lightest[root];
+        treeJoints += jc.inTree;
+    }
+    if (treeJoints == 0) return;
+
+    // Each body's tree joints (compressed rows).
+    t.adjacencyStart.assign(bodySlots + 1, 0);
+    for (const JointConstraint& jc : s.joints) {
+        if (!jc.inTree) continue;
+        ++t.adjacencyStart[static_cast<std::size_t>(movingSide(jc.a, jc.invMassA, jc.invIA, ground)) + 1];
+        ++t.adjacencyStart[static_cast<std::size_t>(movingSide(jc.b, jc.invMassB, jc.invIB, ground)) + 1];
+    }
+    std::partial_sum(t.adjacencyStart.begin(), t.adjacencyStart.end(), t.adjacencyStart.begin());
+    t.adjacency.resize(static_cast<std::size_t>(t.adjacencyStart.back()));
+    {
+        std::vector<int>& fill = t.unionParent;  // reused as write cursors
+        std::copy(t.adjacencyStart.begin(), t.adjacencyStart.end() - 1, fill.begin());
+        for (std::size_t r = 0; r < s.joints.size(); ++r) {
+            const JointConstraint& jc = s.joints[r];
+            if (!jc.inTree) continue;
+            for (int side : {movingSide(jc.a, jc.invMassA, jc.invIA, ground),
+                             movingSide(jc.b, jc.invMassB, jc.invIB, ground)})
+                t.adjacency[static_cast<std::size_t>(fill[static_cast<std::size_t>(side)]++)] = static_cast<int>(r);
+        }
+    }
+
+    // Breadth-first from the roots: first the joints to immovable bodies,
+    // then a body of each tree that has none. Parents come before children.
+    std::vector<TreeNode>& nodes = t.nodes;
+    nodes.reserve(static_cast<std::size_t>(2 * treeJoints + 1));
+    constexpr int kUnvisited = -1, kDropped = -2;
+    t.nodeOfBody.assign(bodySlots, kUnvisited);
+    std::vector<char> rowTaken(s.joints.size(), 0);
+    auto addBody = [&](int body, int parent) {
+        t.nodeOfBody[static_cast<std::size_t>(body)] = static_cast<int>(nodes.size());
+        TreeNode& node = nodes.emplace_back();
+        node.body = body;
+        node.parent = parent;
+    };
+    auto addJoint = [&](int row, int parent) {
+        rowTaken[static_cast<std::size_t>(row)] = 1;
+        TreeNode& node = nodes.emplace_back();
+        node.row = row;
+        node.parent = parent;
+    };
+    auto expand = [&](std::size_t head) {
+        for (; head < nodes.size(); ++head) {
+            const int self = static_cast<int>(head);
+            if (nodes[head].row >= 0) {
+                const JointConstraint& jc = s.joints[static_cast<std::size_t>(nodes[head].row)];
+                for (int side : {movingSide(jc.a, jc.invMassA, jc.invIA, ground),
+                                 movingSide(jc.b, jc.invMassB, jc.invIB, ground)})
+                    if (side != ground && t.nodeOfBody[static_cast<std::size_t>(side)] == kUnvisited)
+                        addBody(side, self);
+            } else {
+                const std::size_t body = static_cast<std::size_t>(nodes[head].body);
+                for (int k = t.adjacencyStart[body]; k < t.adjacencyStart[body + 1]; ++k) {
+                    const int row = t.adjacency[static_cast<std::size_t>(k)];
+                    if (!rowTaken[static_cast<std::size_t>(row)]) addJoint(row, self);
+                }
+            }
+        }
+    };
+    // A tree whose bodies' masses are alike is left to the sweep: Gauss-Seidel
+    // converges well there, at a third of the exact solve's cost.
+    auto keepOrDrop = [&](std::size_t head) {
+        float lightest = INFINITY, heaviest = 0.0f;
+        for (std::size_t k = head; k < nodes.size(); ++k) {
+            if (nodes[k].body < 0) continue;
+            const float invMass = w.bodies[s.stateBodies[static_cast<std::size_t>(nodes[k].body)]].invMass;
+            const float mass = invMass > 0.0f ? 1.0f / invMass : INFINITY;
+            lightest = std::min(lightest, mass);
+            heaviest = std::max(heaviest, mass);
+        }
+        if (heaviest >= massRatio * lightest) return;
+        for (std::size_t k = head; k < nodes.size(); ++k) {
+            if (nodes[k].row >= 0) s.joints[static_cast<std::size_t>(nodes[k].row)].inTree = false;
+            if (nodes[k].body >= 0) t.nodeOfBody[static_cast<std::size_t>(nodes[k].body)] = kDropped;
+        }
+        nodes.resize(head);
+    };
+    for (int k = t.adjacencyStart[static_cast<std::size_t>(ground)]; k < t.adjacencyStart[bodySlots]; ++k) {
+        const std::size_t head = nodes.size();
+        addJoint(t.adjacency[static_cast<std::size_t>(k)], -1);
+        expand(head);
+        keepOrDrop(head);
+    }
+    for (int body = 0; body < ground; ++body) {
+        const std::size_t b = static_cast<std::size_t>(body);
+        if (t.nodeOfBody[b] != kUnvisited || t.adjacencyStart[b] == t.adjacencyStart[b + 1]) continue;
+        const std::size_t head = nodes.size();
+        addBody(body, -1);
+        expand(head);
+        keepOrDrop(head);
+    }
+    if (nodes.empty()) return;
+
+    // Children before parents: reverse the order.
+    const int last = static_cast<int>(nodes.size()) - 1;
+    std::reverse(nodes.begin(), nodes.end());
+    for (TreeNode& node : nodes)
+        if (node.parent >= 0) node.parent = last - node.parent;
+    for (int& node : t.nodeOfBody)
+        if (node >= 0) node = last - node;
+    for (TreeNode& node : nodes) {
+        if (node.row < 0) continue;
+        const JointConstraint& jc = s.joints[static_cast<std::size_t>(node.row)];
+        const int a = movingSide(jc.a, jc.invMassA, jc.invIA, ground);
+        const int b = movingSide(jc.b, jc.invMassB, jc.invIB, ground);
+        node.nodeA = a == ground ? -1 : t.nodeOfBody[static_cast<std::size_t>(a)];
+        node.nodeB = b == ground ? -1 : t.nodeOfBody[static_cast<std::size_t>(b)];
+    }
+}
+
+namespace {
+
+/// The blocks of every node at the current positions (H_ii and the links),
+/// then their elimination, leaves first.
+void factor(const WorldState& w, SolverArrays& s, JointTrees& t, double gammaScale) {
+    std::vector<TreeNode>& nodes = t.nodes;
+    BodyState& zero = s.states.back();
+    for (TreeNode& node : nodes) {
+        if (node.row >= 0) continue;
+        const Body& b = w.bodies[s.stateBodies[static_cast<std::size_t>(node.body)]];
+        setZero(node.diag);
+        setZero(node.link);
+        // M = diag(m, m, I); a degree of freedom the body lacks (zero inverse)
+        // gets 1 and zero coupling, so its velocity change is zero.
+        const float invMass = b.invMass, invI = b.invInertia;
+        node.mask[0] = node.mask[1] = invMass != 0.0f ? 1.0f : 0.0f;
+        node.mask[2] = invI != 0.0f ? 1.0f : 0.0f;
+        node.diag[0][0] = node.diag[1][1] = invMass != 0.0f ? 1.0 / invMass : 1.0;
+        node.diag[2][2] = invI != 0.0f ? 1.0 / invI : 1.0;
+    }
+    for (std::size_t i = 0; i < nodes.size(); ++i) {
+        TreeNode& node = nodes[i];
+        if (node.row < 0) continue;
+        const JointConstraint& jc = s.joints[static_cast<std::size_t>(node.row)];
+        BodyState& sA = jc.a >= 0 ? s.states[static_cast<std::size_t>(jc.a)] : zero;
+        BodyState& sB = jc.b >= 0 ? s.states[static_cast<std::size_t>(jc.b)] : zero;
+        EqualityRows& rows = node.rows;
+        equalityRows(jc, sA, sB, rows);
+        const int n = rows.count;
+        // Γ = γ·K with K = J_A M_A⁻¹ J_Aᵀ + J_B M_B⁻¹ J_Bᵀ, the joint's own block.
+        const double invA[3] = {jc.invMassA, jc.invMassA, jc.invIA}, invB[3] = {jc.invMassB, jc.invMassB, jc.invIB};
+        setZero(node.compliance);
+        setZero(node.link);
+        setZero(node.diag);
+        for (int r = 0; r < n; ++r)
+            for (int c = 0; c < n; ++c) {
+                double k = 0.0;
+                for (int d = 0; d < 3; ++d)
+                    k += double(rows.jA[r][d]) * invA[d] * rows.jA[c][d] + double(rows.jB[r][d]) * invB[d] * rows.jB[c][d];
+                node.compliance[r][c] = gammaScale * k;
+                node.diag[r][c] = -gammaScale * k;
+            }
+        for (int r = n; r < 3; ++r) node.diag[r][r] = -1.0;  // unused rows: x = 0
+        // The links: this joint's to its parent body, and each child body's to this joint.
+        for (int side = 0; side < 2; ++side) {
+            const int bodyNode = side == 0 ? node.nodeA : node.nodeB;
+            if (bodyNode < 0) continue;
+            const float(*j)[3] = side == 0 ? rows.jA : rows.jB;
+            TreeNode& body = nodes[static_cast<std::size_t>(bodyNode)];
+            if (bodyNode == node.parent) {
+                for (int r = 0; r < n; ++r)
+                    for (int d = 0; d < 3; ++d) node.link[r][d] = double(j[r][d]) * body.mask[d];
+            } else {
+                for (int r = 0; r < n; ++r)
+                    for (int d = 0; d < 3; ++d) body.link[d][r] = double(j[r][d]) * body.mask[d];
+            }
+        }
+    }
+    // Elimination: D_i⁻¹, and D_parent −= B_iᵀ D_i⁻¹ B_i.
+    for (TreeNode& node : nodes) {
+        invertSymmetric(node.diag);
+        if (node.parent < 0) continue;
+        TreeNode& parent = nodes[static_cast<std::size_t>(node.parent)];
+        double db[3][3];  // D⁻¹ B
+        for (int r = 0; r < 3; ++r)
+            for (int c = 0; c < 3; ++c)
+                db[r][c] = node.diag[r][0] * node.link[0][c] + node.diag[r][1] * node.link[1][c] +
+                           node.diag[r][2] * node.link[2][c];
+        for (int r = 0; r < 3; ++r)
+            for (int c = 0; c < 3; ++c)
+                parent.diag[r][c] -= node.link[0][r] * db[0][c] + node.link[1][r] * db[1][c] + node.link[2][r] * db[2][c];
+    }
+}
+
+}  // namespace
+
+void solveJointTrees(WorldState& w, const JointContext& ctx, int positions) {
+    SolverArrays& s = w.solver;
+    JointTrees& t = s.trees;
+    if (t.nodes.empty()) return;
+    const RowBias rb = rigidBias(ctx, 1.0f);  // the rates, applied to each row's error
+    const bool soft = rb.impulseScale != 0.0f;
+    if (t.factoredPositions != positions || t.factoredSoft != soft) {
+        factor(w, s, t, soft && rb.massScale > 0.0f ? double(rb.impulseScale) / rb.massScale : 0.0);
+        t.factoredPositions = positions;
+        t.factoredSoft = soft;
+    }
+    std::vector<TreeNode>& nodes = t.nodes;
+    BodyState& zero = s.states.back();
+
+    // Right-hand sides: 0 for bodies, r = −(J v + b·C + Γ λ) for joints.
+    for (TreeNode& node : nodes) {
+        node.rhs[0] = node.rhs[1] = node.rhs[2] = 0.0;
+        if (node.row < 0) continue;
+        const JointConstraint& jc = s.joints[static_cast<std::size_t>(node.row)];
+        const BodyState& sA = jc.a >= 0 ? s.states[static_cast<std::size_t>(jc.a)] : zero;
+        const BodyState& sB = jc.b >= 0 ? s.states[static_cast<std::size_t>(jc.b)] : zero;
+        const EqualityRows& rows = node.rows;
+        double lambda[3];
+        readImpulse(jc, lambda);
+        for (int r = 0; r < rows.count; ++r) {
+            const double jv = double(rows.jA[r][0]) * sA.v.x + double(rows.jA[r][1]) * sA.v.y +
+                              double(rows.jA[r][2]) * sA.w + double(rows.jB[r][0]) * sB.v.x +
+                              double(rows.jB[r][1]) * sB.v.y + double(rows.jB[r][2]) * sB.w;
+            const double gl = node.compliance[r][0] * lambda[0] + node.compliance[r][1] * lambda[1] +
+                              node.compliance[r][2] * lambda[2];
+            node.rhs[r] = -(jv + double(rb.bias) * rows.error[r] + gl);
+        }
+    }
+    // Forward: y_i = D_i⁻¹ r̂_i, r̂_parent −= B_iᵀ y_i.
+    for (TreeNode& node : nodes) {
+        const double r0 = node.rhs[0], r1 = node.rhs[1], r2 = node.rhs[2];
+        for (int r = 0; r < 3; ++r) node.rhs[r] = node.diag[r][0] * r0 + node.diag[r][1] * r1 + node.diag[r][2] * r2;
+        if (node.parent < 0) continue;
+        TreeNode& parent = nodes[static_cast<std::size_t>(node.parent)];
+        for (int c = 0; c < 3; ++c)
+            parent.rhs[c] -= node.link[0][c] * node.rhs[0] + node.link[1][c] * node.rhs[1] + node.link[2][c] * node.rhs[2];
+    }
+    // Backward, roots first: x_i = y_i − D_i⁻¹ B_i x_parent.
+    for (std::size_t k = nodes.size(); k-- > 0;) {
+        TreeNode& node = nodes[k];
+        if (node.parent < 0) continue;
+        const TreeNode& parent = nodes[static_cast<std::size_t>(node.parent)];
+        double bx[3];
+        for (int r = 0; r < 3; ++r)
+            bx[r] = node.link[r][0] * parent.rhs[0] + node.link[r][1] * parent.rhs[1] + node.link[r][2] * parent.rhs[2];
+        for (int r = 0; r < 3; ++r)
+            node.rhs[r] -= node.diag[r][0] * bx[0] + node.diag[r][1] * bx[1] + node.diag[r][2] * bx[2];
+    }
+    // Apply: Δv to the bodies, Δλ = −x to the joints.
+    for (TreeNode& node : nodes) {
+        if (node.row >= 0) {
+            const double delta[3] = {-node.rhs[0], -node.rhs[1], -node.rhs[2]};
+            addImpulse(s.joints[static_cast<std::size_t>(node.row)], delta);
+        } else {
+            BodyState& st = s.states[static_cast<std::size_t>(node.body)];
+            st.v.x += static_cast<float>(node.rhs[0]) * node.mask[0];
+            st.v.y += static_cast<float>(node.rhs[1]) * node.mask[1];
+            st.w += static_cast<float>(node.rhs[2]) * node.mask[2];
+        }
+    }
+}
+
+}  // namespace i2d::detail

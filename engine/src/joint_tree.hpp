@@ -1,0 +1,55 @@
+// The exact solve of the joints' equality rows where they form a tree
+// (joint_tree.cpp): Baraff (1996), Linear-Time Dynamics using Lagrange
+// Multipliers. Gauss-Seidel converges slowly on a chain carrying a heavy body
+// (the error it leaves grows with the mass ratio and the chain's length); a
+// direct solve of the same rows leaves none, in time linear in the joints.
+#pragma once
+
+#include <vector>
+
+#include "joint_rows.hpp"
+
+namespace i2d::detail {
+
+struct WorldState;
+
+/// A node of the body–joint tree: a body (3 unknowns v_x, v_y, ω) or a joint's
+/// equality rows (up to 3 unknowns: −Δλ), with the blocks of its elimination.
+struct TreeNode {
+    int parent = -1;  ///< node index, −1 for a root
+    int body = -1;    ///< solver state index (body node)
+    int row = -1;     ///< index in SolverArrays::joints (joint node)
+    int nodeA = -1, nodeB = -1;  ///< joint node: the nodes of its bodies (−1: a body that does not move)
+    double diag[3][3];  ///< H_ii, then its Schur complement D_i; after factoring, D_i⁻¹
+    double link[3][3];  ///< H_i,parent: this node's unknowns by the parent's
+    double rhs[3];      ///< right-hand side, then the solution
+    double compliance[3][3];  ///< joint node: Γ of its rows in the factored pass
+    float mask[3];            ///< body node: 1 for a degree of freedom it has (non-zero inverse mass or inertia)
+    EqualityRows rows;        ///< joint node: its rows at the factored positions
+};
+
+/// The trees of one step: nodes with every child before its parent.
+struct JointTrees {
+    std::vector<TreeNode> nodes;
+    std::vector<int> unionParent;  ///< scratch of the spanning-forest search
+    std::vector<int> adjacency, adjacencyStart, nodeOfBody;
+    std::vector<float> lightest, heaviest;  ///< per union-find root (kg)
+    /// What the factorization in `nodes` was made for (see solveJointTrees).
+    int factoredPositions = -1;
+    bool factoredSoft = false;
+};
+
+/// Picks the joints whose equality rows are solved exactly (a spanning forest
+/// of the body–joint graph, every static body one node, so a loop such as a
+/// bridge's or a grid's keeps one or more joints in the Gauss-Seidel sweep),
+/// marks their rows (JointConstraint::inTree) and orders the trees' nodes.
+/// Called after the rows are coloured.
+void buildJointTrees(WorldState& w);
+
+/// Solves the trees' equality rows exactly for the velocities now, in ctx's
+/// pass: (J M⁻¹ Jᵀ + Γ) Δλ = −(J v + b + Γ λ), and applies Δλ. `positions`
+/// counts the position updates of the step: the factorization is reused
+/// while neither it nor the pass changes.
+void solveJointTrees(WorldState& w, const JointContext& ctx, int positions);
+
+}  // namespace i2d::detail
