@@ -51,7 +51,7 @@ void prepareDistanceJoint(const WorldState& w, const Joint& joint, JointConstrai
     row.hertz = def.hertz;
     row.dampingRatio = def.dampingRatio;
     row.enableLimit = def.enableLimit;
-    row.rigid = !(def.enableSpring && (!def.enableLimit || def.minLength < def.maxLength));
+    row.rigid = isRigidDistance(def);
 }
 
 void warmStartDistanceJoint(const JointConstraint& jc, BodyState& sA, BodyState& sB) {

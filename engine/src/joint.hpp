@@ -137,6 +137,19 @@ struct JointConstraint {
 
 static_assert(sizeof(JointConstraint) == 212, "the layout docs/architecture.md gives");
 
+/// What the colouring, the tree search and the wide path need of a joint,
+/// gathered before any row is written (joint_solver.cpp).
+struct JointSlot {
+    int joint = kNullIndex;
+    int a = kNullIndex, b = kNullIndex, c = kNullIndex, d = kNullIndex;  ///< as JointConstraint's
+    float invMassA = 0, invIA = 0, invMassB = 0, invIB = 0;
+    bool movesC = false, movesD = false;  ///< gear: its joints' frames move
+    std::uint8_t equalityRows = 0;        ///< rows the exact tree solve could take (joint_tree.cpp)
+    bool inTree = false;
+    bool wide = false;               ///< solved four at a time (wide_revolute.cpp), with no JointConstraint
+    Vec2 rA{}, rB{}, deltaCenter{};  ///< wide only: as JointConstraint's
+};
+
 /// What a joint's solve needs besides its row and its bodies' states.
 struct JointContext {
     float h = 0.0f, invH = 0.0f;  ///< the (sub)step

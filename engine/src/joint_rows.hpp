@@ -87,6 +87,10 @@ inline Vec2 solveSymmetric22(const Sym22& k, Vec2 b) {
 /// precision when prepareJoints found every entry of K small enough for it
 /// (JointConstraint::singlePrecision: every practical mass ratio), which
 /// costs a third less in the sweep; in double precision otherwise.
+/// Below this bound on every entry of a point matrix, products of two
+/// entries stay within single precision (3.4e38) with room.
+constexpr double kSinglePrecisionBound = 1.0e18;
+
 inline Vec2 solvePointRows(const JointConstraint& jc, Vec2 rA, Vec2 rB, Vec2 b) {
     const float mA = jc.invMassA, iA = jc.invIA, mB = jc.invMassB, iB = jc.invIB;
     if (!jc.singlePrecision) return solveSymmetric22(pointMatrix(mA, iA, mB, iB, rA, rB), b);
@@ -214,7 +218,12 @@ struct EqualityRows {
 /// point, the rigid weld's point and angle, the rigid distance joint's length;
 /// 0 rows for every other joint (its rows stay in the Gauss-Seidel sweep).
 /// Each type's part is in its own file; the dispatch is in joint_tree.cpp.
-int equalityRowCount(const JointConstraint& jc);
+int equalityRowCount(const Joint& joint);
+/// A distance joint whose length is held (not a spring, or a spring pinned
+/// by equal limits).
+inline bool isRigidDistance(const DistanceJointDef& def) {
+    return !(def.enableSpring && (!def.enableLimit || def.minLength < def.maxLength));
+}
 /// Fills the rows at the states' current motion (count = equalityRowCount).
 void equalityRows(const JointConstraint& jc, const BodyState& sA, const BodyState& sB, EqualityRows& rows);
 /// The point rows of anchors rA, rB turned to now: C = p_B − p_A.

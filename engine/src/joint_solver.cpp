@@ -7,11 +7,13 @@
 // contact rows are (solver.cpp), and solved colour by colour, so a chain or
 // grid built in one direction is not swept in that direction.
 #include <algorithm>
+#include <bit>
 #include <cmath>
 
 #include "distance_joint.hpp"
 #include "joint_solver.hpp"
 #include "joint_tree.hpp"
+#include "wide_revolute.hpp"
 #include "world_state.hpp"
 
 namespace i2d::detail {
@@ -36,51 +38,67 @@ BodyState& stateOf(SolverArrays& s, int index) {
 /// in solver.cpp), and must not reach the next sweep.
 void clearZeroState(SolverArrays& s) { s.states.back() = BodyState{}; }
 
+/// Colours the slots (greedy, in slot order) and orders them by (colour,
+/// wide): s.jointOrder lists slot indices, colour c's from jointColourStart[c],
+/// its wide ones from jointWideStart[c]. The overflow colour (rows that share
+/// bodies) is never wide.
 void colourJoints(SolverArrays& s) {
-    std::vector<JointConstraint>& rows = s.joints;
-    const std::size_t bodyCount = s.stateBodies.size();
-    const std::size_t words = (bodyCount + 63) / 64;
-    s.colourBits.assign(words * kJointColours, 0u);
+    std::vector<JointSlot>& slots = s.jointSlots;
+    // Per body, the colours its rows took so far (bit c: colour c); a row
+    // takes the lowest colour none of its movable bodies has.
+    std::vector<std::uint32_t>& used = s.bodyColours;
+    used.assign(s.stateBodies.size(), 0u);
     std::vector<std::uint8_t>& colours = s.jointColours;
-    colours.resize(rows.size());
-    int counts[kJointColours + 1] = {};
-    for (std::size_t i = 0; i < rows.size(); ++i) {
-        const JointConstraint& jc = rows[i];
-        struct Side {
-            int index;
-            bool moves;
-        } sides[4] = {{jc.a, jc.invMassA != 0.0f || jc.invIA != 0.0f},
-                      {jc.b, jc.invMassB != 0.0f || jc.invIB != 0.0f},
-                      {jc.c, jc.invMassC != 0.0f || jc.invIC != 0.0f},
-                      {jc.d, jc.invMassD != 0.0f || jc.invID != 0.0f}};
-        int colour = kJointColours;
-        for (int c = 0; c < kJointColours && colour == kJointColours; ++c) {
-            std::uint64_t* bits = s.colourBits.data() + static_cast<std::size_t>(c) * words;
-            bool free = true;
-            for (const Side& side : sides)
-                if (side.moves && side.index >= 0 &&
-                    (bits[static_cast<std::size_t>(side.index) / 64] >> (side.index % 64) & 1u))
-                    free = false;
-            if (!free) continue;
-            for (const Side& side : sides)
-                if (side.moves && side.index >= 0)
-                    bits[static_cast<std::size_t>(side.index) / 64] |= std::uint64_t{1} << (side.index % 64);
-            colour = c;
-        }
-        colours[i] = static_cast<std::uint8_t>(colour);
-        ++counts[colour];
+    colours.resize(slots.size());
+    int counts[2 * (kJointColours + 1)] = {};
+    for (std::size_t i = 0; i < slots.size(); ++i) {
+        JointSlot& jc = slots[i];
+        const int sides[4] = {jc.invMassA != 0.0f || jc.invIA != 0.0f ? jc.a : kNullIndex,
+                              jc.invMassB != 0.0f || jc.invIB != 0.0f ? jc.b : kNullIndex,
+                              jc.movesC ? jc.c : kNullIndex, jc.movesD ? jc.d : kNullIndex};
+        std::uint32_t taken = 0u;
+        for (int side : sides)
+            if (side >= 0) taken |= used[static_cast<std::size_t>(side)];
+        const std::uint32_t free = ~taken & ((std::uint32_t{1} << kJointColours) - 1u);
+        const int colour = free != 0u ? std::countr_zero(free) : kJointColours;
+        if (colour < kJointColours)
+            for (int side : sides)
+                if (side >= 0) used[static_cast<std::size_t>(side)] |= std::uint32_t{1} << colour;
+        jc.wide = jc.wide && !jc.inTree && colour < kJointColours;
+        colours[i] = static_cast<std::uint8_t>(2 * colour + (jc.wide ? 1 : 0));
+        ++counts[colours[i]];
     }
-    // Stable counting sort by colour.
+    // Stable counting sort by (colour, wide).
     int offset = 0;
     for (int& n : counts) {
         const int c = n;
         n = offset;
         offset += c;
     }
-    s.jointScratch.resize(rows.size());
-    for (std::size_t i = 0; i < rows.size(); ++i)
-        s.jointScratch[static_cast<std::size_t>(counts[colours[i]]++)] = rows[i];
-    rows.swap(s.jointScratch);
+    // counts[k] is now the first place of group k: colour c's slots start at
+    // group 2c, its wide ones at group 2c + 1.
+    s.jointColourStart.resize(kJointColours + 2);
+    s.jointWideStart.resize(kJointColours + 1);
+    for (int c = 0; c <= kJointColours; ++c) {
+        s.jointColourStart[static_cast<std::size_t>(c)] = counts[2 * c];
+        s.jointWideStart[static_cast<std::size_t>(c)] = counts[2 * c + 1];
+    }
+    s.jointColourStart[kJointColours + 1] = static_cast<int>(slots.size());
+    s.jointOrder.resize(slots.size());
+    for (std::size_t i = 0; i < slots.size(); ++i)
+        s.jointOrder[static_cast<std::size_t>(counts[colours[i]]++)] = static_cast<int>(i);
+}
+
+/// The wide blocks of each colour's wide slots, and where each colour's begin.
+void packWideRows(const WorldState& w, SolverArrays& s) {
+    s.wideRevolutes.clear();
+    s.wideBlockStart.resize(kJointColours + 2);
+    for (int c = 0; c <= kJointColours; ++c) {
+        s.wideBlockStart[static_cast<std::size_t>(c)] = static_cast<int>(s.wideRevolutes.size());
+        packWideRevolutes(w, s, s.jointWideStart[static_cast<std::size_t>(c)],
+                          s.jointColourStart[static_cast<std::size_t>(c) + 1]);
+    }
+    s.wideBlockStart[kJointColours + 1] = static_cast<int>(s.wideRevolutes.size());
 }
 
 void fillBody(const WorldState& w, int body, int& index, float& invMass, float& invI) {
@@ -91,14 +109,28 @@ void fillBody(const WorldState& w, int body, int& index, float& invMass, float& 
     invI = index >= 0 ? b.invInertia : 0.0f;
 }
 
+/// A revolute joint with its point rows only, in a step that may solve it
+/// four at a time (not split mode, whose push sweeps every row), with a point
+/// matrix that fits single precision (see solvePointRows).
+bool wideCandidate(const WorldState& w, const Joint& joint, const Body& bA, const Body& bB, const JointSlot& slot) {
+    if (joint.type != JointType::revolute || w.settings.positionCorrection == PositionCorrection::split) return false;
+    const RevoluteJointDef& def = std::get<RevoluteJointDef>(joint.def);
+    if (def.enableLimit || def.enableMotor || def.enableSpring) return false;
+    const double bound = double(slot.invMassA) + slot.invMassB +
+                         double(slot.invIA) * lengthSquared(def.localAnchorA - bA.localCenter) +
+                         double(slot.invIB) * lengthSquared(def.localAnchorB - bB.localCenter);
+    return bound < kSinglePrecisionBound;
+}
+
 }  // namespace
 
 void prepareJoints(WorldState& w, float dt) {
     SolverArrays& s = w.solver;
-    std::vector<JointConstraint>& rows = s.joints;
-    rows.clear();
-    rows.reserve(static_cast<std::size_t>(w.joints.count));  // one allocation (the array may have been freed)
-    const bool warm = w.settings.enableWarmStarting;
+    // What every joint with an awake body needs for the colouring and the
+    // tree search; its row is written afterwards (or its wide lane).
+    std::vector<JointSlot>& slots = s.jointSlots;
+    slots.clear();
+    float leastInverseMass = INFINITY, mostInverseMass = 0.0f;
     for (int j = 0; j < w.joints.capacity(); ++j) {
         const Joint& joint = w.joints[j];
         if (!joint.alive) continue;
@@ -106,11 +138,55 @@ void prepareJoints(WorldState& w, float dt) {
         const Body& bB = w.bodies[joint.bodyB];
         if (!bA.awake && !bB.awake) continue;
         if (!bA.enabled || !bB.enabled) continue;  // a joint on a disabled body acts on nothing
+        JointSlot& slot = slots.emplace_back();
+        slot.joint = j;
+        fillBody(w, joint.bodyA, slot.a, slot.invMassA, slot.invIA);
+        fillBody(w, joint.bodyB, slot.b, slot.invMassB, slot.invIB);
+        if (joint.type == JointType::gear) {
+            float m, i;
+            fillBody(w, w.joints[joint.joint1].bodyA, slot.c, m, i);
+            slot.movesC = m != 0.0f || i != 0.0f;
+            fillBody(w, w.joints[joint.joint2].bodyA, slot.d, m, i);
+            slot.movesD = m != 0.0f || i != 0.0f;
+        }
+        slot.equalityRows = static_cast<std::uint8_t>(equalityRowCount(joint));
+        slot.wide = wideCandidate(w, joint, bA, bB, slot);
+        if (slot.wide) {
+            // As setAnchors (joint_rows.hpp): from the centres of mass, in world axes.
+            const RevoluteJointDef& def = std::get<RevoluteJointDef>(joint.def);
+            slot.rA = rotate(bA.xf.q, def.localAnchorA - bA.localCenter);
+            slot.rB = rotate(bB.xf.q, def.localAnchorB - bB.localCenter);
+            slot.deltaCenter = bB.center - bA.center;
+        }
+        for (float inverse : {slot.invMassA, slot.invMassB})
+            if (inverse > 0.0f) {
+                leastInverseMass = std::min(leastInverseMass, inverse);
+                mostInverseMass = std::max(mostInverseMass, inverse);
+            }
+    }
+    selectTreeJoints(w, slots, leastInverseMass, mostInverseMass);
+    colourJoints(s);
+
+    // The rows of the slots the wide path does not take, in slot order; the
+    // order's scalar places then name rows instead of slots.
+    std::vector<JointConstraint>& rows = s.joints;
+    rows.clear();
+    const bool warm = w.settings.enableWarmStarting;
+    std::vector<int>& rowOfSlot = s.jointScratch;
+    rowOfSlot.assign(slots.size(), kNullIndex);
+    for (std::size_t i = 0; i < slots.size(); ++i) {
+        const JointSlot& slot = slots[i];
+        if (slot.wide) continue;
+        rowOfSlot[i] = static_cast<int>(rows.size());
+        const Joint& joint = w.joints[slot.joint];
+        const Body& bA = w.bodies[joint.bodyA];
+        const Body& bB = w.bodies[joint.bodyB];
         JointConstraint& jc = rows.emplace_back();
-        jc.joint = j;
+        jc.joint = slot.joint;
         jc.type = joint.type;
-        fillBody(w, joint.bodyA, jc.a, jc.invMassA, jc.invIA);
-        fillBody(w, joint.bodyB, jc.b, jc.invMassB, jc.invIB);
+        jc.inTree = slot.inTree;
+        jc.a = slot.a, jc.b = slot.b;
+        jc.invMassA = slot.invMassA, jc.invIA = slot.invIA, jc.invMassB = slot.invMassB, jc.invIB = slot.invIB;
         jc.deltaCenter = bB.center - bA.center;
         jc.qA = bA.xf.q;
         jc.qB = bB.xf.q;
@@ -131,53 +207,73 @@ void prepareJoints(WorldState& w, float dt) {
                 break;
         }
         // Every entry of the point matrix is at most m_A⁻¹ + m_B⁻¹ + I_A⁻¹|r_A|² + I_B⁻¹|r_B|²
-        // (the anchors turn, their lengths stay); its products stay in single
-        // precision below 1e18 each.
+        // (the anchors turn, their lengths stay).
         const double bound = double(jc.invMassA) + jc.invMassB + double(jc.invIA) * lengthSquared(jc.rA) +
                              double(jc.invIB) * lengthSquared(jc.rB);
-        jc.singlePrecision = bound < 1.0e18;
+        jc.singlePrecision = bound < kSinglePrecisionBound;
     }
-    colourJoints(s);
+    for (std::size_t c = 0; c + 1 < s.jointColourStart.size(); ++c)
+        for (int r = s.jointColourStart[c]; r < s.jointWideStart[c]; ++r) {
+            int& place = s.jointOrder[static_cast<std::size_t>(r)];
+            place = rowOfSlot[static_cast<std::size_t>(place)];
+        }
     buildJointTrees(w);
+    packWideRows(w, s);
+}
+
+/// Colour by colour: the scalar rows, then the wide blocks.
+template <class ScalarRow, class WideBlocks>
+void sweepColours(SolverArrays& s, ScalarRow&& scalarRow, WideBlocks&& wideBlocks) {
+    for (std::size_t c = 0; c + 1 < s.jointColourStart.size(); ++c) {
+        for (int r = s.jointColourStart[c]; r < s.jointWideStart[c]; ++r)
+            scalarRow(s.joints[static_cast<std::size_t>(s.jointOrder[static_cast<std::size_t>(r)])]);
+        if (s.wideBlockStart[c] < s.wideBlockStart[c + 1]) wideBlocks(s.wideBlockStart[c], s.wideBlockStart[c + 1]);
+    }
 }
 
 void warmStartJoints(WorldState& w) {
     SolverArrays& s = w.solver;
-    for (JointConstraint& jc : s.joints) {
-        BodyState& sA = stateOf(s, jc.a);
-        BodyState& sB = stateOf(s, jc.b);
-        switch (jc.type) {
-            case JointType::distance: warmStartDistanceJoint(jc, sA, sB); break;
-            case JointType::revolute: warmStartRevoluteJoint(jc, sA, sB); break;
-            case JointType::prismatic: warmStartPrismaticJoint(jc, sA, sB); break;
-            case JointType::weld: warmStartWeldJoint(jc, sA, sB); break;
-            case JointType::wheel: warmStartWheelJoint(jc, sA, sB); break;
-            case JointType::motor: warmStartMotorJoint(jc, sA, sB); break;
-            case JointType::mouse: warmStartMouseJoint(jc, sA, sB); break;
-            case JointType::pulley: warmStartPulleyJoint(jc, sA, sB); break;
-            case JointType::gear: warmStartGearJoint(jc, {sA, sB, stateOf(s, jc.c), stateOf(s, jc.d)}); break;
-        }
-    }
+    sweepColours(
+        s,
+        [&](JointConstraint& jc) {
+            BodyState& sA = stateOf(s, jc.a);
+            BodyState& sB = stateOf(s, jc.b);
+            switch (jc.type) {
+                case JointType::distance: warmStartDistanceJoint(jc, sA, sB); break;
+                case JointType::revolute: warmStartRevoluteJoint(jc, sA, sB); break;
+                case JointType::prismatic: warmStartPrismaticJoint(jc, sA, sB); break;
+                case JointType::weld: warmStartWeldJoint(jc, sA, sB); break;
+                case JointType::wheel: warmStartWheelJoint(jc, sA, sB); break;
+                case JointType::motor: warmStartMotorJoint(jc, sA, sB); break;
+                case JointType::mouse: warmStartMouseJoint(jc, sA, sB); break;
+                case JointType::pulley: warmStartPulleyJoint(jc, sA, sB); break;
+                case JointType::gear: warmStartGearJoint(jc, {sA, sB, stateOf(s, jc.c), stateOf(s, jc.d)}); break;
+            }
+        },
+        [&](int first, int last) { warmStartWideRevolutes(s, first, last); });
     clearZeroState(s);
 }
 
 void solveJoints(WorldState& w, const JointContext& ctx) {
     SolverArrays& s = w.solver;
-    for (JointConstraint& jc : s.joints) {
-        BodyState& sA = stateOf(s, jc.a);
-        BodyState& sB = stateOf(s, jc.b);
-        switch (jc.type) {
-            case JointType::distance: solveDistanceJoint(jc, ctx, sA, sB); break;
-            case JointType::revolute: solveRevoluteJoint(jc, ctx, sA, sB); break;
-            case JointType::prismatic: solvePrismaticJoint(jc, ctx, sA, sB); break;
-            case JointType::weld: solveWeldJoint(jc, ctx, sA, sB); break;
-            case JointType::wheel: solveWheelJoint(jc, ctx, sA, sB); break;
-            case JointType::motor: solveMotorJoint(jc, ctx, sA, sB); break;
-            case JointType::mouse: solveMouseJoint(jc, ctx, sA, sB); break;
-            case JointType::pulley: solvePulleyJoint(jc, ctx, sA, sB); break;
-            case JointType::gear: solveGearJoint(jc, ctx, {sA, sB, stateOf(s, jc.c), stateOf(s, jc.d)}); break;
-        }
-    }
+    sweepColours(
+        s,
+        [&](JointConstraint& jc) {
+            BodyState& sA = stateOf(s, jc.a);
+            BodyState& sB = stateOf(s, jc.b);
+            switch (jc.type) {
+                case JointType::distance: solveDistanceJoint(jc, ctx, sA, sB); break;
+                case JointType::revolute: solveRevoluteJoint(jc, ctx, sA, sB); break;
+                case JointType::prismatic: solvePrismaticJoint(jc, ctx, sA, sB); break;
+                case JointType::weld: solveWeldJoint(jc, ctx, sA, sB); break;
+                case JointType::wheel: solveWheelJoint(jc, ctx, sA, sB); break;
+                case JointType::motor: solveMotorJoint(jc, ctx, sA, sB); break;
+                case JointType::mouse: solveMouseJoint(jc, ctx, sA, sB); break;
+                case JointType::pulley: solvePulleyJoint(jc, ctx, sA, sB); break;
+                case JointType::gear: solveGearJoint(jc, ctx, {sA, sB, stateOf(s, jc.c), stateOf(s, jc.d)}); break;
+            }
+        },
+        [&](int first, int last) { solveWideRevolutes(s, ctx, first, last); });
     clearZeroState(s);
     solveJointTrees(w, ctx, ctx.positionUpdates);
     clearZeroState(s);
@@ -202,51 +298,56 @@ void pushJoints(WorldState& w, const JointContext& ctx) {
     };
     JointContext push = ctx;
     push.pass = SolvePass::baumgarte;
-    for (const JointConstraint& jc : s.joints) {
-        BodyState pA = pseudo(jc.a), pB = pseudo(jc.b);
-        if (jc.type == JointType::distance) {
-            pushDistanceJoint(jc, ctx, stateOf(s, jc.a), stateOf(s, jc.b), pA, pB);
-        } else {
-            // The position error of the rigid rows alone, from zero: springs,
-            // motors and drives are velocity effects and do not push.
-            JointConstraint row = jc;
-            row.impulses = JointImpulses{};
-            row.inTree = false;  // the push sweeps every row
-            switch (jc.type) {
-                case JointType::revolute:
-                    row.row.revolute.enableMotor = row.row.revolute.enableSpring = false;
-                    solveRevoluteJoint(row, push, pA, pB);
-                    break;
-                case JointType::prismatic:
-                    row.row.prismatic.enableMotor = row.row.prismatic.enableSpring = false;
-                    solvePrismaticJoint(row, push, pA, pB);
-                    break;
-                case JointType::wheel:
-                    row.row.wheel.enableMotor = row.row.wheel.enableSpring = false;
-                    solveWheelJoint(row, push, pA, pB);
-                    break;
-                case JointType::weld:
-                    if (row.row.weld.linearHertz == 0.0f && row.row.weld.angularHertz == 0.0f)
-                        solveWeldJoint(row, push, pA, pB);
-                    break;
-                case JointType::pulley: solvePulleyJoint(row, push, pA, pB); break;
-                case JointType::gear: {
-                    BodyState pC = pseudo(jc.c), pD = pseudo(jc.d);
-                    solveGearJoint(row, push, {pA, pB, pC, pD});
-                    writeBack(jc.c, pC);
-                    writeBack(jc.d, pD);
-                    break;
+    // Colour by colour, as the velocity sweeps (split mode has no wide blocks).
+    sweepColours(
+        s,
+        [&](const JointConstraint& jc) {
+            BodyState pA = pseudo(jc.a), pB = pseudo(jc.b);
+            if (jc.type == JointType::distance) {
+                pushDistanceJoint(jc, ctx, stateOf(s, jc.a), stateOf(s, jc.b), pA, pB);
+            } else {
+                // The position error of the rigid rows alone, from zero: springs,
+                // motors and drives are velocity effects and do not push.
+                JointConstraint row = jc;
+                row.impulses = JointImpulses{};
+                row.inTree = false;  // the push sweeps every row
+                switch (jc.type) {
+                    case JointType::revolute:
+                        row.row.revolute.enableMotor = row.row.revolute.enableSpring = false;
+                        solveRevoluteJoint(row, push, pA, pB);
+                        break;
+                    case JointType::prismatic:
+                        row.row.prismatic.enableMotor = row.row.prismatic.enableSpring = false;
+                        solvePrismaticJoint(row, push, pA, pB);
+                        break;
+                    case JointType::wheel:
+                        row.row.wheel.enableMotor = row.row.wheel.enableSpring = false;
+                        solveWheelJoint(row, push, pA, pB);
+                        break;
+                    case JointType::weld:
+                        if (row.row.weld.linearHertz == 0.0f && row.row.weld.angularHertz == 0.0f)
+                            solveWeldJoint(row, push, pA, pB);
+                        break;
+                    case JointType::pulley: solvePulleyJoint(row, push, pA, pB); break;
+                    case JointType::gear: {
+                        BodyState pC = pseudo(jc.c), pD = pseudo(jc.d);
+                        solveGearJoint(row, push, {pA, pB, pC, pD});
+                        writeBack(jc.c, pC);
+                        writeBack(jc.d, pD);
+                        break;
+                    }
+                    default: break;  // motor, mouse: drives, not constraints
                 }
-                default: break;  // motor, mouse: drives, not constraints
             }
-        }
-        writeBack(jc.a, pA);
-        writeBack(jc.b, pB);
-    }
+            writeBack(jc.a, pA);
+            writeBack(jc.b, pB);
+        },
+        [](int, int) {});
 }
 
 void storeJoints(WorldState& w, float h) {
     SolverArrays& s = w.solver;
+    storeWideRevolutes(w, h);
     const float invDt = 1.0f / h;
     for (const JointConstraint& jc : s.joints) {
         Joint& joint = w.joints[jc.joint];

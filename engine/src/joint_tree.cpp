@@ -39,11 +39,14 @@ namespace i2d::detail {
 // ---------------------------------------------------------------------------
 // The rows each joint type hands over (their maths is in each type's file).
 
-int equalityRowCount(const JointConstraint& jc) {
-    switch (jc.type) {
+int equalityRowCount(const Joint& joint) {
+    switch (joint.type) {
         case JointType::revolute: return 2;
-        case JointType::weld: return jc.row.weld.linearHertz == 0.0f && jc.row.weld.angularHertz == 0.0f ? 3 : 0;
-        case JointType::distance: return jc.row.distance.rigid ? 1 : 0;
+        case JointType::weld: {
+            const WeldJointDef& def = std::get<WeldJointDef>(joint.def);
+            return def.linearHertz == 0.0f && def.angularHertz == 0.0f ? 3 : 0;
+        }
+        case JointType::distance: return isRigidDistance(std::get<DistanceJointDef>(joint.def)) ? 1 : 0;
         default: return 0;
     }
 }
@@ -122,21 +125,22 @@ int movingSide(int index, float invMass, float invI, int ground) {
 
 }  // namespace
 
-void buildJointTrees(WorldState& w) {
+void selectTreeJoints(WorldState& w, std::vector<JointSlot>& slots, float leastInverseMass, float mostInverseMass) {
     SolverArrays& s = w.solver;
     JointTrees& t = s.trees;
-    t.nodes.clear();
-    t.factoredPositions = -1;
     const int ground = static_cast<int>(s.stateBodies.size());
     const std::size_t bodySlots = static_cast<std::size_t>(ground) + 1;
+
+    // No tree can qualify when the jointed bodies' masses are alike overall:
+    // the common case (a grid, a bridge, a ragdoll of alike parts) stops here.
+    if (!(mostInverseMass >= w.settings.exactJointMassRatio * leastInverseMass)) return;
 
     // The spanning forest, all immovable bodies one node, in row order.
     t.unionParent.resize(bodySlots);
     std::iota(t.unionParent.begin(), t.unionParent.end(), 0);
     int treeJoints = 0;
-    for (JointConstraint& jc : s.joints) {
-        jc.inTree = false;
-        if (equalityRowCount(jc) == 0) continue;
+    for (JointSlot& jc : slots) {
+        if (jc.equalityRows == 0) continue;
         const int a = movingSide(jc.a, jc.invMassA, jc.invIA, ground);
         const int b = movingSide(jc.b, jc.invMassB, jc.invIB, ground);
         const int ra = findRoot(t.unionParent, a), rb = findRoot(t.unionParent, b);
@@ -161,15 +165,26 @@ void buildJointTrees(WorldState& w) {
         t.lightest[root] = std::min(t.lightest[root], mass);
         t.heaviest[root] = std::max(t.heaviest[root], mass);
     }
-    treeJoints = 0;
-    for (JointConstraint& jc : s.joints) {
+    for (JointSlot& jc : slots) {
         if (!jc.inTree) continue;
         const std::size_t root = static_cast<std::size_t>(
             findRoot(t.unionParent, movingSide(jc.a, jc.invMassA, jc.invIA, ground)));
         jc.inTree = t.heaviest[root] >= massRatio * t.lightest[root];
-        treeJoints += jc.inTree;
     }
+}
+
+void buildJointTrees(WorldState& w) {
+    SolverArrays& s = w.solver;
+    JointTrees& t = s.trees;
+    t.nodes.clear();
+    t.factoredPositions = -1;
+    const int ground = static_cast<int>(s.stateBodies.size());
+    const std::size_t bodySlots = static_cast<std::size_t>(ground) + 1;
+    int treeJoints = 0;
+    for (const JointConstraint& jc : s.joints) treeJoints += jc.inTree;
     if (treeJoints == 0) return;
+    const float massRatio = w.settings.exactJointMassRatio;
+    t.unionParent.resize(bodySlots);
 
     // Each body's tree joints (compressed rows).
     t.adjacencyStart.assign(bodySlots + 1, 0);
@@ -186,8 +201,8 @@ void buildJointTrees(WorldState& w) {
         for (std::size_t r = 0; r < s.joints.size(); ++r) {
             const JointConstraint& jc = s.joints[r];
             if (!jc.inTree) continue;
-            for (int side : {movingSide(jc.a, jc.invMassA, jc.invIA, ground),
-                             movingSide(jc.b, jc.invMassB, jc.invIB, ground)})
+            for (int side :
+                 {movingSide(jc.a, jc.invMassA, jc.invIA, ground), movingSide(jc.b, jc.invMassB, jc.invIB, ground)})
                 t.adjacency[static_cast<std::size_t>(fill[static_cast<std::size_t>(side)]++)] = static_cast<int>(r);
         }
     }
@@ -216,8 +231,8 @@ void buildJointTrees(WorldState& w) {
             const int self = static_cast<int>(head);
             if (nodes[head].row >= 0) {
                 const JointConstraint& jc = s.joints[static_cast<std::size_t>(nodes[head].row)];
-                for (int side : {movingSide(jc.a, jc.invMassA, jc.invIA, ground),
-                                 movingSide(jc.b, jc.invMassB, jc.invIB, ground)})
+                for (int side :
+                     {movingSide(jc.a, jc.invMassA, jc.invIA, ground), movingSide(jc.b, jc.invMassB, jc.invIB, ground)})
                     if (side != ground && t.nodeOfBody[static_cast<std::size_t>(side)] == kUnvisited)
                         addBody(side, self);
             } else {
@@ -318,7 +333,8 @@ void factor(const WorldState& w, SolverArrays& s, JointTrees& t, double gammaSca
             for (int c = 0; c < n; ++c) {
                 double k = 0.0;
                 for (int d = 0; d < 3; ++d)
-                    k += double(rows.jA[r][d]) * invA[d] * rows.jA[c][d] + double(rows.jB[r][d]) * invB[d] * rows.jB[c][d];
+                    k += double(rows.jA[r][d]) * invA[d] * rows.jA[c][d] +
+                         double(rows.jB[r][d]) * invB[d] * rows.jB[c][d];
                 node.compliance[r][c] = gammaScale * k;
                 node.diag[r][c] = -gammaScale * k;
             }
@@ -350,7 +366,8 @@ void factor(const WorldState& w, SolverArrays& s, JointTrees& t, double gammaSca
                            node.diag[r][2] * node.link[2][c];
         for (int r = 0; r < 3; ++r)
             for (int c = 0; c < 3; ++c)
-                parent.diag[r][c] -= node.link[0][r] * db[0][c] + node.link[1][r] * db[1][c] + node.link[2][r] * db[2][c];
+                parent.diag[r][c] -= node.link[0][r] * db[0][c] + node.link[1][r] * db[1][c] +
+                                     node.link[2][r] * db[2][c];
     }
 }
 
@@ -396,7 +413,8 @@ void solveJointTrees(WorldState& w, const JointContext& ctx, int positions) {
         if (node.parent < 0) continue;
         TreeNode& parent = nodes[static_cast<std::size_t>(node.parent)];
         for (int c = 0; c < 3; ++c)
-            parent.rhs[c] -= node.link[0][c] * node.rhs[0] + node.link[1][c] * node.rhs[1] + node.link[2][c] * node.rhs[2];
+            parent.rhs[c] -= node.link[0][c] * node.rhs[0] + node.link[1][c] * node.rhs[1] +
+                             node.link[2][c] * node.rhs[2];
     }
     // Backward, roots first: x_i = y_i − D_i⁻¹ B_i x_parent.
     for (std::size_t k = nodes.size(); k-- > 0;) {

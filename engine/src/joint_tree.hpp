@@ -16,16 +16,16 @@ struct WorldState;
 /// A node of the body–joint tree: a body (3 unknowns v_x, v_y, ω) or a joint's
 /// equality rows (up to 3 unknowns: −Δλ), with the blocks of its elimination.
 struct TreeNode {
-    int parent = -1;  ///< node index, −1 for a root
-    int body = -1;    ///< solver state index (body node)
-    int row = -1;     ///< index in SolverArrays::joints (joint node)
+    int parent = -1;             ///< node index, −1 for a root
+    int body = -1;               ///< solver state index (body node)
+    int row = -1;                ///< index in SolverArrays::joints (joint node)
     int nodeA = -1, nodeB = -1;  ///< joint node: the nodes of its bodies (−1: a body that does not move)
-    double diag[3][3];  ///< H_ii, then its Schur complement D_i; after factoring, D_i⁻¹
-    double link[3][3];  ///< H_i,parent: this node's unknowns by the parent's
-    double rhs[3];      ///< right-hand side, then the solution
-    double compliance[3][3];  ///< joint node: Γ of its rows in the factored pass
-    float mask[3];            ///< body node: 1 for a degree of freedom it has (non-zero inverse mass or inertia)
-    EqualityRows rows;        ///< joint node: its rows at the factored positions
+    double diag[3][3];           ///< H_ii, then its Schur complement D_i; after factoring, D_i⁻¹
+    double link[3][3];           ///< H_i,parent: this node's unknowns by the parent's
+    double rhs[3];               ///< right-hand side, then the solution
+    double compliance[3][3];     ///< joint node: Γ of its rows in the factored pass
+    float mask[3];               ///< body node: 1 for a degree of freedom it has (non-zero inverse mass or inertia)
+    EqualityRows rows;           ///< joint node: its rows at the factored positions
 };
 
 /// The trees of one step: nodes with every child before its parent.
@@ -41,9 +41,14 @@ struct JointTrees {
 
 /// Picks the joints whose equality rows are solved exactly (a spanning forest
 /// of the body–joint graph, every static body one node, so a loop such as a
-/// bridge's or a grid's keeps one or more joints in the Gauss-Seidel sweep),
-/// marks their rows (JointConstraint::inTree) and orders the trees' nodes.
-/// Called after the rows are coloured.
+/// bridge's or a grid's keeps one or more joints in the Gauss-Seidel sweep;
+/// only components of unlike masses, WorldSettings::exactJointMassRatio) and
+/// marks them (JointSlot::inTree, false when called). The least and most
+/// inverse mass of the joints' movable bodies let a world of alike bodies
+/// skip the search.
+void selectTreeJoints(WorldState& w, std::vector<JointSlot>& slots, float leastInverseMass, float mostInverseMass);
+/// Orders the trees' nodes over the rows in their final order; a tree whose
+/// own bodies are alike after all is returned to the sweep (inTree cleared).
 void buildJointTrees(WorldState& w);
 
 /// Solves the trees' equality rows exactly for the velocities now, in ctx's

@@ -196,6 +196,7 @@ void stopNonFiniteBodies(SolverArrays& s) {
     auto touches = [&](int index) { return index >= 0 && bad[static_cast<std::size_t>(index)]; };
     for (JointConstraint& jc : s.joints)
         if (touches(jc.a) || touches(jc.b) || touches(jc.c) || touches(jc.d)) jc.impulses = JointImpulses{};
+    dropWideImpulses(s, bad);
     for (ContactConstraint& cc : s.constraints) {
         if (!touches(cc.a) && !touches(cc.b)) continue;
         for (int j = 0; j < cc.pointCount; ++j) {
@@ -281,12 +282,13 @@ void solve(WorldState& w, float dt) {
     jointCtx.maxLinearSpeed = maxSpeed;
     // A world without joints pays nothing for them, the check included.
     auto joints = [&](SolvePass pass) {
-        if (s.joints.empty()) return;
+        if (s.joints.empty() && s.wideRevolutes.empty()) return;
         jointCtx.pass = pass;
         solveJoints(w, jointCtx);
         stopNonFiniteBodies(s);
     };
     auto contacts = [&](SolvePass pass, float step) {
+        if (s.rowCount == 0) return;  // a world without contacts pays nothing for them
         solveContacts(w, step, pass);
         stopNonFiniteBodies(s);
     };
@@ -398,9 +400,6 @@ void releaseLargeStepArrays(WorldState& w) {
     releaseIfLarge(s.constraints);
     releaseIfLarge(s.contactColours);
     releaseIfLarge(s.colourBits);
-    releaseIfLarge(s.joints);
-    releaseIfLarge(s.jointScratch);
-    releaseIfLarge(s.jointColours);
     releaseIfLarge(s.deepContactCount);
     releaseIfLarge(w.activeContacts);
     releaseIfLarge(w.gatherScratch);

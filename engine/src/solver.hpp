@@ -9,6 +9,7 @@
 #include "joint.hpp"
 #include "joint_tree.hpp"
 #include "scratch_array.hpp"
+#include "wide_revolute.hpp"
 
 namespace i2d::detail {
 
@@ -27,10 +28,17 @@ struct SolverArrays {
     std::vector<int> colourOffsets;               ///< per colour: its first row (advanced as rows are placed)
     std::vector<std::uint64_t> colourBits;        ///< per colour, one bit per state
     int rowCount = 0;                             ///< contact rows this step
-    std::vector<JointConstraint> joints;          ///< in colour order (joint_solver.cpp)
-    std::vector<JointConstraint> jointScratch;    ///< the colour sort's other buffer
-    JointTrees trees;                             ///< joints solved exactly (joint_tree.cpp)
+    std::vector<JointSlot> jointSlots;            ///< every joint with an awake body, in the world's order
+    std::vector<JointConstraint> joints;  ///< rows of the slots not solved wide, in slot order (joint_solver.cpp)
+    std::vector<int> jointScratch;        ///< the row of each slot while the order is built
+    std::vector<int> jointOrder;          ///< by colour: rows, then each colour's wide slots
+    JointTrees trees;                     ///< joints solved exactly (joint_tree.cpp)
+    std::vector<int> jointColourStart;    ///< per joint colour: its first place in jointOrder; then the row count
+    std::vector<int> jointWideStart;      ///< per joint colour: its first place of the wide path
+    std::vector<WideRevoluteBlock> wideRevolutes;  ///< the wide rows, four to a block (wide_revolute.cpp)
+    std::vector<int> wideBlockStart;               ///< per joint colour: its first block; then the block count
     std::vector<std::uint8_t> jointColours;
+    std::vector<std::uint32_t> bodyColours;  ///< per state: the joint colours its rows took (joint_solver.cpp)
     std::vector<int> deepContactCount;       ///< per state: contacts overlapping deeper than kDeepOverlap
     std::vector<RollingConstraint> rolling;  ///< contacts with rolling resistance (contact_solver.cpp)
 };

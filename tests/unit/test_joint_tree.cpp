@@ -57,9 +57,9 @@ struct RandomTree {
         auto hinge = [&](BodyId a, BodyId b) {
             const Vec2 pa = world.position(a), pb = world.position(b);
             const Vec2 p = 0.5f * (pa + pb);
-            hinges.push_back({world.createRevoluteJoint({.bodyA = a, .bodyB = b, .localAnchorA = p - pa,
-                                                         .localAnchorB = p - pb}),
-                              a, b, p});
+            hinges.push_back(
+                {world.createRevoluteJoint({.bodyA = a, .bodyB = b, .localAnchorA = p - pa, .localAnchorB = p - pb}), a,
+                 b, p});
         };
         hinge(ground, bodies[0]);
         for (int i = 1; i < n; ++i) hinge(bodies[std::uniform_int_distribution<int>(0, i - 1)(rng)], bodies[i]);
@@ -73,7 +73,8 @@ struct RandomTree {
         for (const Hinge& h : hinges) {
             auto pointVelocity = [&](BodyId b) {
                 if (world.bodyType(b) != BodyType::dynamic_body) return Vec2{};
-                const std::size_t k = static_cast<std::size_t>(std::find(bodies.begin(), bodies.end(), b) - bodies.begin());
+                const std::size_t k = static_cast<std::size_t>(std::find(bodies.begin(), bodies.end(), b) -
+                                                               bodies.begin());
                 return world.linearVelocity(b) + cross(world.angularVelocity(b), h.point - centres[k]);
             };
             worst = std::max(worst, length(pointVelocity(h.b) - pointVelocity(h.a)));
@@ -155,8 +156,7 @@ TEST(JointTree, RandomTreesOfUnlikeMassesNeverGainEnergy) {
             sweptGains += !(sweptGain <= 0.01f);
         }
     }
-    std::printf("[figure] random 1000:1 joint trees: %d of 20 gain energy when swept, 0 solved exactly\n",
-                sweptGains);
+    std::printf("[figure] random 1000:1 joint trees: %d of 20 gain energy when swept, 0 solved exactly\n", sweptGains);
 }
 
 }  // namespace

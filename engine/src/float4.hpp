@@ -1,0 +1,67 @@
+// Four floats operated on at once: SSE2 on x86-64 (always present there), a
+// portable scalar path elsewhere or with I2D_SCALAR_FLOAT4 defined. Only
+// IEEE-exact operations (+, −, ×, ÷, comparisons, selects) are offered and the
+// engine is built without FMA contraction, so both paths give bit-identical
+// results (tests/unit/test_float4.cpp checks the scalar path against SSE2).
+#pragma once
+
+#if defined(__SSE2__) && !defined(I2D_SCALAR_FLOAT4)
+#include <emmintrin.h>
+#define I2D_FLOAT4_SSE2 1
+#endif
+
+namespace i2d::detail {
+
+#if defined(I2D_FLOAT4_SSE2)
+
+struct Float4 {
+    __m128 v;
+};
+inline Float4 splat(float x) { return {_mm_set1_ps(x)}; }
+inline Float4 load4(const float* p) { return {_mm_loadu_ps(p)}; }
+inline void store4(float* p, Float4 a) { _mm_storeu_ps(p, a.v); }
+inline Float4 operator+(Float4 a, Float4 b) { return {_mm_add_ps(a.v, b.v)}; }
+inline Float4 operator-(Float4 a, Float4 b) { return {_mm_sub_ps(a.v, b.v)}; }
+inline Float4 operator*(Float4 a, Float4 b) { return {_mm_mul_ps(a.v, b.v)}; }
+inline Float4 operator/(Float4 a, Float4 b) { return {_mm_div_ps(a.v, b.v)}; }
+inline Float4 operator-(Float4 a) { return {_mm_xor_ps(a.v, _mm_set1_ps(-0.0f))}; }
+/// b where a ≠ 0, else 0 (a division guarded against a singular lane).
+inline Float4 whereNonZero(Float4 a, Float4 b) { return {_mm_and_ps(_mm_cmpneq_ps(a.v, _mm_setzero_ps()), b.v)}; }
+/// Transposes four rows of four floats in place (rows become columns).
+inline void transpose(Float4& r0, Float4& r1, Float4& r2, Float4& r3) { _MM_TRANSPOSE4_PS(r0.v, r1.v, r2.v, r3.v); }
+
+#else
+
+struct Float4 {
+    float v[4];
+};
+inline Float4 splat(float x) { return {{x, x, x, x}}; }
+inline Float4 load4(const float* p) { return {{p[0], p[1], p[2], p[3]}}; }
+inline void store4(float* p, Float4 a) {
+    for (int i = 0; i < 4; ++i) p[i] = a.v[i];
+}
+template <class Op>
+inline Float4 lanewise(Float4 a, Float4 b, Op op) {
+    return {{op(a.v[0], b.v[0]), op(a.v[1], b.v[1]), op(a.v[2], b.v[2]), op(a.v[3], b.v[3])}};
+}
+inline Float4 operator+(Float4 a, Float4 b) { return lanewise(a, b, [](float x, float y) { return x + y; }); }
+inline Float4 operator-(Float4 a, Float4 b) { return lanewise(a, b, [](float x, float y) { return x - y; }); }
+inline Float4 operator*(Float4 a, Float4 b) { return lanewise(a, b, [](float x, float y) { return x * y; }); }
+inline Float4 operator/(Float4 a, Float4 b) { return lanewise(a, b, [](float x, float y) { return x / y; }); }
+inline Float4 operator-(Float4 a) { return lanewise(a, a, [](float x, float) { return -x; }); }
+inline Float4 whereNonZero(Float4 a, Float4 b) {
+    return lanewise(a, b, [](float x, float y) { return x != 0.0f ? y : 0.0f; });
+}
+inline void transpose(Float4& r0, Float4& r1, Float4& r2, Float4& r3) {
+    Float4* r[4] = {&r0, &r1, &r2, &r3};
+    for (int i = 0; i < 4; ++i)
+        for (int j = i + 1; j < 4; ++j) {
+            const float t = r[i]->v[j];
+            r[i]->v[j] = r[j]->v[i];
+            r[j]->v[i] = t;
+        }
+}
+
+#endif
+
+}  // namespace i2d::detail

@@ -1,0 +1,41 @@
+// Revolute joints without limit, motor or spring (a hinge's point rows only,
+// the bulk of chains, bridges and grids), solved four at a time: the rows of
+// one colour touch no movable body twice, so four of them are independent and
+// their arithmetic runs in the lanes of Float4 (SSE2 on x86-64). The maths is
+// the revolute joint's point block (revolute_joint.cpp) lane by lane.
+#pragma once
+
+#include <vector>
+
+#include "joint.hpp"
+
+namespace i2d::detail {
+
+struct SolverArrays;
+struct WorldState;
+
+/// Four hinges' rows, structure of arrays. An empty lane names the zero state
+/// on both sides with zero inverse masses, so it changes nothing.
+struct WideRevoluteBlock {
+    int a[4], b[4];  ///< solver state indices (the zero state for a body that does not move)
+    int joint[4];    ///< the world's joint slot, −1 for an empty lane
+    float rAx[4], rAy[4], rBx[4], rBy[4];  ///< anchors from the centres of mass at the step's start
+    float dcx[4], dcy[4];                  ///< centre B − centre A at the step's start
+    float mA[4], iA[4], mB[4], iB[4];      ///< inverse masses and inertias
+    float px[4], py[4];                    ///< accumulated impulse (N·s)
+};
+
+/// Packs the slots at places [first, last) of s.jointOrder (all wide
+/// revolutes of one colour) into blocks appended to s.wideRevolutes, from
+/// their joints and bodies as prepareJoints writes rows.
+void packWideRevolutes(const WorldState& w, SolverArrays& s, int first, int last);
+
+void warmStartWideRevolutes(SolverArrays& s, int firstBlock, int lastBlock);
+void solveWideRevolutes(SolverArrays& s, const JointContext& ctx, int firstBlock, int lastBlock);
+/// The blocks' impulses back into their joints for the next warm start, with
+/// the reaction force (as storeJoints does for rows); h as there.
+void storeWideRevolutes(WorldState& w, float h);
+/// Drops the accumulated impulse of every lane on a body marked bad.
+void dropWideImpulses(SolverArrays& s, const std::vector<char>& bad);
+
+}  // namespace i2d::detail
