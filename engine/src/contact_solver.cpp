@@ -12,6 +12,7 @@
 
 #include "contact_persistence.hpp"
 #include "contact_solver.hpp"
+#include "wide_contact.hpp"
 #include "world_state.hpp"
 
 namespace i2d::detail {
@@ -185,9 +186,18 @@ void prepareContacts(WorldState& w, float h, bool soft) {
 }
 
 void warmStartContacts(WorldState& w) {
-    if (!w.solver.rolling.empty()) warmStartRollingResistance(w);
-    BodyState* states = w.solver.states.data();
-    for (ContactConstraint& cc : w.solver.constraints) {
+    SolverArrays& s = w.solver;
+    if (!s.rolling.empty()) warmStartRollingResistance(w);
+    // The coloured groups four at a time (wide_contact.cpp), then the rows
+    // left to the scalar sweep.
+    int first = 0;
+    if (s.wideContactsActive) {
+        warmStartWideContacts(s, 0, static_cast<int>(s.wideContacts.size()));
+        first = s.contactOverflowStart;
+    }
+    BodyState* states = s.states.data();
+    for (std::size_t r = static_cast<std::size_t>(first); r < s.constraints.size(); ++r) {
+        ContactConstraint& cc = s.constraints[r];
         BodyState& sA = states[cc.a];
         BodyState& sB = states[cc.b];
         Vec2 vA = sA.v, vB = sB.v;
@@ -288,7 +298,7 @@ inline void solvePointPair(ContactConstraint& cc, const RowMasses& m, const Poin
 /// One Gauss-Seidel sweep over the contacts, compiled once per pass so the
 /// per-point branches on it fold away.
 template <SolvePass passKind>
-void solveContactsFor(WorldState& w, float h) {
+void solveContactsFor(WorldState& w, float h, std::size_t first) {
     const WorldSettings& set = w.settings;
     const float invH = 1.0f / h;
     const float slop = set.penetrationSlop;
@@ -300,7 +310,8 @@ void solveContactsFor(WorldState& w, float h) {
     const bool leaveImpacts = passKind == SolvePass::soft_relax_last && set.impactModel == ImpactModel::closed_form;
     const float impactSpeed = set.impactThreshold;
     BodyState* states = w.solver.states.data();
-    for (ContactConstraint& cc : w.solver.constraints) {
+    for (std::size_t r = first; r < w.solver.constraints.size(); ++r) {
+        ContactConstraint& cc = w.solver.constraints[r];
         BodyState& sA = states[cc.a];
         BodyState& sB = states[cc.b];
         Vec2 vA = sA.v, vB = sB.v;
@@ -394,12 +405,23 @@ void solveContactsFor(WorldState& w, float h) {
 }  // namespace
 
 void solveContacts(WorldState& w, float h, SolvePass target) {
+    SolverArrays& s = w.solver;
+    // The coloured groups four at a time (soft_step only), then the rows left
+    // to the scalar sweep; the same order as sweeping every row here.
+    std::size_t first = 0;
+    if (s.wideContactsActive) {
+        const bool leaveImpacts = target == SolvePass::soft_relax_last &&
+                                  w.settings.impactModel == ImpactModel::closed_form;
+        solveWideContacts(s, target, h, leaveImpacts, w.settings.impactThreshold, 0,
+                          static_cast<int>(s.wideContacts.size()));
+        first = static_cast<std::size_t>(s.contactOverflowStart);
+    }
     switch (target) {
-        case SolvePass::soft_bias: solveContactsFor<SolvePass::soft_bias>(w, h); break;
-        case SolvePass::soft_relax: solveContactsFor<SolvePass::soft_relax>(w, h); break;
-        case SolvePass::soft_relax_last: solveContactsFor<SolvePass::soft_relax_last>(w, h); break;
-        case SolvePass::baumgarte: solveContactsFor<SolvePass::baumgarte>(w, h); break;
-        case SolvePass::no_push: solveContactsFor<SolvePass::no_push>(w, h); break;
+        case SolvePass::soft_bias: solveContactsFor<SolvePass::soft_bias>(w, h, first); break;
+        case SolvePass::soft_relax: solveContactsFor<SolvePass::soft_relax>(w, h, first); break;
+        case SolvePass::soft_relax_last: solveContactsFor<SolvePass::soft_relax_last>(w, h, first); break;
+        case SolvePass::baumgarte: solveContactsFor<SolvePass::baumgarte>(w, h, first); break;
+        case SolvePass::no_push: solveContactsFor<SolvePass::no_push>(w, h, first); break;
     }
     if (!w.solver.rolling.empty()) solveRollingResistance(w);
 }

@@ -30,6 +30,22 @@ inline Float4 whereNonZero(Float4 a, Float4 b) { return {_mm_and_ps(_mm_cmpneq_p
 /// Transposes four rows of four floats in place (rows become columns).
 inline void transpose(Float4& r0, Float4& r1, Float4& r2, Float4& r3) { _MM_TRANSPOSE4_PS(r0.v, r1.v, r2.v, r3.v); }
 
+/// Four lanes' truth values.
+struct Mask4 {
+    __m128 m;
+};
+inline Mask4 operator<(Float4 a, Float4 b) { return {_mm_cmplt_ps(a.v, b.v)}; }
+inline Mask4 operator>(Float4 a, Float4 b) { return {_mm_cmpgt_ps(a.v, b.v)}; }
+inline Mask4 nonZero(Float4 a) { return {_mm_cmpneq_ps(a.v, _mm_setzero_ps())}; }
+inline Mask4 operator&(Mask4 a, Mask4 b) { return {_mm_and_ps(a.m, b.m)}; }
+inline Mask4 operator|(Mask4 a, Mask4 b) { return {_mm_or_ps(a.m, b.m)}; }
+/// a and not b.
+inline Mask4 andNot(Mask4 a, Mask4 b) { return {_mm_andnot_ps(b.m, a.m)}; }
+/// Lane by lane: yes where the mask holds, else no (the bits of one or the other).
+inline Float4 select(Mask4 m, Float4 yes, Float4 no) {
+    return {_mm_or_ps(_mm_and_ps(m.m, yes.v), _mm_andnot_ps(m.m, no.v))};
+}
+
 #else
 
 struct Float4 {
@@ -44,11 +60,21 @@ template <class Op>
 inline Float4 lanewise(Float4 a, Float4 b, Op op) {
     return {{op(a.v[0], b.v[0]), op(a.v[1], b.v[1]), op(a.v[2], b.v[2]), op(a.v[3], b.v[3])}};
 }
-inline Float4 operator+(Float4 a, Float4 b) { return lanewise(a, b, [](float x, float y) { return x + y; }); }
-inline Float4 operator-(Float4 a, Float4 b) { return lanewise(a, b, [](float x, float y) { return x - y; }); }
-inline Float4 operator*(Float4 a, Float4 b) { return lanewise(a, b, [](float x, float y) { return x * y; }); }
-inline Float4 operator/(Float4 a, Float4 b) { return lanewise(a, b, [](float x, float y) { return x / y; }); }
-inline Float4 operator-(Float4 a) { return lanewise(a, a, [](float x, float) { return -x; }); }
+inline Float4 operator+(Float4 a, Float4 b) {
+    return lanewise(a, b, [](float x, float y) { return x + y; });
+}
+inline Float4 operator-(Float4 a, Float4 b) {
+    return lanewise(a, b, [](float x, float y) { return x - y; });
+}
+inline Float4 operator*(Float4 a, Float4 b) {
+    return lanewise(a, b, [](float x, float y) { return x * y; });
+}
+inline Float4 operator/(Float4 a, Float4 b) {
+    return lanewise(a, b, [](float x, float y) { return x / y; });
+}
+inline Float4 operator-(Float4 a) {
+    return lanewise(a, a, [](float x, float) { return -x; });
+}
 inline Float4 whereNonZero(Float4 a, Float4 b) {
     return lanewise(a, b, [](float x, float y) { return x != 0.0f ? y : 0.0f; });
 }
@@ -62,6 +88,45 @@ inline void transpose(Float4& r0, Float4& r1, Float4& r2, Float4& r3) {
         }
 }
 
+struct Mask4 {
+    bool m[4];
+};
+template <class Op>
+inline Mask4 lanewiseMask(Float4 a, Float4 b, Op op) {
+    return {{op(a.v[0], b.v[0]), op(a.v[1], b.v[1]), op(a.v[2], b.v[2]), op(a.v[3], b.v[3])}};
+}
+inline Mask4 operator<(Float4 a, Float4 b) {
+    return lanewiseMask(a, b, [](float x, float y) { return x < y; });
+}
+inline Mask4 operator>(Float4 a, Float4 b) {
+    return lanewiseMask(a, b, [](float x, float y) { return x > y; });
+}
+inline Mask4 nonZero(Float4 a) {
+    return lanewiseMask(a, a, [](float x, float) { return x != 0.0f; });
+}
+inline Mask4 operator&(Mask4 a, Mask4 b) {
+    return {{a.m[0] && b.m[0], a.m[1] && b.m[1], a.m[2] && b.m[2], a.m[3] && b.m[3]}};
+}
+inline Mask4 operator|(Mask4 a, Mask4 b) {
+    return {{a.m[0] || b.m[0], a.m[1] || b.m[1], a.m[2] || b.m[2], a.m[3] || b.m[3]}};
+}
+inline Mask4 andNot(Mask4 a, Mask4 b) {
+    return {{a.m[0] && !b.m[0], a.m[1] && !b.m[1], a.m[2] && !b.m[2], a.m[3] && !b.m[3]}};
+}
+inline Float4 select(Mask4 m, Float4 yes, Float4 no) {
+    return {{m.m[0] ? yes.v[0] : no.v[0], m.m[1] ? yes.v[1] : no.v[1], m.m[2] ? yes.v[2] : no.v[2],
+             m.m[3] ? yes.v[3] : no.v[3]}};
+}
+
 #endif
+
+// Both paths: the standard library's choices, lane by lane, so that a wide
+// row takes what the scalar row takes, signed zeros included.
+/// std::max(a, b): b where a < b, else a.
+inline Float4 max4(Float4 a, Float4 b) { return select(a < b, b, a); }
+/// std::min(a, b): b where b < a, else a.
+inline Float4 min4(Float4 a, Float4 b) { return select(b < a, b, a); }
+/// i2d::clamp(a, lo, hi): lo where a < lo, else hi where a > hi, else a.
+inline Float4 clamp4(Float4 a, Float4 lo, Float4 hi) { return select(a < lo, lo, select(a > hi, hi, a)); }
 
 }  // namespace i2d::detail

@@ -103,6 +103,36 @@ void colourContacts(WorldState& w) {
     s.rowCount = rows;
 }
 
+/// soft_step without rolling resistance: the rows of each colour (their ends
+/// are in colourOffsets once prepareContacts placed them) packed four to a
+/// block for the wide sweep; the overflow group stays scalar.
+void packContactColours(WorldState& w, bool soft) {
+    SolverArrays& s = w.solver;
+    s.wideContactsActive = soft && s.rolling.empty() && s.rowCount > 0;
+    s.contactOverflowStart = 0;
+    if (!s.wideContactsActive) {
+        s.wideContacts.resizeForOverwrite(0);
+        return;
+    }
+    // One allocation, sized first: growing block by block made a fresh
+    // allocation, page faults and a copy per doubling, every step.
+    int blocks = 0, start = 0;
+    for (int c = 0; c < kColourCount; ++c) {
+        const int end = s.colourOffsets[static_cast<std::size_t>(c)];
+        blocks += (end - start + 3) / 4;
+        start = end;
+    }
+    s.wideContacts.resizeForOverwrite(static_cast<std::size_t>(blocks));
+    int block = 0;
+    start = 0;
+    for (int c = 0; c < kColourCount; ++c) {
+        const int end = s.colourOffsets[static_cast<std::size_t>(c)];
+        block = packWideContacts(s, start, end, block);
+        start = end;
+    }
+    s.contactOverflowStart = start;
+}
+
 // ---------------------------------------------------------------------------
 // Integration (Tamis and Maggiore (2015) §3.2, semi-implicit Euler)
 
@@ -197,6 +227,7 @@ void stopNonFiniteBodies(SolverArrays& s) {
     for (JointConstraint& jc : s.joints)
         if (touches(jc.a) || touches(jc.b) || touches(jc.c) || touches(jc.d)) jc.impulses = JointImpulses{};
     dropWideImpulses(s, bad);
+    dropWideContactImpulses(s, bad);
     for (ContactConstraint& cc : s.constraints) {
         if (!touches(cc.a) && !touches(cc.b)) continue;
         for (int j = 0; j < cc.pointCount; ++j) {
@@ -269,6 +300,7 @@ void solve(WorldState& w, float dt) {
     const std::size_t n = s.stateBodies.size();
     colourContacts(w);
     prepareContacts(w, h, soft);
+    packContactColours(w, soft);
     prepareJoints(w, dt);
     // Joint stiffness capped at 1/4 of the substep rate, so jointHertz 60 holds
     // at 4 substeps as in Box2D v3 (twice its contact hertz). Swept by one
@@ -309,6 +341,7 @@ void solve(WorldState& w, float dt) {
             joints(SolvePass::soft_relax);
             contacts(i + 1 == substeps ? SolvePass::soft_relax_last : SolvePass::soft_relax, h);
         }
+        if (s.wideContactsActive) writeBackWideContacts(s);  // restitution and the store read the rows
         if (set.impactModel == ImpactModel::velocity_bias) {
             applyRestitution(w);
             stopNonFiniteBodies(s);
@@ -398,6 +431,7 @@ void releaseLargeStepArrays(WorldState& w) {
     releaseIfLarge(s.biasV);
     releaseIfLarge(s.biasW);
     releaseIfLarge(s.constraints);
+    releaseIfLarge(s.wideContacts);
     releaseIfLarge(s.contactColours);
     releaseIfLarge(s.colourBits);
     releaseIfLarge(s.deepContactCount);

@@ -9,6 +9,7 @@
 #include "joint.hpp"
 #include "joint_tree.hpp"
 #include "scratch_array.hpp"
+#include "wide_contact.hpp"
 #include "wide_revolute.hpp"
 
 namespace i2d::detail {
@@ -38,9 +39,12 @@ struct SolverArrays {
     std::vector<WideRevoluteBlock> wideRevolutes;  ///< the wide rows, four to a block (wide_revolute.cpp)
     std::vector<int> wideBlockStart;               ///< per joint colour: its first block; then the block count
     std::vector<std::uint8_t> jointColours;
-    std::vector<std::uint32_t> bodyColours;  ///< per state: the joint colours its rows took (joint_solver.cpp)
-    std::vector<int> deepContactCount;       ///< per state: contacts overlapping deeper than kDeepOverlap
-    std::vector<RollingConstraint> rolling;  ///< contacts with rolling resistance (contact_solver.cpp)
+    std::vector<std::uint32_t> bodyColours;       ///< per state: the joint colours its rows took (joint_solver.cpp)
+    std::vector<int> deepContactCount;            ///< per state: contacts overlapping deeper than kDeepOverlap
+    std::vector<RollingConstraint> rolling;       ///< contacts with rolling resistance (contact_solver.cpp)
+    ScratchArray<WideContactBlock> wideContacts;  ///< the coloured contact rows four at a time (wide_contact.cpp)
+    bool wideContactsActive = false;              ///< this step solves them so
+    int contactOverflowStart = 0;                 ///< the first row of the scalar rest (the overflow group)
 };
 
 /// Advances the world by dt: pairs → narrowphase → impacts → solve →

@@ -6,8 +6,8 @@
 #include "wide_revolute.hpp"
 
 #include "joint_rows.hpp"
-#include "world_state.hpp"
 #include "wide_body.hpp"
+#include "world_state.hpp"
 
 namespace i2d::detail {
 
@@ -27,7 +27,8 @@ void packWideRevolutes(const WorldState& w, SolverArrays& s, int first, int last
                 block.px[lane] = block.py[lane] = 0.0f;
                 continue;
             }
-            const JointSlot& slot = s.jointSlots[static_cast<std::size_t>(s.jointOrder[static_cast<std::size_t>(place)])];
+            const JointSlot& slot =
+                s.jointSlots[static_cast<std::size_t>(s.jointOrder[static_cast<std::size_t>(place)])];
             const Vec2 rA = slot.rA, rB = slot.rB, dc = slot.deltaCenter;
             const Vec2 p = warm ? w.joints[slot.joint].impulses.linear : Vec2{};
             block.a[lane] = slot.a >= 0 ? slot.a : zero;

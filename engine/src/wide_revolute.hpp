@@ -17,8 +17,8 @@ struct WorldState;
 /// Four hinges' rows, structure of arrays. An empty lane names the zero state
 /// on both sides with zero inverse masses, so it changes nothing.
 struct WideRevoluteBlock {
-    int a[4], b[4];  ///< solver state indices (the zero state for a body that does not move)
-    int joint[4];    ///< the world's joint slot, −1 for an empty lane
+    int a[4], b[4];                        ///< solver state indices (the zero state for a body that does not move)
+    int joint[4];                          ///< the world's joint slot, −1 for an empty lane
     float rAx[4], rAy[4], rBx[4], rBy[4];  ///< anchors from the centres of mass at the step's start
     float dcx[4], dcy[4];                  ///< centre B − centre A at the step's start
     float mA[4], iA[4], mB[4], iB[4];      ///< inverse masses and inertias

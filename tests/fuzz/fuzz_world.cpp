@@ -338,7 +338,9 @@ struct Driver {
             case 0: s.gravity = {maybeBad(-20, 20), maybeBad(-20, 20)}; break;
             case 1: s.substeps = in.integer(0, 8); break;
             case 2: s.positionCorrection = static_cast<PositionCorrection>(in.integer(0, 3)); break;
-            case 3: s.exactJointMassRatio = in.flag() ? 1.0f : maybeBad(0.5f, 50.0f); break;  // 1: every joint tree exact
+            case 3:
+                s.exactJointMassRatio = in.flag() ? 1.0f : maybeBad(0.5f, 50.0f);
+                break;  // 1: every joint tree exact
             default: s.enableSleep = in.flag(); break;
         }
         if (trace)

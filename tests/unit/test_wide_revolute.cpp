@@ -77,7 +77,9 @@ Case makeCase(unsigned seed, int n) {
     return c;
 }
 
-BodyState& stateOf(SolverArrays& s, int index) { return index >= 0 ? s.states[static_cast<std::size_t>(index)] : s.states.back(); }
+BodyState& stateOf(SolverArrays& s, int index) {
+    return index >= 0 ? s.states[static_cast<std::size_t>(index)] : s.states.back();
+}
 
 void expectSame(Case& c, const char* what) {
     const int n = static_cast<int>(c.rows.size());
@@ -110,7 +112,8 @@ TEST(WideRevolute, AgreesBitForBitWithTheScalarRow) {
         for (SolvePass pass : {SolvePass::soft_bias, SolvePass::soft_relax, SolvePass::baumgarte}) {
             ctx.pass = pass;
             solveWideRevolutes(c.wide, ctx, 0, blocks);
-            for (JointConstraint& jc : c.rows) solveRevoluteJoint(jc, ctx, stateOf(c.scalar, jc.a), stateOf(c.scalar, jc.b));
+            for (JointConstraint& jc : c.rows)
+                solveRevoluteJoint(jc, ctx, stateOf(c.scalar, jc.a), stateOf(c.scalar, jc.b));
             c.scalar.states.back() = c.wide.states.back() = BodyState{};
             expectSame(c, "solve");
         }

@@ -1,0 +1,58 @@
+// Contact rows solved four manifolds at a time (wide_contact.cpp): the rows
+// of one colour touch no movable body twice, so four are independent and
+// their arithmetic runs in the lanes of Float4. Each lane does what the
+// scalar row does (contact_solver.cpp) with the same operations in the same
+// order, its branches turned into selects, so the results are bit-identical
+// (tests/unit/test_wide_contact.cpp). Used in soft_step for the rows of the
+// coloured groups; the overflow group (rows that share bodies), split and
+// baumgarte modes, and steps with rolling resistance keep the scalar rows.
+#pragma once
+
+#include <vector>
+
+#include "contact_solver.hpp"
+#include "scratch_array.hpp"
+
+namespace i2d::detail {
+
+struct SolverArrays;
+
+/// One of the two points of four manifolds.
+struct WideContactPoint {
+    float rAx[4], rAy[4], rBx[4], rBy[4];
+    float adjustedSeparation[4], normalMass[4], tangentMass[4];
+    float normalImpulse[4], tangentImpulse[4], maxNormalImpulse[4];
+    float present[4];  ///< 1 where the manifold has this point, else 0
+};
+
+/// Four manifolds, structure of arrays. An empty lane names the zero state on
+/// both sides with zero masses and no points.
+struct WideContactBlock {
+    int a[4], b[4];  ///< solver state indices
+    int row[4];      ///< the row in SolverArrays::constraints, −1 for an empty lane
+    float nx[4], ny[4];
+    float friction[4], tangentSpeed[4];
+    float mA[4], iA[4], mB[4], iB[4];
+    float biasRate[4], massScale[4], impulseScale[4], maxPush[4];
+    float pairScale[4];  ///< the rows' pairScale (1 unless the points are solved together)
+    float together[4], roundA[4], roundB[4];  ///< the rows' flags as 1 or 0
+    WideContactPoint points[2];
+};
+
+/// Packs the rows [first, last) of SolverArrays::constraints (one colour's)
+/// into s.wideContacts from block `block` on (sized by the caller: a block
+/// per four rows, rounded up); returns the next block. Writes every field.
+int packWideContacts(SolverArrays& s, int first, int last, int block);
+void warmStartWideContacts(SolverArrays& s, int firstBlock, int lastBlock);
+/// One sweep of blocks [firstBlock, lastBlock) in a soft_step pass: soft_bias,
+/// soft_relax or soft_relax_last (`leaveImpacts`: the last relax with the
+/// closed-form impact law, see contact_solver.cpp).
+void solveWideContacts(SolverArrays& s, SolvePass pass, float h, bool leaveImpacts, float impactSpeed,
+                       int firstBlock, int lastBlock);
+/// The blocks' accumulated impulses back into their rows (for restitution
+/// and the store, which read the rows).
+void writeBackWideContacts(SolverArrays& s);
+/// Drops the accumulated impulses of every lane on a body marked bad.
+void dropWideContactImpulses(SolverArrays& s, const std::vector<char>& bad);
+
+}  // namespace i2d::detail
