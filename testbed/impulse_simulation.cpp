@@ -5,6 +5,7 @@
 #include "game/platformer.hpp"
 #include "scene_build.hpp"
 #include "simulation.hpp"
+#include "thread_pool.hpp"
 
 namespace tb {
 namespace {
@@ -13,6 +14,10 @@ class ImpulseSimulation final : public Simulation {
 public:
     explicit ImpulseSimulation(const SceneDesc& desc) : scene_(buildScene(desc)) {
         keepDrives(desc);
+        if (desc.threads > 1) {
+            pool_ = std::make_unique<ThreadPool>(desc.threads);
+            scene_.world->setTaskSystem(pool_.get());
+        }
         // The world holds everything the simulation needs; the description's
         // bodies and joints are not kept (the Box2D backend keeps none either,
         // so memory figures compare the two engines, not the testbed).
@@ -63,8 +68,13 @@ public:
         return worst;
     }
 
+    ~ImpulseSimulation() override {
+        if (pool_) scene_.world->setTaskSystem(nullptr);
+    }
+
 private:
     Scene scene_;
+    std::unique_ptr<ThreadPool> pool_;  ///< the world's workers beyond the caller (--threads)
 };
 
 }  // namespace

@@ -119,6 +119,9 @@ struct SceneDesc {
     std::vector<JointDesc> joints;  ///< in creation order (a gear after the joints it couples)
     std::optional<Camera> camera;   ///< none: fit the scene's bounds
     std::optional<PlatformerDesc> platformer;
+    /// Workers the Impulse2D world steps on (a run option, `--threads`, not
+    /// part of the scene file): above 1 it gets a tb::ThreadPool.
+    int threads = 1;
 };
 
 class PlatformerGame;

@@ -185,6 +185,24 @@ void prepareContacts(WorldState& w, float h, bool soft) {
     }
 }
 
+namespace {
+
+/// The wide blocks colour by colour, each colour's blocks shared among the
+/// workers (WorldState::runner): they touch no movable body twice.
+template <class F>
+void forEachWideColour(WorldState& w, F&& blocks) {
+    constexpr int kBlockGrain = 8;  // blocks per chunk a worker claims
+    const std::vector<int>& start = w.solver.wideContactColourStart;
+    for (std::size_t c = 0; c + 1 < start.size(); ++c) {
+        const int first = start[c], count = start[c + 1] - start[c];
+        if (count == 0) continue;
+        auto range = [&](int b, int e) { blocks(first + b, first + e); };
+        w.runner.run(count, kBlockGrain, range);
+    }
+}
+
+}  // namespace
+
 void warmStartContacts(WorldState& w) {
     SolverArrays& s = w.solver;
     if (!s.rolling.empty()) warmStartRollingResistance(w);
@@ -192,7 +210,7 @@ void warmStartContacts(WorldState& w) {
     // left to the scalar sweep.
     int first = 0;
     if (s.wideContactsActive) {
-        warmStartWideContacts(s, 0, static_cast<int>(s.wideContacts.size()));
+        forEachWideColour(w, [&](int b, int e) { warmStartWideContacts(s, b, e); });
         first = s.contactOverflowStart;
     }
     BodyState* states = s.states.data();
@@ -412,8 +430,8 @@ void solveContacts(WorldState& w, float h, SolvePass target) {
     if (s.wideContactsActive) {
         const bool leaveImpacts = target == SolvePass::soft_relax_last &&
                                   w.settings.impactModel == ImpactModel::closed_form;
-        solveWideContacts(s, target, h, leaveImpacts, w.settings.impactThreshold, 0,
-                          static_cast<int>(s.wideContacts.size()));
+        const float impactSpeed = w.settings.impactThreshold;
+        forEachWideColour(w, [&](int b, int e) { solveWideContacts(s, target, h, leaveImpacts, impactSpeed, b, e); });
         first = static_cast<std::size_t>(s.contactOverflowStart);
     }
     switch (target) {

@@ -21,6 +21,9 @@ namespace i2d::detail {
 namespace {
 
 constexpr int kJointColours = 16;  ///< colours tried before the overflow group
+/// Wide blocks per chunk a worker claims (a colour's blocks are shared among
+/// the workers: they touch no movable body twice).
+constexpr int kWideGrain = 16;
 
 /// The solver state of a body index, or a zero stand-in that is thrown away.
 BodyState& stateOf(SolverArrays& s, int index) {
@@ -250,7 +253,10 @@ void warmStartJoints(WorldState& w) {
                 case JointType::gear: warmStartGearJoint(jc, {sA, sB, stateOf(s, jc.c), stateOf(s, jc.d)}); break;
             }
         },
-        [&](int first, int last) { warmStartWideRevolutes(s, first, last); });
+        [&](int first, int last) {
+            auto range = [&](int b, int e) { warmStartWideRevolutes(s, first + b, first + e); };
+            w.runner.run(last - first, kWideGrain, range);
+        });
     clearZeroState(s);
 }
 
@@ -273,7 +279,10 @@ void solveJoints(WorldState& w, const JointContext& ctx) {
                 case JointType::gear: solveGearJoint(jc, ctx, {sA, sB, stateOf(s, jc.c), stateOf(s, jc.d)}); break;
             }
         },
-        [&](int first, int last) { solveWideRevolutes(s, ctx, first, last); });
+        [&](int first, int last) {
+            auto range = [&](int b, int e) { solveWideRevolutes(s, ctx, first + b, first + e); };
+            w.runner.run(last - first, kWideGrain, range);
+        });
     clearZeroState(s);
     solveJointTrees(w, ctx, ctx.positionUpdates);
     clearZeroState(s);

@@ -123,13 +123,16 @@ void packContactColours(WorldState& w, bool soft) {
         start = end;
     }
     s.wideContacts.resizeForOverwrite(static_cast<std::size_t>(blocks));
+    s.wideContactColourStart.resize(kColourCount + 1);
     int block = 0;
     start = 0;
     for (int c = 0; c < kColourCount; ++c) {
+        s.wideContactColourStart[static_cast<std::size_t>(c)] = block;
         const int end = s.colourOffsets[static_cast<std::size_t>(c)];
         block = packWideContacts(s, start, end, block);
         start = end;
     }
+    s.wideContactColourStart[kColourCount] = block;
     s.contactOverflowStart = start;
 }
 
@@ -155,9 +158,10 @@ Vec2 limitSpeed(Vec2 v, float maxSpeed) {
     return v;
 }
 
-void integrateVelocities(SolverArrays& s, float h, float maxSpeed) {
-    const std::size_t n = s.stateBodies.size();
-    for (std::size_t i = 0; i < n; ++i) {
+/// Bodies [begin, end) of the solver arrays (each body on its own: a stage
+/// the workers may share).
+void integrateVelocities(SolverArrays& s, float h, float maxSpeed, std::size_t begin, std::size_t end) {
+    for (std::size_t i = begin; i < end; ++i) {
         const BodyIntegration& in = s.integration[i];
         if (!in.movedByForces) continue;
         BodyState& st = s.states[i];
@@ -185,10 +189,9 @@ void clampVelocity(BodyState& s, float maxSpeed, float maxAngularSpeed) {
     if (std::abs(s.w) > maxAngularSpeed) s.w = s.w > 0.0f ? maxAngularSpeed : -maxAngularSpeed;
 }
 
-void integratePositions(SolverArrays& s, float h, float maxSpeed) {
+void integratePositions(SolverArrays& s, float h, float maxSpeed, std::size_t begin, std::size_t end) {
     const float maxAngular = kMaxRotationPerStep / h;
-    const std::size_t n = s.stateBodies.size();
-    for (std::size_t i = 0; i < n; ++i) {
+    for (std::size_t i = begin; i < end; ++i) {
         BodyState& st = s.states[i];
         clampVelocity(st, maxSpeed, maxAngular);
         // Eq. 3.2.3-3.2.4 with the new velocities.
@@ -254,6 +257,12 @@ void dropNonFinitePush(SolverArrays& s) {
 /// are now solved exactly (joint_tree.cpp: 0.35 m, the rows' compliance), so
 /// one sweep suffices, as in Box2D v3; it saves a seventh of joint_grid's step.
 constexpr int kJointSolvePasses = 1;
+
+/// Contact rows plus awake bodies from which a step shares its solve with the
+/// task system's workers (below, handing out stages costs more than it saves),
+/// and the bodies per chunk of an integration stage.
+constexpr int kParallelWork = 512;
+constexpr int kBodyGrain = 128;
 
 // ---------------------------------------------------------------------------
 // The solve stage
@@ -330,13 +339,35 @@ void solve(WorldState& w, float dt) {
         stopNonFiniteBodies(s);
     };
 
+    // Integration body by body, on every worker when the step is large
+    // enough to gain from it (kParallelWork; the result is the same either way).
+    auto velocities = [&](float step) {
+        auto range = [&](int b, int e) {
+            integrateVelocities(s, step, maxSpeed, static_cast<std::size_t>(b), static_cast<std::size_t>(e));
+        };
+        w.runner.run(static_cast<int>(n), kBodyGrain, range);
+    };
+    auto positions = [&](float step) {
+        auto range = [&](int b, int e) {
+            integratePositions(s, step, maxSpeed, static_cast<std::size_t>(b), static_cast<std::size_t>(e));
+        };
+        w.runner.run(static_cast<int>(n), kBodyGrain, range);
+    };
+    const bool parallel = w.tasks != nullptr && w.tasks->workerCount() > 1 &&
+                          s.rowCount + static_cast<int>(n) >= kParallelWork;
+    w.runner.begin(parallel ? w.tasks : nullptr);
+    struct EndStages {
+        StageRunner& runner;
+        ~EndStages() { runner.end(); }
+    } endStages{w.runner};
+
     if (soft) {
         for (int i = 0; i < substeps; ++i) {
-            integrateVelocities(s, h, maxSpeed);
+            velocities(h);
             warmStart();
             for (int pass = 0; pass < kJointSolvePasses; ++pass) joints(SolvePass::soft_bias);
             contacts(SolvePass::soft_bias, h);
-            integratePositions(s, h, maxSpeed);
+            positions(h);
             ++jointCtx.positionUpdates;
             joints(SolvePass::soft_relax);
             contacts(i + 1 == substeps ? SolvePass::soft_relax_last : SolvePass::soft_relax, h);
@@ -349,7 +380,7 @@ void solve(WorldState& w, float dt) {
     } else {
         const bool baumgarte = set.positionCorrection == PositionCorrection::baumgarte;
         const SolvePass pass = baumgarte ? SolvePass::baumgarte : SolvePass::no_push;
-        integrateVelocities(s, dt, maxSpeed);
+        velocities(dt);
         warmStart();
         for (int it = 0; it < set.velocityIterations; ++it) {
             joints(pass);
@@ -378,9 +409,10 @@ void solve(WorldState& w, float dt) {
                 st.dq = integrateRotation(st.dq, dt * moved.w);
             }
         } else {
-            integratePositions(s, dt, maxSpeed);
+            positions(dt);
         }
     }
+    endStages.runner.end();
 
     storeContactImpulses(w);
     storeJoints(w, soft ? h : dt);

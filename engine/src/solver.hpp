@@ -44,6 +44,7 @@ struct SolverArrays {
     std::vector<RollingConstraint> rolling;       ///< contacts with rolling resistance (contact_solver.cpp)
     ScratchArray<WideContactBlock> wideContacts;  ///< the coloured contact rows four at a time (wide_contact.cpp)
     bool wideContactsActive = false;              ///< this step solves them so
+    std::vector<int> wideContactColourStart;      ///< per colour: its first block; then the block count
     int contactOverflowStart = 0;                 ///< the first row of the scalar rest (the overflow group)
 };
 

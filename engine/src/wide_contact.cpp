@@ -75,8 +75,8 @@ Float4 relativeSpeed(const WideVelocities& v, const WideArms& r, Float4 dx, Floa
 }
 
 /// Applies the impulse P = (px, py) at the point where `m` holds: A (−), B (+).
-inline __attribute__((always_inline)) void applyMasked(Mask4 m, const WideArms& r, Float4 px, Float4 py, Float4 mA, Float4 iA, Float4 mB, Float4 iB,
-                 WideVelocities& v) {
+inline __attribute__((always_inline)) void applyMasked(Mask4 m, const WideArms& r, Float4 px, Float4 py, Float4 mA,
+                                                       Float4 iA, Float4 mB, Float4 iB, WideVelocities& v) {
     v.vAx = select(m, v.vAx - mA * px, v.vAx);
     v.vAy = select(m, v.vAy - mA * py, v.vAy);
     v.wA = select(m, v.wA - iA * (r.rAx * py - r.rAy * px), v.wA);
@@ -107,8 +107,8 @@ void warmStartWideContacts(SolverArrays& s, int firstBlock, int lastBlock) {
     }
 }
 
-void solveWideContacts(SolverArrays& s, SolvePass pass, float h, bool leaveImpacts, float impactSpeed,
-                       int firstBlock, int lastBlock) {
+void solveWideContacts(SolverArrays& s, SolvePass pass, float h, bool leaveImpacts, float impactSpeed, int firstBlock,
+                       int lastBlock) {
     const Float4 invH = splat(1.0f / h), zero = splat(0.0f), one = splat(1.0f);
     const Float4 minusImpactSpeed = splat(-impactSpeed);
     const bool softBias = pass == SolvePass::soft_bias;
@@ -171,8 +171,8 @@ void solveWideContacts(SolverArrays& s, SolvePass pass, float h, bool leaveImpac
             if (j == 0) {
                 // One after the other: the first point acts before the second is solved.
                 const Mask4 now = andNot(acts[0], pair);
-                store4(p0.maxNormalImpulse, select(now, max4(load4(p0.maxNormalImpulse), increment[0]),
-                                                   load4(p0.maxNormalImpulse)));
+                store4(p0.maxNormalImpulse,
+                       select(now, max4(load4(p0.maxNormalImpulse), increment[0]), load4(p0.maxNormalImpulse)));
                 applyMasked(now, arms[0], increment[0] * nx, increment[0] * ny, mA, iA, mB, iB, v);
             }
         }

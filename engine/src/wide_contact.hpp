@@ -34,7 +34,7 @@ struct WideContactBlock {
     float friction[4], tangentSpeed[4];
     float mA[4], iA[4], mB[4], iB[4];
     float biasRate[4], massScale[4], impulseScale[4], maxPush[4];
-    float pairScale[4];  ///< the rows' pairScale (1 unless the points are solved together)
+    float pairScale[4];                       ///< the rows' pairScale (1 unless the points are solved together)
     float together[4], roundA[4], roundB[4];  ///< the rows' flags as 1 or 0
     WideContactPoint points[2];
 };
@@ -47,8 +47,8 @@ void warmStartWideContacts(SolverArrays& s, int firstBlock, int lastBlock);
 /// One sweep of blocks [firstBlock, lastBlock) in a soft_step pass: soft_bias,
 /// soft_relax or soft_relax_last (`leaveImpacts`: the last relax with the
 /// closed-form impact law, see contact_solver.cpp).
-void solveWideContacts(SolverArrays& s, SolvePass pass, float h, bool leaveImpacts, float impactSpeed,
-                       int firstBlock, int lastBlock);
+void solveWideContacts(SolverArrays& s, SolvePass pass, float h, bool leaveImpacts, float impactSpeed, int firstBlock,
+                       int lastBlock);
 /// The blocks' accumulated impulses back into their rows (for restitution
 /// and the store, which read the rows).
 void writeBackWideContacts(SolverArrays& s);

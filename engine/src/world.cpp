@@ -89,6 +89,14 @@ void World::setSettings(const WorldSettings& s) {
     }
 }
 
+void World::setTaskSystem(TaskSystem* tasks) {
+    detail::WorldState& w = state();
+    w.checkUnlocked();
+    w.tasks = tasks;
+}
+
+TaskSystem* World::taskSystem() const { return state().tasks; }
+
 void World::setGravity(Vec2 g) {
     detail::WorldState& w = state();
     w.checkUnlocked();

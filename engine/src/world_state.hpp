@@ -21,6 +21,7 @@
 #include "shape.hpp"
 #include "slot_array.hpp"
 #include "solver.hpp"
+#include "stage_runner.hpp"
 #include "validation.hpp"
 
 namespace i2d::detail {
@@ -47,6 +48,10 @@ struct WorldState {
     std::vector<std::uint32_t> impactChanged;
 
     // Callbacks (World::setCustomFilter, setPreSolve); empty when not set.
+    /// The game's task system (World::setTaskSystem), not owned; null: one thread.
+    TaskSystem* tasks = nullptr;
+    StageRunner runner;  ///< the step's parallel stages (stage_runner.cpp)
+
     CustomFilterFn customFilter;
     PreSolveFn preSolve;
 

@@ -14,7 +14,9 @@ const char* settingsOptionsHelp() {
            "  --sleep on|off            enable or disable sleeping\n"
            "  --manifold-reuse D        manifold reuse distance (m); 0 recomputes every manifold every step\n"
            "  --exact-joint-mass-ratio R  joint trees whose heaviest body is at least R times the lightest\n"
-           "                            are solved exactly (1: every tree; 1e30: none)\n";
+           "                            are solved exactly (1: every tree; 1e30: none)\n"
+           "  --threads N               workers the Impulse2D world steps on (default 1; the results are\n"
+           "                            bit-identical for any N); Box2D 2.4.1 runs on one\n";
 }
 
 void SettingsOverrides::applyTo(i2d::WorldSettings& s) const {
@@ -26,6 +28,11 @@ void SettingsOverrides::applyTo(i2d::WorldSettings& s) const {
     if (sleep) s.enableSleep = *sleep;
     if (manifoldReuse) s.manifoldReuseDistance = *manifoldReuse;
     if (exactJointMassRatio) s.exactJointMassRatio = *exactJointMassRatio;
+}
+
+void SettingsOverrides::applyTo(SceneDesc& desc) const {
+    applyTo(desc.settings);
+    if (threads) desc.threads = *threads;
 }
 
 Box2DSettings SettingsOverrides::box2dSettings() const {
@@ -50,6 +57,8 @@ bool parseSettingsOption(ArgReader& r, SettingsOverrides& o) {
         o.manifoldReuse = static_cast<float>(r.number(0.0, 10.0));
     } else if (r.is("--exact-joint-mass-ratio")) {
         o.exactJointMassRatio = static_cast<float>(r.number(1.0, 1.0e30));
+    } else if (r.is("--threads")) {
+        o.threads = static_cast<int>(r.integer(1, 64));
     } else if (r.is("--sleep")) {
         o.sleep = r.onOff();
     } else {

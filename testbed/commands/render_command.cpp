@@ -119,7 +119,7 @@ int runRenderCommand(const std::vector<std::string>& args, std::ostream& out, st
     try {
         if (a.assetsDir.empty()) a.assetsDir = defaultAssetsDir();
         SceneDesc desc = loadSceneDesc(a.scene, a.assetsDir);
-        a.overrides.applyTo(desc.settings);
+        a.overrides.applyTo(desc);
         std::string stem = !desc.name.empty() ? desc.name : std::filesystem::path(a.scene).stem().string();
         if (a.compare) stem += "_compare";
         RenderOptions& options = a.options;

@@ -98,7 +98,7 @@ int runRunCommand(const std::vector<std::string>& args, std::ostream& out, std::
     }
     try {
         SceneDesc desc = loadSceneDesc(opt.scene, opt.assetsDir);
-        opt.overrides.applyTo(desc.settings);
+        opt.overrides.applyTo(desc);
         long steps = 600;
         if (opt.steps) steps = *opt.steps;
         if (opt.seconds) steps = std::lround(*opt.seconds / static_cast<double>(desc.dt));

@@ -19,11 +19,13 @@
 #include <cinttypes>
 #include <cstdint>
 #include <cstdio>
+#include <memory>
 #include <ostream>
 #include <string>
 
 #include "scene_build.hpp"
 #include "scene_loader.hpp"
+#include "thread_pool.hpp"
 
 namespace {
 
@@ -42,7 +44,8 @@ struct Fnv1a {
 
 enum class Variant { as_shipped, baumgarte, split, velocity_bias, no_sleep };
 
-std::uint64_t runAndHash(const std::string& name, int steps, Variant variant) {
+/// `threads` workers (a tb::ThreadPool) when above 1.
+std::uint64_t runAndHash(const std::string& name, int steps, Variant variant, int threads = 1) {
     tb::SceneDesc desc = tb::loadSceneDesc(name, kAssets);
     switch (variant) {
         case Variant::as_shipped: break;
@@ -52,7 +55,13 @@ std::uint64_t runAndHash(const std::string& name, int steps, Variant variant) {
         case Variant::no_sleep: desc.settings.enableSleep = false; break;
     }
     tb::Scene scene = tb::buildScene(desc);
+    std::unique_ptr<tb::ThreadPool> pool;
+    if (threads > 1) {
+        pool = std::make_unique<tb::ThreadPool>(threads);
+        scene.world->setTaskSystem(pool.get());
+    }
     for (int i = 0; i < steps; ++i) scene.world->step(desc.dt);
+    scene.world->setTaskSystem(nullptr);
     Fnv1a hash;
     for (i2d::BodyId id : scene.bodies) {
         i2d::Vec2 p = scene.world->position(id);
@@ -108,6 +117,26 @@ TEST_P(PinnedDeterminism, FinalStateHashIsPinned) {
     EXPECT_EQ(h, run.hash) << run.label << " after " << run.steps << " steps hashes to " << hex;
     // The same calls in the same process give the same bits.
     EXPECT_EQ(runAndHash(run.scene, run.steps, run.variant), h) << run.label;
+}
+
+// The same pinned bits on two and three workers: the work a step shares
+// (integration body by body, contact blocks colour by colour) is independent
+// item by item, so who does which cannot change a bit.
+TEST_P(PinnedDeterminism, SameHashOnMoreWorkers) {
+    const PinnedRun& run = GetParam();
+    for (int threads : {2, 3})
+        EXPECT_EQ(runAndHash(run.scene, run.steps, run.variant, threads), run.hash)
+            << run.label << " on " << threads << " workers";
+}
+
+// A scene far above the size from which a step shares its work, over enough
+// steps for every stage to have run many times on several workers.
+TEST(ThreadedDeterminism, LargeScenesAreBitIdenticalOnAnyNumberOfWorkers) {
+    for (const char* scene : {"pyramid100", "joint_grid"}) {
+        const std::uint64_t one = runAndHash(scene, 120, Variant::no_sleep);
+        for (int threads : {2, 4})
+            EXPECT_EQ(runAndHash(scene, 120, Variant::no_sleep, threads), one) << scene << " on " << threads;
+    }
 }
 
 INSTANTIATE_TEST_SUITE_P(Shipped, PinnedDeterminism, ::testing::ValuesIn(kPinned),

@@ -91,6 +91,7 @@ TEST(WideContact, AgreesBitForBitWithTheScalarRows) {
         s.wideContacts.resizeForOverwrite(static_cast<std::size_t>((n + 3) / 4));
         packWideContacts(s, 0, n, 0);
         s.wideContactsActive = true;
+        s.wideContactColourStart = {0, (n + 3) / 4};  // one colour
         s.contactOverflowStart = n;
         warmStartContacts(scalar);
         warmStartContacts(wide);
@@ -113,7 +114,8 @@ TEST(WideContact, AgreesBitForBitWithTheScalarRows) {
             for (int j = 0; j < a.pointCount; ++j) {
                 ASSERT_EQ(a.points[j].normalImpulse, b.points[j].normalImpulse) << "seed " << seed << " row " << r;
                 ASSERT_EQ(a.points[j].tangentImpulse, b.points[j].tangentImpulse) << "seed " << seed << " row " << r;
-                ASSERT_EQ(a.points[j].maxNormalImpulse, b.points[j].maxNormalImpulse) << "seed " << seed << " row " << r;
+                ASSERT_EQ(a.points[j].maxNormalImpulse, b.points[j].maxNormalImpulse)
+                    << "seed " << seed << " row " << r;
             }
         }
     }

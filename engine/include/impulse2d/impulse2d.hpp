@@ -9,5 +9,6 @@
 #include "impulse2d/impact.hpp"
 #include "impulse2d/math.hpp"
 #include "impulse2d/mover.hpp"
+#include "impulse2d/tasks.hpp"
 #include "impulse2d/types.hpp"
 #include "impulse2d/world.hpp"

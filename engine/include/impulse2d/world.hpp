@@ -20,7 +20,8 @@
 // below (those that create, destroy, move or wake things) also throw when
 // made from inside World::draw (a DebugDraw that calls back into its world).
 // Threading: a World is not thread-safe; different worlds may be used from
-// different threads. Determinism: the same build, the same calls in the same
+// different threads. A step may share its work with the game's task system
+// (setTaskSystem). Determinism: the same build, the same calls in the same
 // order give bit-identical results.
 #pragma once
 
@@ -33,6 +34,7 @@
 #include "impulse2d/error.hpp"
 #include "impulse2d/geometry.hpp"
 #include "impulse2d/mover.hpp"
+#include "impulse2d/tasks.hpp"
 #include "impulse2d/types.hpp"
 
 namespace i2d {
@@ -78,6 +80,13 @@ public:
     /// maxLinearSpeed is not in (0, 1e7]; positionCorrection or impactModel
     /// is not one of the enum's values.
     void setSettings(const WorldSettings& settings);
+    /// The task system the world's steps may share their work with
+    /// (impulse2d/tasks.hpp); null, the default, steps on the calling thread.
+    /// The world does not own it: it must outlive the world or be replaced
+    /// first. Results are bit-identical for any task system and worker count.
+    /// Locked.
+    void setTaskSystem(TaskSystem* tasks);
+    TaskSystem* taskSystem() const;
     /// Set the gravity acceleration (m/s², locked), applied from the next step.
     /// Does not wake sleeping bodies. Throws i2d::Error unless bounded.
     void setGravity(Vec2 gravity);

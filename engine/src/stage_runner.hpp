@@ -1,0 +1,59 @@
+// The parallel stages of a step (stage_runner.cpp). The thread that steps the
+// world publishes a stage — a function over items [0, count) — takes part in
+// it and waits until every item is done; helpers, enqueued once per solve on
+// the game's task system (impulse2d/tasks.hpp), claim chunks of whatever stage
+// is current. Items of a stage must be independent (the contact blocks of one
+// colour, the bodies of an integration), so who runs which chunk changes
+// nothing: a step is bit-identical on any number of workers. The caller never
+// waits for a helper to start, so a helper that starts late only helps less.
+#pragma once
+
+#include <atomic>
+#include <cstdint>
+
+#include "impulse2d/tasks.hpp"
+
+namespace i2d::detail {
+
+class StageRunner {
+public:
+    using StageFn = void (*)(void* context, int begin, int end);
+
+    /// Enqueues tasks->workerCount() − 1 helpers when there is more than one
+    /// worker; with none (or one worker) every stage runs on the caller.
+    void begin(TaskSystem* tasks);
+    /// Releases the helpers and waits for them (TaskSystem::finish).
+    void end();
+    bool parallel() const { return handleActive_; }
+
+    /// Runs fn over [0, count) in chunks of `grain` items; returns when all are done.
+    void run(StageFn fn, void* context, int count, int grain);
+    template <class F>
+    void run(int count, int grain, F& f) {
+        run([](void* c, int b, int e) { (*static_cast<F*>(c))(b, e); }, &f, count, grain);
+    }
+
+private:
+    static void helper(int begin, int end, int worker, void* context);
+    /// Claims and runs chunks of the stage of `epoch` until none is left.
+    void work(std::uint32_t epoch, StageFn fn, void* context, int count, int grain);
+
+    // claim_: the current stage's epoch (high 32 bits) and its next unclaimed item.
+    std::atomic<std::uint64_t> claim_{0};
+    std::atomic<int> done_{0};
+    /// Stage descriptions by epoch parity: the caller writes stage E + 1's
+    /// while a late helper may still read stage E's.
+    struct Stage {
+        std::atomic<StageFn> fn{nullptr};
+        std::atomic<void*> context{nullptr};
+        std::atomic<int> count{0}, grain{1};
+    };
+    Stage stages_[2];
+    std::atomic<bool> exit_{false};
+    std::uint32_t epoch_ = 0;
+    TaskSystem* tasks_ = nullptr;
+    void* handle_ = nullptr;
+    bool handleActive_ = false;
+};
+
+}  // namespace i2d::detail
