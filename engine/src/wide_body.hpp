@@ -1,9 +1,11 @@
 // The solver states of four bodies as lanes of Float4 (float4.hpp): gathered
 // from the BodyState array, velocities written back. Rows solved four at a
-// time (wide_revolute.cpp) touch four different movable bodies per side, as
-// the graph colouring guarantees, so the write-back never loses an update;
-// several lanes may name the zero state of the bodies that do not move, which
-// is reset after every sweep as for scalar rows.
+// time (wide_contact.cpp, wide_revolute.cpp) touch four different movable
+// bodies per side, as the graph colouring guarantees, so the write-back never
+// loses an update. A side that cannot move (the zero state of static and
+// sleeping bodies, or a kinematic body, which the colouring lets many rows of
+// a colour share) is read, never written: its velocity cannot change, and
+// workers sharing a colour would otherwise write it at the same time.
 #pragma once
 
 #include "body.hpp"
@@ -34,13 +36,13 @@ inline WideBody gatherBodies(const BodyState* states, const int index[4]) {
     return b;
 }
 
-inline void scatterVelocities(BodyState* states, const int index[4], const WideBody& b) {
-    Float4 r0 = b.vx, r1 = b.vy, r2 = b.w, r3 = b.reserved;
-    transpose(r0, r1, r2, r3);
-    _mm_storeu_ps(reinterpret_cast<float*>(states + index[0]), r0.v);
-    _mm_storeu_ps(reinterpret_cast<float*>(states + index[1]), r1.v);
-    _mm_storeu_ps(reinterpret_cast<float*>(states + index[2]), r2.v);
-    _mm_storeu_ps(reinterpret_cast<float*>(states + index[3]), r3.v);
+inline void scatterVelocities(BodyState* states, const int index[4], const WideBody& b, const float invMass[4],
+                              const float invInertia[4]) {
+    Float4 r[4] = {b.vx, b.vy, b.w, b.reserved};
+    transpose(r[0], r[1], r[2], r[3]);
+    for (int i = 0; i < 4; ++i)
+        if (invMass[i] != 0.0f || invInertia[i] != 0.0f)
+            _mm_storeu_ps(reinterpret_cast<float*>(states + index[i]), r[i].v);
 }
 
 #else
@@ -55,8 +57,10 @@ inline WideBody gatherBodies(const BodyState* states, const int index[4]) {
     return b;
 }
 
-inline void scatterVelocities(BodyState* states, const int index[4], const WideBody& b) {
+inline void scatterVelocities(BodyState* states, const int index[4], const WideBody& b, const float invMass[4],
+                              const float invInertia[4]) {
     for (int i = 0; i < 4; ++i) {
+        if (invMass[i] == 0.0f && invInertia[i] == 0.0f) continue;
         BodyState& s = states[index[i]];
         s.v = {b.vx.v[i], b.vy.v[i]};
         s.w = b.w.v[i];

@@ -102,8 +102,8 @@ void warmStartWideContacts(SolverArrays& s, int firstBlock, int lastBlock) {
         }
         A.vx = v.vAx, A.vy = v.vAy, A.w = v.wA;
         B.vx = v.vBx, B.vy = v.vBy, B.w = v.wB;
-        scatterVelocities(states, k.a, A);
-        scatterVelocities(states, k.b, B);
+        scatterVelocities(states, k.a, A, k.mA, k.iA);
+        scatterVelocities(states, k.b, B, k.mB, k.iB);
     }
 }
 
@@ -201,8 +201,8 @@ void solveWideContacts(SolverArrays& s, SolvePass pass, float h, bool leaveImpac
         }
         A.vx = v.vAx, A.vy = v.vAy, A.w = v.wA;
         B.vx = v.vBx, B.vy = v.vBy, B.w = v.wB;
-        scatterVelocities(states, k.a, A);
-        scatterVelocities(states, k.b, B);
+        scatterVelocities(states, k.a, A, k.mA, k.iA);
+        scatterVelocities(states, k.b, B, k.mB, k.iB);
     }
 }
 

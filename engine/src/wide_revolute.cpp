@@ -75,8 +75,8 @@ void warmStartWideRevolutes(SolverArrays& s, int firstBlock, int lastBlock) {
         WideBody B = gatherBodies(states, k.b);
         const WideAnchors r = turnedAnchors(k, A, B);
         applyWide(k, r, load4(k.px), load4(k.py), A, B);
-        scatterVelocities(states, k.a, A);
-        scatterVelocities(states, k.b, B);
+        scatterVelocities(states, k.a, A, k.mA, k.iA);
+        scatterVelocities(states, k.b, B, k.mB, k.iB);
     }
 }
 
@@ -108,8 +108,8 @@ void solveWideRevolutes(SolverArrays& s, const JointContext& ctx, int firstBlock
         store4(k.px, px + ix);
         store4(k.py, py + iy);
         applyWide(k, r, ix, iy, A, B);
-        scatterVelocities(states, k.a, A);
-        scatterVelocities(states, k.b, B);
+        scatterVelocities(states, k.a, A, k.mA, k.iA);
+        scatterVelocities(states, k.b, B, k.mB, k.iB);
     }
 }
 
