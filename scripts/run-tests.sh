@@ -8,15 +8,20 @@
 #                second full build, opt-in
 #   --no-asan    skip the sanitizer stage of the engine's tests (a quicker
 #                local run; CI runs it)
+#   --tsan       afterwards also build the testbed's tests under
+#                ThreadSanitizer (preset "tsan", build-tsan/) and run the
+#                determinism tests, which step worlds on several workers
 set -euo pipefail
 cd "$(dirname "$0")/.."
 sanitize=0
 engine_asan=1
+tsan=0
 for arg in "$@"; do
   case "$arg" in
     --sanitize) sanitize=1 ;;
     --no-asan) engine_asan=0 ;;
-    *) echo "usage: scripts/run-tests.sh [--sanitize] [--no-asan]" >&2; exit 2 ;;
+    --tsan) tsan=1 ;;
+    *) echo "usage: scripts/run-tests.sh [--sanitize] [--no-asan] [--tsan]" >&2; exit 2 ;;
   esac
 done
 scripts/setup.sh -DI2D_WERROR=ON
@@ -31,4 +36,9 @@ if [ $sanitize = 1 ]; then
   cmake --preset asan -DI2D_WERROR=ON >/dev/null
   cmake --build --preset asan >&2
   ctest --preset asan
+fi
+if [ $tsan = 1 ]; then
+  cmake --preset tsan -DI2D_WERROR=ON >/dev/null
+  cmake --build --preset tsan >&2
+  ctest --preset tsan
 fi
