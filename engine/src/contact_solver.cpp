@@ -506,13 +506,18 @@ void applyRestitution(WorldState& w) {
 
 void storeContactImpulses(WorldState& w) {
     if (!w.solver.rolling.empty()) storeRollingResistance(w);
-    for (const ContactConstraint& cc : w.solver.constraints) {
-        Contact& ct = w.contacts[cc.contact];
-        for (int j = 0; j < cc.pointCount; ++j) {
-            ct.normalImpulse[j] = cc.points[j].normalImpulse;
-            ct.tangentImpulse[j] = cc.points[j].tangentImpulse;
+    // Row by row into its own contact: shared among the workers.
+    auto store = [&](int b, int e) {
+        for (int r = b; r < e; ++r) {
+            const ContactConstraint& cc = w.solver.constraints[static_cast<std::size_t>(r)];
+            Contact& ct = w.contacts[cc.contact];
+            for (int j = 0; j < cc.pointCount; ++j) {
+                ct.normalImpulse[j] = cc.points[j].normalImpulse;
+                ct.tangentImpulse[j] = cc.points[j].tangentImpulse;
+            }
         }
-    }
+    };
+    w.runner.run(static_cast<int>(w.solver.constraints.size()), 256, store);
 }
 
 // ---- Rolling resistance ------------------------------------------------------

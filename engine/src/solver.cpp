@@ -55,6 +55,14 @@ namespace {
 
 constexpr int kColourCount = 24;  ///< colours tried before the overflow group
 
+/// Contact rows plus awake bodies from which a step shares its solve with the
+/// task system's workers (below, handing out stages costs more than it saves),
+/// the bodies per chunk of an integration stage, and the contact blocks per
+/// chunk when they are packed or written back.
+constexpr int kParallelWork = 512;
+constexpr int kBodyGrain = 128;
+constexpr int kPackGrain = 32;
+
 /// Colours the rows of this step's active contacts (greedy, in activeContacts
 /// order, overflow group last) and leaves in colourOffsets the first row of
 /// each colour: a stable counting sort, so within a colour the rows keep the
@@ -115,25 +123,32 @@ void packContactColours(WorldState& w, bool soft) {
         return;
     }
     // One allocation, sized first: growing block by block made a fresh
-    // allocation, page faults and a copy per doubling, every step.
-    int blocks = 0, start = 0;
-    for (int c = 0; c < kColourCount; ++c) {
-        const int end = s.colourOffsets[static_cast<std::size_t>(c)];
-        blocks += (end - start + 3) / 4;
-        start = end;
-    }
-    s.wideContacts.resizeForOverwrite(static_cast<std::size_t>(blocks));
+    // allocation, page faults and a copy per doubling, every step. Each
+    // block's first row and its colour's end, then the blocks packed on
+    // every worker (each is written alone).
+    std::vector<int>& blockRows = s.wideBlockRows;
+    blockRows.clear();
     s.wideContactColourStart.resize(kColourCount + 1);
-    int block = 0;
-    start = 0;
+    int start = 0;
     for (int c = 0; c < kColourCount; ++c) {
-        s.wideContactColourStart[static_cast<std::size_t>(c)] = block;
+        s.wideContactColourStart[static_cast<std::size_t>(c)] = static_cast<int>(blockRows.size() / 2);
         const int end = s.colourOffsets[static_cast<std::size_t>(c)];
-        block = packWideContacts(s, start, end, block);
+        for (int row = start; row < end; row += 4) {
+            blockRows.push_back(row);
+            blockRows.push_back(end);
+        }
         start = end;
     }
-    s.wideContactColourStart[kColourCount] = block;
+    const int blocks = static_cast<int>(blockRows.size() / 2);
+    s.wideContactColourStart[kColourCount] = blocks;
     s.contactOverflowStart = start;
+    s.wideContacts.resizeForOverwrite(static_cast<std::size_t>(blocks));
+    auto pack = [&](int b, int e) {
+        for (int k = b; k < e; ++k)
+            packWideContactBlock(s, k, blockRows[static_cast<std::size_t>(2 * k)],
+                                 blockRows[static_cast<std::size_t>(2 * k + 1)]);
+    };
+    w.runner.run(blocks, kPackGrain, pack);
 }
 
 // ---------------------------------------------------------------------------
@@ -258,12 +273,6 @@ void dropNonFinitePush(SolverArrays& s) {
 /// one sweep suffices, as in Box2D v3; it saves a seventh of joint_grid's step.
 constexpr int kJointSolvePasses = 1;
 
-/// Contact rows plus awake bodies from which a step shares its solve with the
-/// task system's workers (below, handing out stages costs more than it saves),
-/// and the bodies per chunk of an integration stage.
-constexpr int kParallelWork = 512;
-constexpr int kBodyGrain = 128;
-
 // ---------------------------------------------------------------------------
 // The solve stage
 
@@ -308,6 +317,15 @@ void solve(WorldState& w, float dt) {
     gatherBodies(w, h);
     const std::size_t n = s.stateBodies.size();
     colourContacts(w);
+    // The step's work is shared with the task system's workers when it is
+    // large enough to gain from it (kParallelWork); the result is the same.
+    const bool parallel = w.tasks != nullptr && w.tasks->workerCount() > 1 &&
+                          s.rowCount + static_cast<int>(n) >= kParallelWork;
+    w.runner.begin(parallel ? w.tasks : nullptr);
+    struct EndStages {
+        StageRunner& runner;
+        ~EndStages() { runner.end(); }
+    } endStages{w.runner};
     prepareContacts(w, h, soft);
     packContactColours(w, soft);
     prepareJoints(w, dt);
@@ -353,14 +371,6 @@ void solve(WorldState& w, float dt) {
         };
         w.runner.run(static_cast<int>(n), kBodyGrain, range);
     };
-    const bool parallel = w.tasks != nullptr && w.tasks->workerCount() > 1 &&
-                          s.rowCount + static_cast<int>(n) >= kParallelWork;
-    w.runner.begin(parallel ? w.tasks : nullptr);
-    struct EndStages {
-        StageRunner& runner;
-        ~EndStages() { runner.end(); }
-    } endStages{w.runner};
-
     if (soft) {
         for (int i = 0; i < substeps; ++i) {
             velocities(h);
@@ -372,7 +382,10 @@ void solve(WorldState& w, float dt) {
             joints(SolvePass::soft_relax);
             contacts(i + 1 == substeps ? SolvePass::soft_relax_last : SolvePass::soft_relax, h);
         }
-        if (s.wideContactsActive) writeBackWideContacts(s);  // restitution and the store read the rows
+        if (s.wideContactsActive) {  // restitution and the store read the rows
+            auto back = [&](int b, int e) { writeBackWideContacts(s, b, e); };
+            w.runner.run(static_cast<int>(s.wideContacts.size()), kPackGrain, back);
+        }
         if (set.impactModel == ImpactModel::velocity_bias) {
             applyRestitution(w);
             stopNonFiniteBodies(s);
@@ -412,8 +425,6 @@ void solve(WorldState& w, float dt) {
             positions(dt);
         }
     }
-    endStages.runner.end();
-
     storeContactImpulses(w);
     storeJoints(w, soft ? h : dt);
 
@@ -421,22 +432,25 @@ void solve(WorldState& w, float dt) {
     // The relax and restitution passes act after the last position update, so
     // the limits are applied once more to the velocities the body keeps.
     const float maxAngular = kMaxRotationPerStep / (dt / static_cast<float>(substeps));
-    for (std::size_t i = 0; i < n; ++i) {
-        Body& body = w.bodies[s.stateBodies[i]];
-        BodyState& st = s.states[i];
-        clampVelocity(st, maxSpeed, maxAngular);
-        body.v = st.v;
-        body.w = st.w;
-        body.center += st.dp;
-        Rot q = mulRot(st.dq, body.xf.q);
-        float mag = std::sqrt(q.c * q.c + q.s * q.s);
-        q = {q.c / mag, q.s / mag};
-        body.xf.q = q;
-        body.xf.p = body.center - rotate(q, body.localCenter);
-        body.force = {};
-        body.torque = 0.0f;
-        body.solverIndex = kNullIndex;
-    }
+    auto writeBack = [&](int first, int last) {
+        for (std::size_t i = static_cast<std::size_t>(first); i < static_cast<std::size_t>(last); ++i) {
+            Body& body = w.bodies[s.stateBodies[i]];
+            BodyState& st = s.states[i];
+            clampVelocity(st, maxSpeed, maxAngular);
+            body.v = st.v;
+            body.w = st.w;
+            body.center += st.dp;
+            Rot q = mulRot(st.dq, body.xf.q);
+            float mag = std::sqrt(q.c * q.c + q.s * q.s);
+            q = {q.c / mag, q.s / mag};
+            body.xf.q = q;
+            body.xf.p = body.center - rotate(q, body.localCenter);
+            body.force = {};
+            body.torque = 0.0f;
+            body.solverIndex = kNullIndex;
+        }
+    };
+    w.runner.run(static_cast<int>(n), kBodyGrain, writeBack);
 }
 
 /// Per-step arrays larger than this are freed when the step ends, so that a

@@ -45,6 +45,7 @@ struct SolverArrays {
     ScratchArray<WideContactBlock> wideContacts;  ///< the coloured contact rows four at a time (wide_contact.cpp)
     bool wideContactsActive = false;              ///< this step solves them so
     std::vector<int> wideContactColourStart;      ///< per colour: its first block; then the block count
+    std::vector<int> wideBlockRows;               ///< per block: its first row and its colour's end
     int contactOverflowStart = 0;                 ///< the first row of the scalar rest (the overflow group)
 };
 

@@ -11,10 +11,10 @@
 
 namespace i2d::detail {
 
-int packWideContacts(SolverArrays& s, int first, int last, int block) {
+void packWideContactBlock(SolverArrays& s, int block, int start, int last) {
     const int zero = static_cast<int>(s.states.size()) - 1;
-    for (int start = first; start < last; start += 4) {
-        WideContactBlock& k = s.wideContacts[static_cast<std::size_t>(block++)];
+    {
+        WideContactBlock& k = s.wideContacts[static_cast<std::size_t>(block)];
         for (int lane = 0; lane < 4; ++lane) {
             const int r = start + lane;
             const bool used = r < last;
@@ -51,7 +51,6 @@ int packWideContacts(SolverArrays& s, int first, int last, int block) {
             }
         }
     }
-    return block;
 }
 
 namespace {
@@ -206,8 +205,9 @@ void solveWideContacts(SolverArrays& s, SolvePass pass, float h, bool leaveImpac
     }
 }
 
-void writeBackWideContacts(SolverArrays& s) {
-    for (const WideContactBlock& k : s.wideContacts)
+void writeBackWideContacts(SolverArrays& s, int firstBlock, int lastBlock) {
+    for (int i = firstBlock; i < lastBlock; ++i) {
+        const WideContactBlock& k = s.wideContacts[static_cast<std::size_t>(i)];
         for (int lane = 0; lane < 4; ++lane) {
             if (k.row[lane] < 0) continue;
             ContactConstraint& cc = s.constraints[static_cast<std::size_t>(k.row[lane])];
@@ -218,6 +218,7 @@ void writeBackWideContacts(SolverArrays& s) {
                 cp.maxNormalImpulse = k.points[j].maxNormalImpulse[lane];
             }
         }
+    }
 }
 
 void dropWideContactImpulses(SolverArrays& s, const std::vector<char>& bad) {

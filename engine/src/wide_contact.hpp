@@ -39,19 +39,19 @@ struct WideContactBlock {
     WideContactPoint points[2];
 };
 
-/// Packs the rows [first, last) of SolverArrays::constraints (one colour's)
-/// into s.wideContacts from block `block` on (sized by the caller: a block
-/// per four rows, rounded up); returns the next block. Writes every field.
-int packWideContacts(SolverArrays& s, int first, int last, int block);
+/// Packs the rows [start, min(start + 4, last)) of SolverArrays::constraints
+/// (of one colour, which ends at `last`) into block `block` of
+/// s.wideContacts (sized by the caller), every field written.
+void packWideContactBlock(SolverArrays& s, int block, int start, int last);
 void warmStartWideContacts(SolverArrays& s, int firstBlock, int lastBlock);
 /// One sweep of blocks [firstBlock, lastBlock) in a soft_step pass: soft_bias,
 /// soft_relax or soft_relax_last (`leaveImpacts`: the last relax with the
 /// closed-form impact law, see contact_solver.cpp).
 void solveWideContacts(SolverArrays& s, SolvePass pass, float h, bool leaveImpacts, float impactSpeed, int firstBlock,
                        int lastBlock);
-/// The blocks' accumulated impulses back into their rows (for restitution
-/// and the store, which read the rows).
-void writeBackWideContacts(SolverArrays& s);
+/// The accumulated impulses of blocks [firstBlock, lastBlock) back into their
+/// rows (for restitution and the store, which read the rows).
+void writeBackWideContacts(SolverArrays& s, int firstBlock, int lastBlock);
 /// Drops the accumulated impulses of every lane on a body marked bad.
 void dropWideContactImpulses(SolverArrays& s, const std::vector<char>& bad);
 

@@ -89,7 +89,7 @@ TEST(WideContact, AgreesBitForBitWithTheScalarRows) {
         fill(wide, seed, n);
         SolverArrays& s = wide.solver;
         s.wideContacts.resizeForOverwrite(static_cast<std::size_t>((n + 3) / 4));
-        packWideContacts(s, 0, n, 0);
+        for (int block = 0; 4 * block < n; ++block) packWideContactBlock(s, block, 4 * block, n);
         s.wideContactsActive = true;
         s.wideContactColourStart = {0, (n + 3) / 4};  // one colour
         s.contactOverflowStart = n;
@@ -102,7 +102,7 @@ TEST(WideContact, AgreesBitForBitWithTheScalarRows) {
             solveContacts(scalar, 1.0f / 240.0f, pass);
             solveContacts(wide, 1.0f / 240.0f, pass);
         }
-        writeBackWideContacts(s);
+        writeBackWideContacts(s, 0, static_cast<int>(s.wideContacts.size()));
         for (std::size_t i = 0; i + 1 < s.states.size(); ++i) {
             ASSERT_EQ(s.states[i].v.x, scalar.solver.states[i].v.x) << "seed " << seed << " body " << i;
             ASSERT_EQ(s.states[i].v.y, scalar.solver.states[i].v.y) << "seed " << seed << " body " << i;
