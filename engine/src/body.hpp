@@ -20,15 +20,22 @@ namespace i2d::detail {
 struct WorldState;
 
 struct Body {
-    Transform xf{};       ///< origin and rotation
-    Vec2 center{};        ///< centre of mass, world
-    Vec2 localCenter{};   ///< centre of mass, body frame
+    // What the solver's preparation reads of every body, every step (joint
+    // slots, contact rows), in the first cache line.
+    Transform xf{};                ///< origin and rotation
+    Vec2 center{};                 ///< centre of mass, world
+    Vec2 localCenter{};            ///< centre of mass, body frame
+    float invMass = 0.0f;          ///< 1/kg
+    float invInertia = 0.0f;       ///< about the centre of mass
+    int solverIndex = kNullIndex;  ///< index into the solver arrays during a step
+    bool awake = true;
+    bool enabled = true;  ///< false: out of the simulation and the broadphase (World::disableBody)
     Vec2 v{};             ///< velocity of the centre of mass (m/s)
     float w = 0.0f;       ///< angular velocity (rad/s)
     Vec2 force{};         ///< accumulated for the next step (N)
     float torque = 0.0f;  ///< N·m
-    float mass = 0.0f, invMass = 0.0f;
-    float inertia = 0.0f, invInertia = 0.0f;  ///< about the centre of mass
+    float mass = 0.0f;
+    float inertia = 0.0f;  ///< about the centre of mass
     float linearDamping = 0.0f, angularDamping = 0.0f;
     float gravityScale = 1.0f;
     float sleepTime = 0.0f;  ///< seconds at rest (island.cpp)
@@ -46,14 +53,11 @@ struct Body {
     std::uint32_t startStamp = 0;
     int awakeIndex = kNullIndex;   ///< position in IslandSet::awakeBodies
     int sleepIsland = kNullIndex;  ///< sleeping island this body belongs to
-    int solverIndex = kNullIndex;  ///< index into the solver arrays during a step
     BodyType type = BodyType::static_body;
     bool fixedRotation = false;
     bool isBullet = false;  ///< also swept against non-bullet dynamic bodies (continuous.cpp)
-    bool awake = true;
     bool enableSleep = true;
     bool alive = false;
-    bool enabled = true;  ///< false: out of the simulation and the broadphase (World::disableBody)
     int firstShape = kNullIndex, lastShape = kNullIndex;  ///< the body's shapes, in creation order (shape.hpp)
     std::uintptr_t userData = 0;
     std::vector<int> contacts;  ///< contact slots

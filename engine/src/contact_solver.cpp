@@ -191,7 +191,8 @@ namespace {
 /// workers (WorldState::runner): they touch no movable body twice.
 template <class F>
 void forEachWideColour(WorldState& w, F&& blocks) {
-    constexpr int kBlockGrain = 8;  // blocks per chunk a worker claims
+    constexpr int kBlockGrain =
+        64;  // blocks per chunk a worker claims: large, so that few bodies' cache lines are written by two workers
     const std::vector<int>& start = w.solver.wideContactColourStart;
     for (std::size_t c = 0; c + 1 < start.size(); ++c) {
         const int first = start[c], count = start[c + 1] - start[c];

@@ -157,8 +157,6 @@ struct JointContext {
     Softness jointSoft;       ///< softness of rigid rows in the soft_bias pass
     float pushFactor = 0.0f;  ///< β of baumgarte (and of split's push)
     float maxLinearSpeed = 0.0f;
-    int positionUpdates =
-        0;  ///< position updates so far in the step (joint_tree.cpp reuses its factorization between them)
 };
 
 /// Links a new joint to its bodies, drops the contacts between them when

@@ -23,7 +23,7 @@ namespace {
 constexpr int kJointColours = 16;  ///< colours tried before the overflow group
 /// Wide blocks per chunk a worker claims (a colour's blocks are shared among
 /// the workers: they touch no movable body twice).
-constexpr int kWideGrain = 16;
+constexpr int kWideGrain = 64;
 
 /// The solver state of a body index, or a zero stand-in that is thrown away.
 BodyState& stateOf(SolverArrays& s, int index) {
@@ -222,6 +222,7 @@ void prepareJoints(WorldState& w, float dt) {
         }
     buildJointTrees(w);
     packWideRows(w, s);
+    s.wideFrameAt = -1;  // the blocks' kept anchors are made by the first pass
 }
 
 /// Colour by colour: the scalar rows, then the wide blocks.
@@ -236,6 +237,7 @@ void sweepColours(SolverArrays& s, ScalarRow&& scalarRow, WideBlocks&& wideBlock
 
 void warmStartJoints(WorldState& w) {
     SolverArrays& s = w.solver;
+    const bool kept = s.wideFrameAt == s.positionUpdates;
     sweepColours(
         s,
         [&](JointConstraint& jc) {
@@ -254,14 +256,16 @@ void warmStartJoints(WorldState& w) {
             }
         },
         [&](int first, int last) {
-            auto range = [&](int b, int e) { warmStartWideRevolutes(s, first + b, first + e); };
+            auto range = [&](int b, int e) { warmStartWideRevolutes(s, first + b, first + e, kept); };
             w.runner.run(last - first, kWideGrain, range);
         });
+    s.wideFrameAt = s.positionUpdates;
     clearZeroState(s);
 }
 
 void solveJoints(WorldState& w, const JointContext& ctx) {
     SolverArrays& s = w.solver;
+    const bool kept = s.wideFrameAt == s.positionUpdates;
     sweepColours(
         s,
         [&](JointConstraint& jc) {
@@ -280,11 +284,12 @@ void solveJoints(WorldState& w, const JointContext& ctx) {
             }
         },
         [&](int first, int last) {
-            auto range = [&](int b, int e) { solveWideRevolutes(s, ctx, first + b, first + e); };
+            auto range = [&](int b, int e) { solveWideRevolutes(s, ctx, first + b, first + e, kept); };
             w.runner.run(last - first, kWideGrain, range);
         });
+    s.wideFrameAt = s.positionUpdates;
     clearZeroState(s);
-    solveJointTrees(w, ctx, ctx.positionUpdates);
+    solveJointTrees(w, ctx, s.positionUpdates);
     clearZeroState(s);
 }
 

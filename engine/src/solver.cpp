@@ -55,12 +55,15 @@ namespace {
 
 constexpr int kColourCount = 24;  ///< colours tried before the overflow group
 
-/// Contact rows plus awake bodies from which a step shares its solve with the
-/// task system's workers (below, handing out stages costs more than it saves),
-/// the bodies per chunk of an integration stage, and the contact blocks per
-/// chunk when they are packed or written back.
-constexpr int kParallelWork = 512;
-constexpr int kBodyGrain = 128;
+/// Contact rows, joints and awake bodies from which a step shares its solve
+/// with the task system's workers: below, a colour's sweep takes a few
+/// microseconds and handing it out costs more than it saves (joint_grid,
+/// 2,600 items, and rain1000, 3,000, ran slower on two workers than on one);
+/// pyramid100 (15,000) gained a fifth. Then the bodies per chunk of an
+/// integration stage, and the contact blocks per chunk when they are packed
+/// or written back: large, so that few cache lines are written by two workers.
+constexpr int kParallelWork = 4096;
+constexpr int kBodyGrain = 512;
 constexpr int kPackGrain = 32;
 
 /// Colours the rows of this step's active contacts (greedy, in activeContacts
@@ -320,12 +323,13 @@ void solve(WorldState& w, float dt) {
     // The step's work is shared with the task system's workers when it is
     // large enough to gain from it (kParallelWork); the result is the same.
     const bool parallel = w.tasks != nullptr && w.tasks->workerCount() > 1 &&
-                          s.rowCount + static_cast<int>(n) >= kParallelWork;
+                          s.rowCount + w.joints.count + static_cast<int>(n) >= kParallelWork;
     w.runner.begin(parallel ? w.tasks : nullptr);
     struct EndStages {
         StageRunner& runner;
         ~EndStages() { runner.end(); }
     } endStages{w.runner};
+    s.positionUpdates = 0;
     prepareContacts(w, h, soft);
     packContactColours(w, soft);
     prepareJoints(w, dt);
@@ -378,7 +382,7 @@ void solve(WorldState& w, float dt) {
             for (int pass = 0; pass < kJointSolvePasses; ++pass) joints(SolvePass::soft_bias);
             contacts(SolvePass::soft_bias, h);
             positions(h);
-            ++jointCtx.positionUpdates;
+            ++s.positionUpdates;  // the joint trees and wide hinges keep what they made until then
             joints(SolvePass::soft_relax);
             contacts(i + 1 == substeps ? SolvePass::soft_relax_last : SolvePass::soft_relax, h);
         }

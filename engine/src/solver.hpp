@@ -37,6 +37,8 @@ struct SolverArrays {
     std::vector<int> jointColourStart;    ///< per joint colour: its first place in jointOrder; then the row count
     std::vector<int> jointWideStart;      ///< per joint colour: its first place of the wide path
     std::vector<WideRevoluteBlock> wideRevolutes;  ///< the wide rows, four to a block (wide_revolute.cpp)
+    int positionUpdates = 0;                       ///< position updates so far in this step (solver.cpp)
+    int wideFrameAt = -1;                          ///< the positionUpdates the blocks' kept anchors and K were made at
     std::vector<int> wideBlockStart;               ///< per joint colour: its first block; then the block count
     std::vector<std::uint8_t> jointColours;
     std::vector<std::uint32_t> bodyColours;       ///< per state: the joint colours its rows took (joint_solver.cpp)

@@ -69,7 +69,8 @@ void StageRunner::work(std::uint32_t epoch, StageFn fn, void* context, int count
 
 void StageRunner::run(StageFn fn, void* context, int count, int grain) {
     if (count <= 0) return;
-    if (!handleActive_) {
+    // One chunk's work is not worth a hand-over: the caller does it alone.
+    if (!handleActive_ || count <= grain) {
         fn(context, 0, count);
         return;
     }

@@ -38,9 +38,11 @@ private:
     /// Claims and runs chunks of the stage of `epoch` until none is left.
     void work(std::uint32_t epoch, StageFn fn, void* context, int count, int grain);
 
-    // claim_: the current stage's epoch (high 32 bits) and its next unclaimed item.
-    std::atomic<std::uint64_t> claim_{0};
-    std::atomic<int> done_{0};
+    // claim_: the current stage's epoch (high 32 bits) and its next unclaimed
+    // item. It and done_ live on cache lines of their own: the workers write
+    // them all the time, and the caller polls done_.
+    alignas(64) std::atomic<std::uint64_t> claim_{0};
+    alignas(64) std::atomic<int> done_{0};
     /// Stage descriptions by epoch parity: the caller writes stage E + 1's
     /// while a late helper may still read stage E's.
     struct Stage {
@@ -48,8 +50,8 @@ private:
         std::atomic<void*> context{nullptr};
         std::atomic<int> count{0}, grain{1};
     };
-    Stage stages_[2];
-    std::atomic<bool> exit_{false};
+    alignas(64) Stage stages_[2];
+    alignas(64) std::atomic<bool> exit_{false};
     std::uint32_t epoch_ = 0;
     TaskSystem* tasks_ = nullptr;
     void* handle_ = nullptr;

@@ -54,6 +54,23 @@ WideAnchors turnedAnchors(const WideRevoluteBlock& k, const WideBody& A, const W
     return {A.qc * ax - A.qs * ay, A.qs * ax + A.qc * ay, B.qc * bx - B.qs * by, B.qs * bx + B.qc * by};
 }
 
+/// The point matrix of turned anchors r: K (k11, k12, k22) and 1/det K (0
+/// when singular), as solvePointRows computes it.
+struct WidePointMatrix {
+    Float4 k11, k12, k22, inv;
+};
+WidePointMatrix pointMatrixOf(const WideRevoluteBlock& k, const WideAnchors& r) {
+    const Float4 mA = load4(k.mA), iA = load4(k.iA), mB = load4(k.mB), iB = load4(k.iB);
+    const Float4 m = mA + mB;
+    WidePointMatrix K;
+    K.k11 = m + r.rAy * r.rAy * iA + r.rBy * r.rBy * iB;
+    K.k12 = -(r.rAy * r.rAx * iA) - r.rBy * r.rBx * iB;
+    K.k22 = m + r.rAx * r.rAx * iA + r.rBx * r.rBx * iB;
+    const Float4 det = K.k11 * K.k22 - K.k12 * K.k12;
+    K.inv = whereNonZero(det, splat(1.0f) / det);
+    return K;
+}
+
 /// Applies the impulse P at the anchors: A (−), B (+).
 void applyWide(const WideRevoluteBlock& k, const WideAnchors& r, Float4 px, Float4 py, WideBody& A, WideBody& B) {
     const Float4 mA = load4(k.mA), iA = load4(k.iA), mB = load4(k.mB), iB = load4(k.iB);
@@ -65,22 +82,40 @@ void applyWide(const WideRevoluteBlock& k, const WideAnchors& r, Float4 px, Floa
     B.w = B.w + iB * (r.rBx * py - r.rBy * px);
 }
 
+/// The block's anchors turned to the current positions and its K: kept from
+/// the last pass when the positions have not moved since (`kept`), else made
+/// and kept for the passes until they move.
+void frameOf(WideRevoluteBlock& k, const WideBody& A, const WideBody& B, bool kept, WideAnchors& r,
+             WidePointMatrix& K) {
+    if (kept) {
+        r = {load4(k.turnedAx), load4(k.turnedAy), load4(k.turnedBx), load4(k.turnedBy)};
+        K = {load4(k.k11), load4(k.k12), load4(k.k22), load4(k.invDet)};
+        return;
+    }
+    r = turnedAnchors(k, A, B);
+    K = pointMatrixOf(k, r);
+    store4(k.turnedAx, r.rAx), store4(k.turnedAy, r.rAy), store4(k.turnedBx, r.rBx), store4(k.turnedBy, r.rBy);
+    store4(k.k11, K.k11), store4(k.k12, K.k12), store4(k.k22, K.k22), store4(k.invDet, K.inv);
+}
+
 }  // namespace
 
-void warmStartWideRevolutes(SolverArrays& s, int firstBlock, int lastBlock) {
+void warmStartWideRevolutes(SolverArrays& s, int firstBlock, int lastBlock, bool kept) {
     BodyState* states = s.states.data();
     for (int i = firstBlock; i < lastBlock; ++i) {
-        const WideRevoluteBlock& k = s.wideRevolutes[static_cast<std::size_t>(i)];
+        WideRevoluteBlock& k = s.wideRevolutes[static_cast<std::size_t>(i)];
         WideBody A = gatherBodies(states, k.a);
         WideBody B = gatherBodies(states, k.b);
-        const WideAnchors r = turnedAnchors(k, A, B);
+        WideAnchors r;
+        WidePointMatrix K;
+        frameOf(k, A, B, kept, r, K);
         applyWide(k, r, load4(k.px), load4(k.py), A, B);
         scatterVelocities(states, k.a, A, k.mA, k.iA);
         scatterVelocities(states, k.b, B, k.mB, k.iB);
     }
 }
 
-void solveWideRevolutes(SolverArrays& s, const JointContext& ctx, int firstBlock, int lastBlock) {
+void solveWideRevolutes(SolverArrays& s, const JointContext& ctx, int firstBlock, int lastBlock, bool kept) {
     const RowBias rb = rigidBias(ctx, 1.0f);  // the rates, applied to each component of the separation
     const Float4 bias = splat(rb.bias), massScale = splat(rb.massScale), impulseScale = splat(rb.impulseScale);
     BodyState* states = s.states.data();
@@ -88,20 +123,15 @@ void solveWideRevolutes(SolverArrays& s, const JointContext& ctx, int firstBlock
         WideRevoluteBlock& k = s.wideRevolutes[static_cast<std::size_t>(i)];
         WideBody A = gatherBodies(states, k.a);
         WideBody B = gatherBodies(states, k.b);
-        const WideAnchors r = turnedAnchors(k, A, B);
+        WideAnchors r;
+        WidePointMatrix K;
+        frameOf(k, A, B, kept, r, K);
         const Float4 cdx = (B.vx - B.w * r.rBy) - (A.vx - A.w * r.rAy);
         const Float4 cdy = (B.vy + B.w * r.rBx) - (A.vy + A.w * r.rAx);
         const Float4 sepx = (B.dpx - A.dpx) + (r.rBx - r.rAx) + load4(k.dcx);
         const Float4 sepy = (B.dpy - A.dpy) + (r.rBy - r.rAy) + load4(k.dcy);
-        const Float4 mA = load4(k.mA), iA = load4(k.iA), mB = load4(k.mB), iB = load4(k.iB);
-        const Float4 m = mA + mB;
-        const Float4 k11 = m + r.rAy * r.rAy * iA + r.rBy * r.rBy * iB;
-        const Float4 k12 = -(r.rAy * r.rAx * iA) - r.rBy * r.rBx * iB;
-        const Float4 k22 = m + r.rAx * r.rAx * iA + r.rBx * r.rBx * iB;
-        const Float4 det = k11 * k22 - k12 * k12;
-        const Float4 inv = whereNonZero(det, splat(1.0f) / det);
         const Float4 bx = cdx + bias * sepx, by = cdy + bias * sepy;
-        const Float4 x = inv * (k22 * bx - k12 * by), y = inv * (k11 * by - k12 * bx);
+        const Float4 x = K.inv * (K.k22 * bx - K.k12 * by), y = K.inv * (K.k11 * by - K.k12 * bx);
         const Float4 px = load4(k.px), py = load4(k.py);
         const Float4 ix = -(massScale * x) - impulseScale * px;
         const Float4 iy = -(massScale * y) - impulseScale * py;

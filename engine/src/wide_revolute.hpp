@@ -23,6 +23,11 @@ struct WideRevoluteBlock {
     float dcx[4], dcy[4];                  ///< centre B − centre A at the step's start
     float mA[4], iA[4], mB[4], iB[4];      ///< inverse masses and inertias
     float px[4], py[4];                    ///< accumulated impulse (N·s)
+    /// The anchors turned to the substep's positions and the point matrix
+    /// K = [k11 k12; k12 k22] with 1/det K, kept by the warm start for the
+    /// passes before the positions move (solveWideRevolutes).
+    float turnedAx[4], turnedAy[4], turnedBx[4], turnedBy[4];
+    float k11[4], k12[4], k22[4], invDet[4];
 };
 
 /// Packs the slots at places [first, last) of s.jointOrder (all wide
@@ -30,8 +35,14 @@ struct WideRevoluteBlock {
 /// their joints and bodies as prepareJoints writes rows.
 void packWideRevolutes(const WorldState& w, SolverArrays& s, int first, int last);
 
-void warmStartWideRevolutes(SolverArrays& s, int firstBlock, int lastBlock);
-void solveWideRevolutes(SolverArrays& s, const JointContext& ctx, int firstBlock, int lastBlock);
+/// The warm start and one sweep in ctx's pass of blocks [firstBlock,
+/// lastBlock). A block's anchors turned to the current positions and its
+/// point matrix are made by the first pass after the positions move and kept
+/// for the passes until they move again (`kept`: they are current;
+/// SolverArrays::wideFrameAt): a substep's relax makes them, and the next
+/// substep's warm start and push pass reuse them.
+void warmStartWideRevolutes(SolverArrays& s, int firstBlock, int lastBlock, bool kept);
+void solveWideRevolutes(SolverArrays& s, const JointContext& ctx, int firstBlock, int lastBlock, bool kept);
 /// The blocks' impulses back into their joints for the next warm start, with
 /// the reaction force (as storeJoints does for rows); h as there.
 void storeWideRevolutes(WorldState& w, float h);
