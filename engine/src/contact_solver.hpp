@@ -44,7 +44,7 @@ struct ContactConstraint {
     float friction, restitution;
     float invMassA, invIA, invMassB, invIB;
     float biasRate, massScale, impulseScale;  ///< soft contact coefficients
-    float maxPush;         ///< push speed cap of this contact (m/s), shared among a body's deep contacts
+    float maxPush;  ///< push speed cap of this contact (m/s); baumgarte and split share it among a body's deep contacts
     float tangentSpeed;    ///< friction's target relative tangent speed (m/s): 0 but on conveyors
     bool deepOverlap : 1;  ///< a point overlaps by more than kDeepOverlap (contact_solver.cpp)
     /// Two points solved together (contact_solver.cpp), unless the overlap is

@@ -22,7 +22,9 @@
 //  soft_step  `substeps` substeps, each: integrate velocities, warm start, solve
 //             with soft (spring-damped) push, integrate positions, relax (solve
 //             again without push). Then restitution, then store impulses
-//             (Catto, Solver2D, and Box2D v3's soft step).
+//             (Catto, Solver2D, and Box2D v3's soft step). Overlaps deeper than
+//             kDeepOverlap are pushed on pseudo-velocities instead, added to
+//             the motion of the substep and dropped (deep_overlap.cpp).
 //
 // Loops (per step): bodies 2 + 2·substeps; constraints (1 + 2·substeps) for
 // soft_step, (1 + velocityIterations + positionIterations) otherwise. The
@@ -33,6 +35,7 @@
 #include <cmath>
 
 #include "continuous.hpp"
+#include "deep_overlap.hpp"
 #include "impact_stage.hpp"
 #include "joint_solver.hpp"
 #include "world_state.hpp"
@@ -164,6 +167,24 @@ void integratePositions(SolverArrays& s, float h, float maxSpeed) {
         // Eq. 3.2.3-3.2.4 with the new velocities.
         st.dp = mulAdd(st.dp, h, st.v);
         st.dq = integrateRotation(st.dq, h * st.w);
+    }
+}
+
+/// As integratePositions, moving each body by its velocity plus the
+/// pseudo-velocity of the deep overlaps' push (deep_overlap.cpp), which is
+/// not kept: the body keeps only its velocity.
+void integratePositionsPushed(SolverArrays& s, float h, float maxSpeed) {
+    const float maxAngular = kMaxRotationPerStep / h;
+    const std::size_t n = s.stateBodies.size();
+    for (std::size_t i = 0; i < n; ++i) {
+        BodyState& st = s.states[i];
+        clampVelocity(st, maxSpeed, maxAngular);
+        BodyState moved = st;
+        moved.v = st.v + s.biasV[i];
+        moved.w = st.w + s.biasW[i];
+        clampVelocity(moved, maxSpeed, maxAngular);
+        st.dp = mulAdd(st.dp, h, moved.v);
+        st.dq = integrateRotation(st.dq, h * moved.w);
     }
 }
 
@@ -302,7 +323,13 @@ void solve(WorldState& w, float dt) {
             warmStart();
             for (int pass = 0; pass < kJointSolvePasses; ++pass) joints(SolvePass::soft_bias);
             contacts(SolvePass::soft_bias, h);
-            integratePositions(s, h, maxSpeed);
+            if (s.anyDeepOverlap) {
+                pushDeepOverlaps(w);
+                dropNonFinitePush(s);
+                integratePositionsPushed(s, h, maxSpeed);
+            } else {
+                integratePositions(s, h, maxSpeed);
+            }
             ++jointCtx.positionUpdates;
             joints(SolvePass::soft_relax);
             contacts(i + 1 == substeps ? SolvePass::soft_relax_last : SolvePass::soft_relax, h);
@@ -349,6 +376,16 @@ void solve(WorldState& w, float dt) {
 
     storeContactImpulses(w);
     storeJoints(w, soft ? h : dt);
+    // A body pushed out of a deep overlap moves without velocity (the push is
+    // dropped after each substep): it must not count as resting, or a box
+    // created inside the ground fell asleep there half a second later.
+    if (soft && s.anyDeepOverlap)
+        for (const ContactConstraint& cc : s.constraints) {
+            if (!cc.deepOverlap) continue;
+            for (int side : {cc.a, cc.b})
+                if (static_cast<std::size_t>(side) < n)
+                    w.bodies[s.stateBodies[static_cast<std::size_t>(side)]].sleepTime = 0.0f;
+        }
 
     // Write back: centre of mass, rotation, origin, velocities; clear forces.
     // The relax and restitution passes act after the last position update, so

@@ -32,6 +32,7 @@ struct SolverArrays {
     JointTrees trees;                             ///< joints solved exactly (joint_tree.cpp)
     std::vector<std::uint8_t> jointColours;
     std::vector<int> deepContactCount;       ///< per state: contacts overlapping deeper than kDeepOverlap
+    bool anyDeepOverlap = false;             ///< some row overlaps deeper than kDeepOverlap this step
     std::vector<RollingConstraint> rolling;  ///< contacts with rolling resistance (contact_solver.cpp)
 };
 
