@@ -481,7 +481,7 @@ void stepWorld(WorldState& w, float dt) {
     profile.solve = msSince(t);
 
     t = Clock::now();
-    if (w.settings.enableContinuous) solveContinuous(w);
+    if (w.settings.enableContinuous) solveContinuous(w, dt);
     profile.sweeps = msSince(t);
     for (int b : w.islands.awakeBodies) synchronizeProxies(w, b);
     profile.continuous = msSince(t);
