@@ -91,7 +91,7 @@ constexpr PinnedRun kPinned[] = {
     {"bridge_split", "bridge", Variant::split, 300, 0x79158c0ffe8a6ff9ull},
     {"bounce", "bounce", Variant::as_shipped, 600, 0x0938c47e19b590d4ull},
     {"bounce_velocity_bias", "bounce", Variant::velocity_bias, 600, 0xf62f0a149cd4fd2dull},
-    {"rain1000", "rain1000", Variant::as_shipped, 400, 0xb90fb2d36d02da2aull},
+    {"rain1000", "rain1000", Variant::as_shipped, 400, 0x754b906cd10f2ba6ull},
     {"newtons_cradle", "newtons_cradle", Variant::as_shipped, 600, 0x8afc4fcee18759a0ull},
     {"heavy_chain", "heavy_chain", Variant::as_shipped, 300, 0x92901a09c3660056ull},
     {"tall_stack20_no_sleep", "tall_stack20", Variant::no_sleep, 600, 0x8895ac159b494f9cull},
