@@ -337,7 +337,8 @@ void solveContactsFor(WorldState& w, float h) {
                 t.bias = s * invH;
             } else if constexpr (passKind == SolvePass::soft_bias) {
                 // A deep overlap is pushed apart on pseudo-velocities
-                // (deep_overlap.cpp); its row here only stops the approach.
+                // (deep_overlap.cpp); its row here is rigid: it stops the
+                // approach and carries the load.
                 if (!cc.deepOverlap) {
                     t.bias = std::max(cc.biasRate * s, -cc.maxPush);
                     t.massScale = cc.massScale;

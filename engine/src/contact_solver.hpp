@@ -83,6 +83,15 @@ struct RowBodies {
 /// body moves.
 bool contactRowBodies(const WorldState& w, const Contact& ct, int zeroState, RowBodies& out);
 
+/// The push speed (m/s) at which a soft row holds its accumulated impulse
+/// λ steady: its update Δλ = −m·ms·(vn + bias) − is·λ is zero at vn = 0 for
+/// bias = −is·λ/(m·ms). The push that carries the load the point bears, the
+/// depth biasRate⁻¹ times it being the sag that load explains.
+inline float loadPush(const ContactConstraint& cc, const ContactPointConstraint& cp) {
+    const float k = cp.normalMass * cc.massScale;
+    return k > 0.0f ? cc.impulseScale * cp.normalImpulse / k : 0.0f;
+}
+
 /// Marks an active contact without a row in SolverArrays::contactColours.
 inline constexpr std::uint8_t kNoRow = 0xFF;
 

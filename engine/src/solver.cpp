@@ -376,17 +376,6 @@ void solve(WorldState& w, float dt) {
 
     storeContactImpulses(w);
     storeJoints(w, soft ? h : dt);
-    // A body pushed out of a deep overlap moves without velocity (the push is
-    // dropped after each substep): it must not count as resting, or a box
-    // created inside the ground fell asleep there half a second later.
-    if (soft && s.anyDeepOverlap)
-        for (const ContactConstraint& cc : s.constraints) {
-            if (!cc.deepOverlap) continue;
-            for (int side : {cc.a, cc.b})
-                if (static_cast<std::size_t>(side) < n)
-                    w.bodies[s.stateBodies[static_cast<std::size_t>(side)]].sleepTime = 0.0f;
-        }
-
     // Write back: centre of mass, rotation, origin, velocities; clear forces.
     // The relax and restitution passes act after the last position update, so
     // the limits are applied once more to the velocities the body keeps.
