@@ -16,10 +16,11 @@ struct WorldState;
 struct Shape;
 
 /// An overlap deeper than this (m; ten times the linear slop) is not a
-/// resting contact but bodies created or pushed into each other: such
-/// contacts share the push cap (contact_solver.cpp) and never keep a
-/// manifold (contact_persistence.cpp). Resting stacks overlap by millimetres;
-/// the bottom of a column of 50 by 4.4 cm.
+/// resting contact but bodies created or pushed into each other: the soft
+/// step pushes such contacts apart on pseudo-velocities (deep_overlap.cpp),
+/// baumgarte shares the push cap among them (contact_solver.cpp), and they
+/// never keep a manifold (contact_persistence.cpp). Resting stacks overlap by
+/// millimetres; the bottom of a column of 50 by 4.4 cm.
 constexpr float kDeepOverlap = 0.05f;
 
 /// Where a manifold was computed, for reusing it (contact_persistence.hpp).

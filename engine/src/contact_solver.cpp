@@ -19,13 +19,14 @@ namespace i2d::detail {
 
 namespace {
 
-// maxPushSpeed. A body overlapping many others deeply (boxes created on top of
-// each other) would otherwise collect one capped push per contact and fly
-// off at many times the cap: 100 boxes created at one point left at 50 m/s.
-// A body's deep contacts therefore share the cap, each getting
-// maxPushSpeed / n (n the larger count of its two bodies), which bounds the
-// push a body receives by about maxPushSpeed. Contacts of resting stacks
-// overlap by millimetres, far less than kDeepOverlap, and keep the full cap.
+// Baumgarte mode keeps its push in the bodies' velocities. A body
+// overlapping many others deeply (boxes created on top of each other) would
+// otherwise collect one capped push per contact and fly off at many times
+// maxPushSpeed. There a body's deep contacts therefore share the cap, each
+// getting maxPushSpeed / n (n the larger count of its two bodies); split
+// mode's rows keep the shared cap too (it decides which pairs of points are
+// solved together). The soft step pushes deep overlaps on pseudo-velocities
+// instead (deep_overlap.cpp) and does not share.
 
 // Divides the push cap of each deep contact by the larger deep-contact count
 // of its two bodies (counted in prepareContacts).
@@ -169,7 +170,8 @@ void prepareContacts(WorldState& w, float h, bool soft) {
             }
         }
     }
-    if (anyDeep) sharePushAmongDeepContacts(w);
+    s.anyDeepOverlap = anyDeep;
+    if (anyDeep && !soft) sharePushAmongDeepContacts(w);
     // The push a point would ask for at its overlap: the soft step's bias
     // rate, or Baumgarte's β/Δt past the slop.
     const float pushRate = soft ? 0.0f : set.pushFactor * rate;
@@ -364,9 +366,14 @@ void solveContactsFor(WorldState& w, float h, std::size_t first) {
                 // Speculative: allow exactly the approach that closes the gap this (sub)step.
                 t.bias = s * invH;
             } else if constexpr (passKind == SolvePass::soft_bias) {
-                t.bias = std::max(cc.biasRate * s, -cc.maxPush);
-                t.massScale = cc.massScale;
-                t.impulseScale = cc.impulseScale;
+                // A deep overlap is pushed apart on pseudo-velocities
+                // (deep_overlap.cpp); its row here is rigid: it stops the
+                // approach and carries the load.
+                if (!cc.deepOverlap) {
+                    t.bias = std::max(cc.biasRate * s, -cc.maxPush);
+                    t.massScale = cc.massScale;
+                    t.impulseScale = cc.impulseScale;
+                }
             } else if constexpr (passKind == SolvePass::baumgarte) {
                 // Tamis and Maggiore (2015) eq. 5.3.1 with slop: push β·d/Δt, capped.
                 t.bias = std::max(beta * invH * std::min(s + slop, 0.0f), -cc.maxPush);

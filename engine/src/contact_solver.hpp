@@ -44,7 +44,7 @@ struct ContactConstraint {
     float friction, restitution;
     float invMassA, invIA, invMassB, invIB;
     float biasRate, massScale, impulseScale;  ///< soft contact coefficients
-    float maxPush;         ///< push speed cap of this contact (m/s), shared among a body's deep contacts
+    float maxPush;  ///< push speed cap of this contact (m/s); baumgarte and split share it among a body's deep contacts
     float tangentSpeed;    ///< friction's target relative tangent speed (m/s): 0 but on conveyors
     bool deepOverlap : 1;  ///< a point overlaps by more than kDeepOverlap (contact_solver.cpp)
     /// Two points solved together (contact_solver.cpp), unless the overlap is
@@ -82,6 +82,15 @@ struct RowBodies {
 /// False when the contact gets no row: not touching, a sensor, or neither
 /// body moves.
 bool contactRowBodies(const WorldState& w, const Contact& ct, int zeroState, RowBodies& out);
+
+/// The push speed (m/s) at which a soft row holds its accumulated impulse
+/// λ steady: its update Δλ = −m·ms·(vn + bias) − is·λ is zero at vn = 0 for
+/// bias = −is·λ/(m·ms). The push that carries the load the point bears, the
+/// depth biasRate⁻¹ times it being the sag that load explains.
+inline float loadPush(const ContactConstraint& cc, const ContactPointConstraint& cp) {
+    const float k = cp.normalMass * cc.massScale;
+    return k > 0.0f ? cc.impulseScale * cp.normalImpulse / k : 0.0f;
+}
 
 /// Marks an active contact without a row in SolverArrays::contactColours.
 inline constexpr std::uint8_t kNoRow = 0xFF;

@@ -37,6 +37,13 @@
 // overlapping it by no more than the speculative distance); stopping there
 // stalled sliding bodies at every joint.
 //
+// A body put back to time t of the step (t ∈ [0, 1]) is given the velocity
+// it had then, v − (1 − t)·Δt·a with a its free acceleration (gravity,
+// force): keeping the velocity of the step's end gave it the speed gained
+// over the rest of the step, which it never fell. A ball dropped from 5 m
+// with e = 0.75 swept to the ground at 7.62 m/s instead of 7.50 came back
+// 4 % too high, and 6 % after two more bounces.
+//
 // The sweep runs from the body's pose at the step's start: before the
 // solver's motion, or before the impact stage's time-of-impact shift when
 // that moved the body (Body::startCenter), so no part of the step's motion
@@ -51,7 +58,6 @@
 // past the first touch.
 #include <algorithm>
 #include <cmath>
-#include <utility>
 #include <vector>
 
 #include "continuous.hpp"
@@ -266,7 +272,7 @@ void sweepPair(const Shape& shape, const ShapeCore& core, const Mover& m, const 
 /// Sweeps the body against the static shapes, and, for a bullet, against the
 /// shapes of dynamic bodies that are not bullets; moves it back to the first
 /// time of impact.
-void sweepBody(WorldState& w, Body& body, const Mover& m) {
+void sweepBody(WorldState& w, Body& body, const Mover& m, Vec2 rewind) {
     const Transform xf0 = m.sweep.at(0.0f), xf1 = body.xf;
     Stop stop;
     for (int sh : bodyShapes(w.shapes, body)) {
@@ -311,6 +317,7 @@ void sweepBody(WorldState& w, Body& body, const Mover& m) {
     const Transform xf = m.sweep.at(stop.t);
     body.xf = xf;
     body.center = transformPoint(xf, body.localCenter);
+    body.v -= (1.0f - stop.t) * rewind;
     // A body stopped by a probe is driving into a static surface it already
     // touches, and its contact did not stop it (one contact point, say,
     // about which the body turned). Kept, that velocity would be put back
@@ -325,25 +332,32 @@ void sweepBody(WorldState& w, Body& body, const Mover& m) {
 
 }  // namespace
 
-void solveContinuous(WorldState& w) {
+void solveContinuous(WorldState& w, float dt) {
     // Non-bullets first: the bullets then meet them where they ended the step.
-    std::vector<std::pair<int, Mover>> bullets;  // allocates only in a step with a fast bullet
+    struct Bullet {
+        int body;
+        Mover m;
+        Vec2 rewind;
+    };
+    std::vector<Bullet> bullets;  // allocates only in a step with a fast bullet
     for (std::size_t i = 0; i < w.solver.stateBodies.size(); ++i) {
         Body& body = w.bodies[w.solver.stateBodies[i]];
         if (body.type != BodyType::dynamic_body || body.reach < 0.0f) continue;
         Mover m;
         if (!makeMover(w, body, w.solver.states[i], m)) continue;
+        // The velocity the free acceleration added over the whole step.
+        const Vec2 rewind = dt * w.solver.integration[i].linearAcceleration;
         if (body.isBullet)
-            bullets.emplace_back(w.solver.stateBodies[i], m);
+            bullets.push_back({w.solver.stateBodies[i], m, rewind});
         else
-            sweepBody(w, body, m);
+            sweepBody(w, body, m, rewind);
     }
     if (bullets.empty()) return;
     // The bullets find the dynamic bodies through their boxes in the tree,
     // which must hold where those bodies ended the step (a plank just hit
     // moves fast).
     for (int b : w.islands.awakeBodies) synchronizeProxies(w, b);
-    for (const auto& [b, m] : bullets) sweepBody(w, w.bodies[b], m);
+    for (const Bullet& b : bullets) sweepBody(w, w.bodies[b.body], b.m, b.rewind);
 }
 
 }  // namespace i2d::detail

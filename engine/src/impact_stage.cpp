@@ -16,10 +16,11 @@
 //    law for that pair and never adds kinetic energy, so neither does any
 //    sequence of them; a chain of touching bodies (Newton's cradle) passes
 //    momentum along within one sweep.
-//  * A speculative contact (gap s > 0 at the step's start) hits at time
-//    t* = s/|v_n| into the step. The bodies are moved by t*(v_before − v_after)
-//    so that integrating the new velocities over the step places them where
-//    flight until t* and rebound after it would.
+//  * A speculative contact (gap s > 0 at the step's start) hits at time t*
+//    into the step. The law acts on the velocities the bodies really have at
+//    t*, and the bodies are given the velocities and start positions with
+//    which the solver's integration of the step ends where flight until t*
+//    and rebound after it would (below, "Timing within the step").
 #include <algorithm>
 #include <cmath>
 
@@ -31,12 +32,55 @@ namespace i2d::detail {
 
 namespace {
 constexpr int kMaxSweeps = 8;
+
+// Timing within the step. The solver integrates by semi-implicit Euler over
+// N substeps of h = Δt/N: v_k = v_(k−1) + a·h, x_k = x_(k−1) + h·v_k, with a
+// a body's free acceleration (gravity, force). From a stored velocity v the
+// positions then follow exactly the parabola x(t) = x0 + (v + a·h/2)·t +
+// a·t²/2: the stored velocity is half a substep of acceleration away from the
+// velocity the body really has, v_true = v + a·h/2 (the staggering of the
+// symplectic Euler method; Hairer, Lubich and Wanner (2003), Geometric
+// numerical integration illustrated by the Störmer–Verlet method, §1.2). The
+// law is applied to the true velocities at the moment of impact t*,
+//   v(t*) = v + a·(h/2 + t*),
+// and gives true velocities v⁺ at t*. Storing
+//   v_new = v⁺ − a·(t* + h/2)
+// and moving the start of the step by
+//   δ = t*·(v(t*) − v⁺)
+// makes the solver's N substeps end at the exact position and (staggered)
+// velocity of flight until t* and rebound after it (expand both and the terms
+// in a·Δt², a·h·Δt cancel). Without the staggering, every rebound was launched
+// a·h/2 too slow and the flight after it lost u·h/2 of apex height (u the
+// rebound speed): −6.5 % at the third bounce of a ball with e = 0.5 dropped
+// from 5 m, −61 % at the fourth. Rotation has no free acceleration here: its
+// start is moved by t*·(ω before − ω after) as before.
+
+/// The body's free acceleration for the timing, zero if it does not move.
+Vec2 freeAcceleration(const Body& b, bool moves, Vec2 gravity) {
+    return moves ? b.gravityScale * gravity + b.invMass * b.force : Vec2{};
 }
+
+/// The first time t in [0, dt] at which a gap s closing at speed vn < 0 with
+/// acceleration an (along the normal) reaches zero: s + vn·t + an·t²/2 = 0;
+/// dt if it does not close within the step.
+float closingTime(float s, float vn, float an, float dt) {
+    if (s <= 0.0f) return 0.0f;
+    if (std::abs(an) < 1e-6f) return vn < 0.0f ? std::min(s / -vn, dt) : dt;
+    const float disc = vn * vn - 2.0f * an * s;
+    if (disc < 0.0f) return dt;
+    // The smaller positive root, in the form that keeps precision for small an.
+    const float t = 2.0f * s / (-vn + std::sqrt(disc));
+    return t > 0.0f ? std::min(t, dt) : dt;
+}
+
+}  // namespace
 
 void resolveImpacts(WorldState& w, float dt) {
     const WorldSettings& settings = w.settings;
     if (settings.impactModel != ImpactModel::closed_form) return;
     const float threshold = settings.impactThreshold;
+    const int substeps = settings.positionCorrection == PositionCorrection::soft_step ? settings.substeps : 1;
+    const float halfSubstep = 0.5f * dt / static_cast<float>(substeps);
 
     std::uint32_t sweepStamp = 0;
     // changed[b] == the sweep in which body b's velocity last changed.
@@ -57,6 +101,11 @@ void resolveImpacts(WorldState& w, float dt) {
                 changed[static_cast<std::size_t>(ct.bodyB)] != sweepStamp - 1)
                 continue;
             const Vec2 n = ct.manifold.normal;  // from A to B
+            const bool aMoves = A.type == BodyType::dynamic_body && A.awake;
+            const bool bMoves = B.type == BodyType::dynamic_body && B.awake;
+            const Vec2 accA = freeAcceleration(A, aMoves, settings.gravity);
+            const Vec2 accB = freeAcceleration(B, bMoves, settings.gravity);
+            const float an = dot(accB - accA, n);  // relative normal acceleration
             Vec2 point{};
             float gap = 0.0f, approach = 0.0f;
             int count = 0;
@@ -64,7 +113,9 @@ void resolveImpacts(WorldState& w, float dt) {
                 const ManifoldPoint& mp = ct.manifold.points[j];
                 Vec2 dv = (B.v + cross(B.w, mp.point - B.center)) - (A.v + cross(A.w, mp.point - A.center));
                 float vn = dot(dv, n);
-                if (vn < -threshold && mp.separation + vn * dt < 0.0f) {
+                // Closes within the step along its true flight (timing above).
+                const float vTrue = vn + an * halfSubstep;
+                if (vn < -threshold && mp.separation + (vTrue + 0.5f * an * dt) * dt < 0.0f) {
                     point += mp.point;
                     gap += std::max(mp.separation, 0.0f);
                     approach += vn;
@@ -77,17 +128,21 @@ void resolveImpacts(WorldState& w, float dt) {
             gap *= inv;
             approach *= inv;
 
+            // Time of impact within the step and the velocities then (timing above).
+            const float tHit = closingTime(gap, approach + an * halfSubstep, an, dt);
+            const Vec2 vA0 = A.v + (halfSubstep + tHit) * accA;
+            const Vec2 vB0 = B.v + (halfSubstep + tHit) * accB;
+            const float wB0 = B.w, wA0 = A.w;
+
             // The law's convention: f points from B to A and A receives +p.
             // Our manifold normal points from A to B, so A of the law is our B.
-            const bool aMoves = A.type == BodyType::dynamic_body && A.awake;
-            const bool bMoves = B.type == BodyType::dynamic_body && B.awake;
             ImpactInput in;
             in.restitution = ct.restitution;
             in.friction = ct.friction;
             in.normal = {n.x, n.y};
             Vec2 rB = point - B.center, rA = point - A.center;
-            in.a = {bMoves ? B.invMass : 0.0, bMoves ? B.invInertia : 0.0, {rB.x, rB.y}, {B.v.x, B.v.y}, B.w};
-            in.b = {aMoves ? A.invMass : 0.0, aMoves ? A.invInertia : 0.0, {rA.x, rA.y}, {A.v.x, A.v.y}, A.w};
+            in.a = {bMoves ? B.invMass : 0.0, bMoves ? B.invInertia : 0.0, {rB.x, rB.y}, {vB0.x, vB0.y}, B.w};
+            in.b = {aMoves ? A.invMass : 0.0, aMoves ? A.invInertia : 0.0, {rA.x, rA.y}, {vA0.x, vA0.y}, A.w};
             ImpactResult r;
             try {
                 r = resolveImpact(in);
@@ -96,28 +151,26 @@ void resolveImpacts(WorldState& w, float dt) {
             }
             if (r.kind == ImpactCase::not_colliding) continue;
 
-            const Vec2 vB0 = B.v, vA0 = A.v;
-            const float wB0 = B.w, wA0 = A.w;
+            const Vec2 vBAfter{static_cast<float>(r.vA.x), static_cast<float>(r.vA.y)};
+            const Vec2 vAAfter{static_cast<float>(r.vB.x), static_cast<float>(r.vB.y)};
             if (bMoves) {
-                B.v = {static_cast<float>(r.vA.x), static_cast<float>(r.vA.y)};
+                B.v = vBAfter - (tHit + halfSubstep) * accB;
                 B.w = static_cast<float>(r.wA);
             }
             if (aMoves) {
-                A.v = {static_cast<float>(r.vB.x), static_cast<float>(r.vB.y)};
+                A.v = vAAfter - (tHit + halfSubstep) * accA;
                 A.w = static_cast<float>(r.wB);
             }
-            // Time of impact within the step for a speculative contact.
-            float tHit = approach < 0.0f ? std::min(gap / -approach, dt) : 0.0f;
             if (tHit > 0.0f) {
                 if (bMoves) {
                     keepStepStart(B, w.stepStamp);
-                    B.center += tHit * (vB0 - B.v);
+                    B.center += tHit * (vB0 - vBAfter);
                     B.xf.q = integrateRotation(B.xf.q, tHit * (wB0 - B.w));
                     B.xf.p = B.center - rotate(B.xf.q, B.localCenter);
                 }
                 if (aMoves) {
                     keepStepStart(A, w.stepStamp);
-                    A.center += tHit * (vA0 - A.v);
+                    A.center += tHit * (vA0 - vAAfter);
                     A.xf.q = integrateRotation(A.xf.q, tHit * (wA0 - A.w));
                     A.xf.p = A.center - rotate(A.xf.q, A.localCenter);
                 }

@@ -22,7 +22,9 @@
 //  soft_step  `substeps` substeps, each: integrate velocities, warm start, solve
 //             with soft (spring-damped) push, integrate positions, relax (solve
 //             again without push). Then restitution, then store impulses
-//             (Catto, Solver2D, and Box2D v3's soft step).
+//             (Catto, Solver2D, and Box2D v3's soft step). Overlaps deeper than
+//             kDeepOverlap are pushed on pseudo-velocities instead, added to
+//             the motion of the substep and dropped (deep_overlap.cpp).
 //
 // Loops (per step): bodies 2 + 2·substeps; constraints (1 + 2·substeps) for
 // soft_step, (1 + velocityIterations + positionIterations) otherwise. The
@@ -33,6 +35,7 @@
 #include <cmath>
 
 #include "continuous.hpp"
+#include "deep_overlap.hpp"
 #include "impact_stage.hpp"
 #include "joint_solver.hpp"
 #include "world_state.hpp"
@@ -119,7 +122,9 @@ void colourContacts(WorldState& w) {
 /// block for the wide sweep; the overflow group stays scalar.
 void packContactColours(WorldState& w, bool soft) {
     SolverArrays& s = w.solver;
-    s.wideContactsActive = soft && s.rolling.empty() && s.rowCount > 0;
+    // Deep overlaps are pushed from the rows' impulses between the passes
+    // (deep_overlap.cpp): such a step keeps the scalar rows.
+    s.wideContactsActive = soft && s.rolling.empty() && !s.anyDeepOverlap && s.rowCount > 0;
     s.contactOverflowStart = 0;
     if (!s.wideContactsActive) {
         s.wideContacts.resizeForOverwrite(0);
@@ -215,6 +220,24 @@ void integratePositions(SolverArrays& s, float h, float maxSpeed, std::size_t be
         // Eq. 3.2.3-3.2.4 with the new velocities.
         st.dp = mulAdd(st.dp, h, st.v);
         st.dq = integrateRotation(st.dq, h * st.w);
+    }
+}
+
+/// As integratePositions, moving each body by its velocity plus the
+/// pseudo-velocity of the deep overlaps' push (deep_overlap.cpp), which is
+/// not kept: the body keeps only its velocity.
+void integratePositionsPushed(SolverArrays& s, float h, float maxSpeed) {
+    const float maxAngular = kMaxRotationPerStep / h;
+    const std::size_t n = s.stateBodies.size();
+    for (std::size_t i = 0; i < n; ++i) {
+        BodyState& st = s.states[i];
+        clampVelocity(st, maxSpeed, maxAngular);
+        BodyState moved = st;
+        moved.v = st.v + s.biasV[i];
+        moved.w = st.w + s.biasW[i];
+        clampVelocity(moved, maxSpeed, maxAngular);
+        st.dp = mulAdd(st.dp, h, moved.v);
+        st.dq = integrateRotation(st.dq, h * moved.w);
     }
 }
 
@@ -381,7 +404,13 @@ void solve(WorldState& w, float dt) {
             warmStart();
             for (int pass = 0; pass < kJointSolvePasses; ++pass) joints(SolvePass::soft_bias);
             contacts(SolvePass::soft_bias, h);
-            positions(h);
+            if (s.anyDeepOverlap) {
+                pushDeepOverlaps(w);
+                dropNonFinitePush(s);
+                integratePositionsPushed(s, h, maxSpeed);
+            } else {
+                positions(h);
+            }
             ++s.positionUpdates;  // the joint trees and wide hinges keep what they made until then
             joints(SolvePass::soft_relax);
             contacts(i + 1 == substeps ? SolvePass::soft_relax_last : SolvePass::soft_relax, h);
@@ -431,7 +460,6 @@ void solve(WorldState& w, float dt) {
     }
     storeContactImpulses(w);
     storeJoints(w, soft ? h : dt);
-
     // Write back: centre of mass, rotation, origin, velocities; clear forces.
     // The relax and restitution passes act after the last position update, so
     // the limits are applied once more to the velocities the body keeps.
@@ -527,7 +555,7 @@ void stepWorld(WorldState& w, float dt) {
     profile.solve = msSince(t);
 
     t = Clock::now();
-    if (w.settings.enableContinuous) solveContinuous(w);
+    if (w.settings.enableContinuous) solveContinuous(w, dt);
     profile.sweeps = msSince(t);
     for (int b : w.islands.awakeBodies) synchronizeProxies(w, b);
     profile.continuous = msSince(t);

@@ -43,6 +43,7 @@ struct SolverArrays {
     std::vector<std::uint8_t> jointColours;
     std::vector<std::uint32_t> bodyColours;       ///< per state: the joint colours its rows took (joint_solver.cpp)
     std::vector<int> deepContactCount;            ///< per state: contacts overlapping deeper than kDeepOverlap
+    bool anyDeepOverlap = false;                  ///< some row overlaps deeper than kDeepOverlap this step
     std::vector<RollingConstraint> rolling;       ///< contacts with rolling resistance (contact_solver.cpp)
     ScratchArray<WideContactBlock> wideContacts;  ///< the coloured contact rows four at a time (wide_contact.cpp)
     bool wideContactsActive = false;              ///< this step solves them so

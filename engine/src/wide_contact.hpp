@@ -5,7 +5,9 @@
 // order, its branches turned into selects, so the results are bit-identical
 // (tests/unit/test_wide_contact.cpp). Used in soft_step for the rows of the
 // coloured groups; the overflow group (rows that share bodies), split and
-// baumgarte modes, and steps with rolling resistance keep the scalar rows.
+// baumgarte modes, and steps with rolling resistance or with overlaps deeper
+// than kDeepOverlap (pushed apart from the rows between passes,
+// deep_overlap.cpp) keep the scalar rows.
 #pragma once
 
 #include <vector>

@@ -61,15 +61,72 @@ TEST(WorldImpacts, BoxDroppedFlatBouncesFlat) {
 }
 
 TEST(WorldImpacts, ReboundHeightIsESquaredH) {
-    // The law gives exactly v⁺ = e·v⁻ (test_impact.cpp); the flight before and
-    // after is integrated by semi-implicit Euler, whose apex is low by about
-    // v·Δt/2 each way. At 960 Hz that is 3.3 mm on 0.5 m (0.7 %), inside the 2 % bar
-    // (60 Hz and 240 Hz figures are in docs/impacts.md).
+    // The law gives exactly v⁺ = e·v⁻ (test_impact.cpp), applied at the moment
+    // of impact to the true velocity and stored staggered as semi-implicit
+    // Euler needs (impact_stage.cpp): the flights are exact parabolas and the
+    // apex is e²h to rounding, where before it was low by about v·Δt/2 (0.16 %
+    // at 960 Hz). 60 Hz and 240 Hz figures are in docs/impacts.md.
     const float h = 2.0f;
     for (float e : {0.5f, 0.75f, 1.0f}) {
         auto [apex, spin] = dropBox(ImpactModel::closed_form, e, h, 1.0f / 960.0f);
         EXPECT_NEAR(apex, e * e * h, 0.02f * e * e * h) << "e = " << e;
     }
+}
+
+namespace {
+
+/// Apexes (bottom height) of the successive rebounds of a body dropped from
+/// h0 onto the ground, both with restitution e; a circle of radius 0.5 or a
+/// unit box landing flat. Each apex is refined with the parabola through the
+/// highest sample and its neighbours.
+std::vector<double> reboundApexes(bool circle, float e, float h0, float dt) {
+    World world({.enableSleep = false});
+    BodyId ground = world.createBody({});
+    world.createPolygonShape(ground, {.restitution = e}, makeOffsetBox(50, 1, {0, -1}, 0));
+    BodyId body = world.createBody({.type = BodyType::dynamic_body, .position = {0, 0.5f + h0}});
+    if (circle)
+        world.createCircleShape(body, {.restitution = e}, Circle{{0, 0}, 0.5f});
+    else
+        world.createPolygonShape(body, {.restitution = e}, makeBox(0.5f, 0.5f));
+    std::vector<double> y, vy;
+    for (int i = 0; i < static_cast<int>(8.0f / dt); ++i) {
+        world.step(dt);
+        y.push_back(world.position(body).y - 0.5);
+        vy.push_back(world.linearVelocity(body).y);
+    }
+    std::vector<double> apexes;
+    for (std::size_t k = 1; k + 1 < y.size(); ++k) {
+        if (!(vy[k - 1] > 0.0 && vy[k] <= 0.0)) continue;
+        const std::size_t m = y[k] >= y[k - 1] ? k : k - 1;
+        const double a = y[m - 1], b = y[m], c = y[m + 1], den = a - 2.0 * b + c;
+        apexes.push_back(den < 0.0 ? b - 0.125 * (a - c) * (a - c) / den : b);
+    }
+    return apexes;
+}
+
+}  // namespace
+
+// The hard-cases issue: apexes 1 to 4 within 3 % of e^(2n)·h0 at 60 Hz. The
+// law acts at the moment of impact within the step and the rebound is stored
+// staggered by half a substep of gravity, as semi-implicit Euler needs
+// (impact_stage.cpp); continuous collision gives a body put back to its time
+// of impact the velocity it had then (continuous.cpp). Checked here at step
+// rates, heights and coefficients the validation cases do not use, for a
+// circle and for a box landing flat; every impact is above the 1 m/s
+// threshold (the fourth at 1.75 m/s and more).
+TEST(WorldImpacts, ReboundApexesFollowESquaredNAtEveryStepRate) {
+    for (bool circle : {true, false})
+        for (float dt : {1.0f / 30.0f, 1.0f / 60.0f, 1.0f / 120.0f})
+            for (float e : {0.6f, 0.8f}) {
+                const float h0 = 3.3f;
+                const std::vector<double> apexes = reboundApexes(circle, e, h0, dt);
+                ASSERT_GE(apexes.size(), 4u) << "e " << e << ", " << 1.0f / dt << " Hz";
+                for (int n = 1; n <= 4; ++n) {
+                    const double expected = std::pow(e, 2 * n) * h0;
+                    EXPECT_NEAR(apexes[n - 1], expected, 0.03 * expected)
+                        << (circle ? "circle" : "box") << ", e " << e << ", " << 1.0f / dt << " Hz, apex " << n;
+                }
+            }
 }
 
 TEST(WorldImpacts, NewtonsCradlePassesTheMomentumAlong) {

@@ -598,9 +598,10 @@ std::vector<Case> allCases(const std::string& assetsDir) {
             double e;
             int n;  ///< apex number
         };
-        for (B b : {B{"e0.25", "025", 0.25, 1}, B{"e0.5", "05", 0.5, 1}, B{"e0.5", "05", 0.5, 2},
-                    B{"e0.5", "05", 0.5, 3}, B{"e0.75", "075", 0.75, 1}, B{"e0.75", "075", 0.75, 2},
-                    B{"e0.75", "075", 0.75, 3}, B{"e1", "1", 1.0, 1}, B{"e1", "1", 1.0, 3}}) {
+        for (B b :
+             {B{"e0.25", "025", 0.25, 1}, B{"e0.5", "05", 0.5, 1}, B{"e0.5", "05", 0.5, 2}, B{"e0.5", "05", 0.5, 3},
+              B{"e0.5", "05", 0.5, 4}, B{"e0.75", "075", 0.75, 1}, B{"e0.75", "075", 0.75, 2},
+              B{"e0.75", "075", 0.75, 3}, B{"e0.75", "075", 0.75, 4}, B{"e1", "1", 1.0, 1}, B{"e1", "1", 1.0, 3}}) {
             Case c;
             const std::string e = std::string(b.name).substr(1);
             c.id = std::string("bounce_e") + b.tag + "_h" + std::to_string(b.n);
@@ -614,23 +615,35 @@ std::vector<Case> allCases(const std::string& assetsDir) {
                 std::vector<double> a = bounceApexes(d, k, name);
                 return a.size() >= n ? a[n - 1] : kNone;
             };
-            // Semi-implicit Euler lands the ball slower by g h/2 and launches it
-            // as if g h/2 slower: each flight's apex is low by about v h/2, so the
-            // n-th apex is low by about Σ (e^(2k−1) + e^(2k)) v h/2 ≤ n (e + e²) v₀ h/2
-            // (v₀ = 10 m/s). The impact itself is timed to the step (below).
+            // Each tolerance from this bounce's own rebound speed u = eⁿ v₀
+            // (v₀ = 10 m/s). Impulse2D times the impact within the step and
+            // launches the rebound with semi-implicit Euler's half-substep of
+            // gravity (impact_stage.cpp), so its flights are exact parabolas:
+            // held to the 3 % of the hard-cases issue. Box2D 2.4.1 launches
+            // the rebound as if g h/2 slower, which costs an apex of u²/2g
+            // about u h/2: u h/2 with h = 1/60 s, + 2 %.
             const double v0 = std::sqrt(2.0 * kG * h0);
-            const double integ = b.n * (b.e + b.e * b.e) * v0 * (1.0 / 240.0) / 2.0;
-            c.impulse2d.tolerance = integ + 0.02 * c.analytic;
-            c.impulse2d.why = "n (e + e²) v₀ h/2 with h = 1/240 s (semi-implicit Euler's low apex, v₀ = 10 m/s) + 2 % "
-                              "(HARD_CASES 5.5 bar for e² when the impact speed is far above the threshold)";
-            const double integB = b.n * (b.e + b.e * b.e) * v0 * (1.0 / 60.0) / 2.0;
-            c.box2d.tolerance = integB + 0.02 * c.analytic;
-            c.box2d.why = "n (e + e²) v₀ h/2 with h = 1/60 s + 2 %";
+            const double u = std::pow(b.e, b.n) * v0;
+            c.impulse2d.tolerance = 0.03 * c.analytic;
+            c.impulse2d.why = "3 % (the hard-cases issue's bar for bounces 1 to 4; each flight is an exact parabola)";
+            c.box2d.tolerance = u * (1.0 / 60.0) / 2.0 + 0.02 * c.analytic;
+            c.box2d.why = "u h/2 with u = eⁿ v₀ this bounce's rebound speed and h = 1/60 s (semi-implicit Euler's "
+                          "low apex), + 2 %";
+            // Box2D 2.4.1 puts a ball swept to the ground back to its time of
+            // impact with the speed of the step's end, too fast by up to g·Δt:
+            // at e = 0.75 its third and fourth apexes are 7.1 % and 9.6 % high.
+            // Reported, as Box2D's other figures beyond its own bound are.
+            if (b.e == 0.75 && b.n >= 3) c.box2d.asserted = false;
             c.whyTheyDiffer = "Both engines bring a ball that moves further in a step than the speculative distance "
                               "to the ground's surface by continuous collision, so the impact happens there; "
                               "Box2D's restitution is Newton's e applied to that approach speed, Impulse2D's is "
-                              "Stronge's e in the impact law followed by 1/240 s substeps. Impulse2D's apexes come "
-                              "back up to 2.5 % low on the first two bounces, inside the integrator's stated bound.";
+                              "Stronge's e in the impact law followed by 1/240 s substeps. Impulse2D applies the law "
+                              "at the moment of impact within the step and stores the rebound staggered by half a "
+                              "substep of gravity as semi-implicit Euler needs, and its continuous collision gives "
+                              "a body put back to its time of impact the velocity it had then: its apexes are "
+                              "within 0.1 %. Box2D 2.4.1 moves a ball swept to the ground back to its time of "
+                              "impact keeping the velocity of the step's end (b2Body::Advance moves only the "
+                              "pose), up to g·Δt too fast, and its later apexes come out high.";
             cases.push_back(c);
         }
     }
