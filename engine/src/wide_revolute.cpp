@@ -98,17 +98,25 @@ void frameOf(WideRevoluteBlock& k, const WideBody& A, const WideBody& B, bool ke
     store4(k.k11, K.k11), store4(k.k12, K.k12), store4(k.k22, K.k22), store4(k.invDet, K.inv);
 }
 
+/// A block's two sides gathered, with its anchors and K (frameOf).
+struct WideHinges {
+    WideBody A, B;
+    WideAnchors r;
+    WidePointMatrix K;
+};
+WideHinges gatherHinges(const BodyState* states, WideRevoluteBlock& k, bool kept) {
+    WideHinges h{gatherBodies(states, k.a), gatherBodies(states, k.b), {}, {}};
+    frameOf(k, h.A, h.B, kept, h.r, h.K);
+    return h;
+}
+
 }  // namespace
 
 void warmStartWideRevolutes(SolverArrays& s, int firstBlock, int lastBlock, bool kept) {
     BodyState* states = s.states.data();
     for (int i = firstBlock; i < lastBlock; ++i) {
         WideRevoluteBlock& k = s.wideRevolutes[static_cast<std::size_t>(i)];
-        WideBody A = gatherBodies(states, k.a);
-        WideBody B = gatherBodies(states, k.b);
-        WideAnchors r;
-        WidePointMatrix K;
-        frameOf(k, A, B, kept, r, K);
+        auto [A, B, r, K] = gatherHinges(states, k, kept);
         applyWide(k, r, load4(k.px), load4(k.py), A, B);
         scatterVelocities(states, k.a, A, k.mA, k.iA);
         scatterVelocities(states, k.b, B, k.mB, k.iB);
@@ -121,11 +129,7 @@ void solveWideRevolutes(SolverArrays& s, const JointContext& ctx, int firstBlock
     BodyState* states = s.states.data();
     for (int i = firstBlock; i < lastBlock; ++i) {
         WideRevoluteBlock& k = s.wideRevolutes[static_cast<std::size_t>(i)];
-        WideBody A = gatherBodies(states, k.a);
-        WideBody B = gatherBodies(states, k.b);
-        WideAnchors r;
-        WidePointMatrix K;
-        frameOf(k, A, B, kept, r, K);
+        auto [A, B, r, K] = gatherHinges(states, k, kept);
         const Float4 cdx = (B.vx - B.w * r.rBy) - (A.vx - A.w * r.rAy);
         const Float4 cdy = (B.vy + B.w * r.rBx) - (A.vy + A.w * r.rAx);
         const Float4 sepx = (B.dpx - A.dpx) + (r.rBx - r.rAx) + load4(k.dcx);
