@@ -65,8 +65,9 @@ struct BroadPhase {
 void createProxy(WorldState& w, int shape);
 void destroyProxy(WorldState& w, int shape);
 
-/// Refreshes the proxies of a body's shapes after it moved.
-void synchronizeProxies(WorldState& w, int body);
+/// Refreshes the proxies of a body's shapes after it moved; after a step of
+/// dt, a box that must move is stretched ahead along the body's velocity.
+void synchronizeProxies(WorldState& w, int body, float dt = 0.0f);
 
 /// A static body was moved: its proxies never query, so the moving shapes
 /// overlapping its shapes are woken and put in the move buffer to find the

@@ -557,7 +557,7 @@ void stepWorld(WorldState& w, float dt) {
     t = Clock::now();
     if (w.settings.enableContinuous) solveContinuous(w, dt);
     profile.sweeps = msSince(t);
-    for (int b : w.islands.awakeBodies) synchronizeProxies(w, b);
+    for (int b : w.islands.awakeBodies) synchronizeProxies(w, b, dt);
     profile.continuous = msSince(t);
 
     t = Clock::now();

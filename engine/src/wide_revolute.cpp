@@ -85,8 +85,8 @@ void applyWide(const WideRevoluteBlock& k, const WideAnchors& r, Float4 px, Floa
 /// The block's anchors turned to the current positions and its K: kept from
 /// the last pass when the positions have not moved since (`kept`), else made
 /// and kept for the passes until they move.
-void frameOf(WideRevoluteBlock& k, const WideBody& A, const WideBody& B, bool kept, WideAnchors& r,
-             WidePointMatrix& K) {
+inline __attribute__((always_inline)) void frameOf(WideRevoluteBlock& k, const WideBody& A, const WideBody& B,
+                                                   bool kept, WideAnchors& r, WidePointMatrix& K) {
     if (kept) {
         r = {load4(k.turnedAx), load4(k.turnedAy), load4(k.turnedBx), load4(k.turnedBy)};
         K = {load4(k.k11), load4(k.k12), load4(k.k22), load4(k.invDet)};
@@ -104,7 +104,8 @@ struct WideHinges {
     WideAnchors r;
     WidePointMatrix K;
 };
-WideHinges gatherHinges(const BodyState* states, WideRevoluteBlock& k, bool kept) {
+inline __attribute__((always_inline)) WideHinges gatherHinges(const BodyState* states, WideRevoluteBlock& k,
+                                                              bool kept) {
     WideHinges h{gatherBodies(states, k.a), gatherBodies(states, k.b), {}, {}};
     frameOf(k, h.A, h.B, kept, h.r, h.K);
     return h;
