@@ -111,7 +111,8 @@ struct WorldSettings {
     /// 0 recomputes every manifold every step.
     float manifoldReuseDistance = 0.05f;
     /// Fattening of broadphase boxes (m): a proxy moves in the tree only when
-    /// its shape leaves the fat box.
+    /// its shape leaves the fat box. A moving body's new box is also
+    /// stretched ahead along its velocity, by four steps of motion.
     float aabbMargin = 0.1f;
     /// Speed limit for stability (m/s).
     float maxLinearSpeed = 400.0f;
