@@ -208,7 +208,7 @@ inline float axialMass(const JointConstraint& jc, const SliderFrame& f) {
 /// A joint's equality rows for the exact solve of joint trees
 /// (joint_tree.cpp): row k's rate is J v = jA[k]·(v_A, ω_A) + jB[k]·(v_B, ω_B),
 /// its position error error[k]; the accumulated impulses are read and written
-/// through the type's own fields (readEqualityImpulse, addEqualityImpulse).
+/// through the type's own fields (readImpulse, addImpulse in joint_tree.cpp).
 struct EqualityRows {
     int count = 0;
     float jA[3][3]{}, jB[3][3]{};

@@ -223,15 +223,19 @@ void integratePositions(SolverArrays& s, float h, float maxSpeed, std::size_t be
     }
 }
 
-/// As integratePositions, moving each body by its velocity plus the
-/// pseudo-velocity of the deep overlaps' push (deep_overlap.cpp), which is
-/// not kept: the body keeps only its velocity.
+/// As integratePositions, moving each body by its velocity plus its
+/// pseudo-velocity (split mode's push, or the soft step's push of deep
+/// overlaps, deep_overlap.cpp), which is not kept: the body keeps only its
+/// velocity.
 void integratePositionsPushed(SolverArrays& s, float h, float maxSpeed) {
     const float maxAngular = kMaxRotationPerStep / h;
     const std::size_t n = s.stateBodies.size();
     for (std::size_t i = 0; i < n; ++i) {
         BodyState& st = s.states[i];
         clampVelocity(st, maxSpeed, maxAngular);
+        // The limits hold for the motion including the push: a light, small
+        // body's pseudo-velocity could otherwise turn it by an angle whose
+        // square overflows (fuzz_world: NaN rotation).
         BodyState moved = st;
         moved.v = st.v + s.biasV[i];
         moved.w = st.w + s.biasW[i];
@@ -441,19 +445,7 @@ void solve(WorldState& w, float dt) {
                 dropNonFinitePush(s);
             }
             // Move by v + v_push for this step only; v_push is then dropped.
-            for (std::size_t i = 0; i < n; ++i) {
-                BodyState& st = s.states[i];
-                clampVelocity(st, maxSpeed, kMaxRotationPerStep / dt);
-                // The limits hold for the motion including the push: a light,
-                // small body's pseudo-velocity could otherwise turn it by an
-                // angle whose square overflows (fuzz_world: NaN rotation).
-                BodyState moved = st;
-                moved.v = st.v + s.biasV[i];
-                moved.w = st.w + s.biasW[i];
-                clampVelocity(moved, maxSpeed, kMaxRotationPerStep / dt);
-                st.dp = mulAdd(st.dp, dt, moved.v);
-                st.dq = integrateRotation(st.dq, dt * moved.w);
-            }
+            integratePositionsPushed(s, dt, maxSpeed);
         } else {
             positions(dt);
         }

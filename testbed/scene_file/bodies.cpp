@@ -37,17 +37,24 @@ void parseSegment(Obj& o, ShapeDesc& s) {
         fail(o.at("point2"), "segment end points are closer than 0.005 m");
 }
 
-void parsePolygon(Obj& o, ShapeDesc& s) {
-    o.allow({"points", "radius"});
-    o.checkUnknown();
+/// The "points" array of [x, y] points.
+std::vector<i2d::Vec2> readPoints(Obj& o) {
     const json& pts = o.get("points");
     Loc pl = o.at("points");
     if (!pts.is_array()) fail(pl, "expected an array of [x, y] points, got " + typeName(pts));
-    if (pts.size() < 3 || pts.size() > static_cast<std::size_t>(i2d::kMaxPolygonVertices))
-        fail(pl, "a polygon needs 3 to " + std::to_string(i2d::kMaxPolygonVertices) + " points, got " +
-                     std::to_string(pts.size()));
     std::vector<i2d::Vec2> v;
     for (std::size_t i = 0; i < pts.size(); ++i) v.push_back(Obj::vec2(pts[i], pl.at(i), kMaxCoordinate));
+    return v;
+}
+
+void parsePolygon(Obj& o, ShapeDesc& s) {
+    o.allow({"points", "radius"});
+    o.checkUnknown();
+    Loc pl = o.at("points");
+    const std::vector<i2d::Vec2> v = readPoints(o);
+    if (v.size() < 3 || v.size() > static_cast<std::size_t>(i2d::kMaxPolygonVertices))
+        fail(pl, "a polygon needs 3 to " + std::to_string(i2d::kMaxPolygonVertices) + " points, got " +
+                     std::to_string(v.size()));
     float radius = o.f("radius", 0.0f, {0, kMaxSize});
     i2d::Hull hull = i2d::computeHull(v);
     std::optional<i2d::Polygon> poly;
@@ -64,10 +71,8 @@ void parsePolygon(Obj& o, ShapeDesc& s) {
 void parseChain(Obj& o, ShapeDesc& s) {
     o.allow({"points", "loop"});
     o.checkUnknown();
-    const json& pts = o.get("points");
     Loc pl = o.at("points");
-    if (!pts.is_array()) fail(pl, "expected an array of [x, y] points, got " + typeName(pts));
-    for (std::size_t i = 0; i < pts.size(); ++i) s.chainPoints.push_back(Obj::vec2(pts[i], pl.at(i), kMaxCoordinate));
+    s.chainPoints = readPoints(o);
     s.chainLoop = o.boolean("loop", false);
     s.chain = true;
     s.type = i2d::ShapeType::segment;
