@@ -1,13 +1,12 @@
-// Four contact manifolds at a time (see wide_contact.hpp). The order of
-// operations follows solveContactsFor, warmStartContacts and their helpers in
-// contact_solver.cpp line by line: normal rows with their regimes
-// (speculative, soft push capped at maxPush, relax), a manifold's two points
-// together (pairScale) or one after the other, then Coulomb friction per
-// point. What the scalar row skips with a branch, a lane keeps with a select.
+// Four contact manifolds at a time (see wide_contact.hpp): packing the rows
+// into blocks, the four-lane policy of the sweeps (wide_contact_kernel.hpp
+// holds the sweeps, wide_contact_avx2.cpp the eight-lane policy), the choice
+// between four and eight lanes, and the write-back to the rows.
 #include "wide_contact.hpp"
 
 #include "solver.hpp"
 #include "wide_body.hpp"
+#include "wide_contact_kernel.hpp"
 
 namespace i2d::detail {
 
@@ -55,154 +54,78 @@ void packWideContactBlock(SolverArrays& s, int block, int start, int last) {
 
 namespace {
 
-struct WideVelocities {
-    Float4 vAx, vAy, wA, vBx, vBy, wB;
+/// One block in the lanes of Float4.
+struct Lanes4 {
+    using V = Float4;
+    using M = Mask4;
+    WideContactBlock* k;
+    static V splat(float x) { return detail::splat(x); }
+    V load(BlockField f) const { return load4(k->*f); }
+    V load(int j, PointField f) const { return load4(k->points[j].*f); }
+    void store(int j, PointField f, V x) const { store4(k->points[j].*f, x); }
+    WideBodyT<V> gather(const BodyState* states, bool sideA) const {
+        const WideBody b = gatherBodies(states, sideA ? k->a : k->b);
+        return {b.vx, b.vy, b.w, b.reserved, b.dpx, b.dpy, b.qc, b.qs};
+    }
+    void scatter(BodyState* states, bool sideA, const WideBodyT<V>& b) const {
+        const WideBody w{b.vx, b.vy, b.w, b.reserved, b.dpx, b.dpy, b.qc, b.qs};
+        if (sideA)
+            scatterVelocities(states, k->a, w, k->mA, k->iA);
+        else
+            scatterVelocities(states, k->b, w, k->mB, k->iB);
+    }
 };
 
-/// A point's arms and masses, loaded once per sweep of its block.
-struct WideArms {
-    Float4 rAx, rAy, rBx, rBy;
-};
-WideArms armsOf(const WideContactPoint& p) { return {load4(p.rAx), load4(p.rAy), load4(p.rBx), load4(p.rBy)}; }
-
-/// dot((v_B + ω_B × r_B) − (v_A + ω_A × r_A), d) for a direction (dx, dy),
-/// with ω × r = (−ω·r_y, ω·r_x) as i2d::cross(float, Vec2).
-Float4 relativeSpeed(const WideVelocities& v, const WideArms& r, Float4 dx, Float4 dy) {
-    const Float4 ux = (v.vBx + (-v.wB) * r.rBy) - (v.vAx + (-v.wA) * r.rAy);
-    const Float4 uy = (v.vBy + v.wB * r.rBx) - (v.vAy + v.wA * r.rAx);
-    return ux * dx + uy * dy;
+int& laneLimit() {
+    static int limit = 8;
+    return limit;
 }
 
-/// Applies the impulse P = (px, py) at the point where `m` holds: A (−), B (+).
-inline __attribute__((always_inline)) void applyMasked(Mask4 m, const WideArms& r, Float4 px, Float4 py, Float4 mA,
-                                                       Float4 iA, Float4 mB, Float4 iB, WideVelocities& v) {
-    v.vAx = select(m, v.vAx - mA * px, v.vAx);
-    v.vAy = select(m, v.vAy - mA * py, v.vAy);
-    v.wA = select(m, v.wA - iA * (r.rAx * py - r.rAy * px), v.wA);
-    v.vBx = select(m, v.vBx + mB * px, v.vBx);
-    v.vBy = select(m, v.vBy + mB * py, v.vBy);
-    v.wB = select(m, v.wB + iB * (r.rBx * py - r.rBy * px), v.wB);
+#if defined(I2D_AVX2_KERNEL)
+bool cpuHasAvx2() {
+    __builtin_cpu_init();
+    return __builtin_cpu_supports("avx2");
 }
+#endif
 
 }  // namespace
 
+#if defined(I2D_AVX2_KERNEL)
+// wide_contact_avx2.cpp: pairs of blocks from `first`; each returns the first
+// block it left (the odd one at the end, if any).
+int warmStartWideContactsAvx2(WideContactBlock* blocks, BodyState* states, int first, int last);
+int solveWideContactsAvx2(WideContactBlock* blocks, BodyState* states, const SweepParams& sp, int first, int last);
+#endif
+
+int wideContactLanes() {
+#if defined(I2D_AVX2_KERNEL)
+    static const bool avx2 = cpuHasAvx2();
+    return avx2 && laneLimit() >= 8 ? 8 : 4;
+#else
+    return 4;
+#endif
+}
+
+void limitWideContactLanes(int lanes) { laneLimit() = lanes; }
+
 void warmStartWideContacts(SolverArrays& s, int firstBlock, int lastBlock) {
-    BodyState* states = s.states.data();
-    for (int i = firstBlock; i < lastBlock; ++i) {
-        const WideContactBlock& k = s.wideContacts[static_cast<std::size_t>(i)];
-        WideBody A = gatherBodies(states, k.a), B = gatherBodies(states, k.b);
-        WideVelocities v{A.vx, A.vy, A.w, B.vx, B.vy, B.w};
-        const Float4 nx = load4(k.nx), ny = load4(k.ny);
-        const Float4 tx = ny, ty = -nx;  // rightPerp(n)
-        const Float4 mA = load4(k.mA), iA = load4(k.iA), mB = load4(k.mB), iB = load4(k.iB);
-        for (const WideContactPoint& p : k.points) {
-            const Float4 ln = load4(p.normalImpulse), lt = load4(p.tangentImpulse);
-            applyMasked(nonZero(load4(p.present)), armsOf(p), ln * nx + lt * tx, ln * ny + lt * ty, mA, iA, mB, iB, v);
-        }
-        A.vx = v.vAx, A.vy = v.vAy, A.w = v.wA;
-        B.vx = v.vBx, B.vy = v.vBy, B.w = v.wB;
-        scatterVelocities(states, k.a, A, k.mA, k.iA);
-        scatterVelocities(states, k.b, B, k.mB, k.iB);
-    }
+#if defined(I2D_AVX2_KERNEL)
+    if (wideContactLanes() == 8 && lastBlock > firstBlock)
+        firstBlock = warmStartWideContactsAvx2(&s.wideContacts[0], s.states.data(), firstBlock, lastBlock);
+#endif
+    for (int i = firstBlock; i < lastBlock; ++i)
+        warmStartBlock(Lanes4{&s.wideContacts[static_cast<std::size_t>(i)]}, s.states.data());
 }
 
 void solveWideContacts(SolverArrays& s, SolvePass pass, float h, bool leaveImpacts, float impactSpeed, int firstBlock,
                        int lastBlock) {
-    const Float4 invH = splat(1.0f / h), zero = splat(0.0f), one = splat(1.0f);
-    const Float4 minusImpactSpeed = splat(-impactSpeed);
-    const bool softBias = pass == SolvePass::soft_bias;
-    BodyState* states = s.states.data();
-    for (int i = firstBlock; i < lastBlock; ++i) {
-        WideContactBlock& k = s.wideContacts[static_cast<std::size_t>(i)];
-        WideBody A = gatherBodies(states, k.a), B = gatherBodies(states, k.b);
-        WideVelocities v{A.vx, A.vy, A.w, B.vx, B.vy, B.w};
-        const Float4 nx = load4(k.nx), ny = load4(k.ny);
-        const Float4 mA = load4(k.mA), iA = load4(k.iA), mB = load4(k.mB), iB = load4(k.iB);
-        // A round side's contact point does not turn with it (contact_solver.cpp).
-        const Mask4 roundA = nonZero(load4(k.roundA)), roundB = nonZero(load4(k.roundB));
-        const Float4 qAc = select(roundA, one, A.qc), qAs = select(roundA, zero, A.qs);
-        const Float4 qBc = select(roundB, one, B.qc), qBs = select(roundB, zero, B.qs);
-        const Float4 dpx = B.dpx - A.dpx, dpy = B.dpy - A.dpy;
-
-        // Each point's target: Δλ = −m·ms·(vn + bias) − is·λ, and whether the
-        // last relax leaves it to the impact law.
-        WideArms arms[2];
-        Float4 bias[2], ms[2], is[2];
-        Mask4 skip[2], present[2];
-        for (int j = 0; j < 2; ++j) {
-            const WideContactPoint& p = k.points[j];
-            const WideArms& r = arms[j] = armsOf(p);
-            present[j] = nonZero(load4(p.present));
-            const Float4 rotBx = qBc * r.rBx - qBs * r.rBy, rotBy = qBs * r.rBx + qBc * r.rBy;
-            const Float4 rotAx = qAc * r.rAx - qAs * r.rAy, rotAy = qAs * r.rAx + qAc * r.rAy;
-            const Float4 dx = dpx + (rotBx - rotAx), dy = dpy + (rotBy - rotAy);
-            const Float4 sep = (dx * nx + dy * ny) + load4(p.adjustedSeparation);
-            const Mask4 speculative = sep > zero;
-            skip[j] = leaveImpacts ? speculative & (relativeSpeed(v, r, nx, ny) < minusImpactSpeed) : Mask4{};
-            if (softBias) {
-                bias[j] = select(speculative, sep * invH, max4(load4(k.biasRate) * sep, -load4(k.maxPush)));
-                ms[j] = select(speculative, one, load4(k.massScale));
-                is[j] = select(speculative, zero, load4(k.impulseScale));
-            } else {
-                bias[j] = select(speculative, sep * invH, zero);
-                ms[j] = one;
-                is[j] = zero;
-            }
-        }
-
-        // Normal rows: both points against the same velocities where the
-        // manifold's points go together, one after the other elsewhere.
-        const Mask4 pair = andNot(andNot(nonZero(load4(k.together)), skip[0]), skip[1]);
-        const Float4 scale = select(pair, load4(k.pairScale), one);
-        WideContactPoint& p0 = k.points[0];
-        WideContactPoint& p1 = k.points[1];
-        Float4 increment[2];
-        Mask4 acts[2];
-        for (int j = 0; j < 2; ++j) {
-            WideContactPoint& p = k.points[j];
-            const Float4 lambda = load4(p.normalImpulse);
-            const Float4 vn = relativeSpeed(v, arms[j], nx, ny);
-            const Float4 alone = (-load4(p.normalMass)) * ms[j] * (vn + bias[j]) - is[j] * lambda;
-            const Float4 next = max4(lambda + scale * alone, zero);
-            increment[j] = next - lambda;
-            acts[j] = andNot(present[j], skip[j]);
-            store4(p.normalImpulse, select(acts[j], next, lambda));
-            if (j == 0) {
-                // One after the other: the first point acts before the second is solved.
-                const Mask4 now = andNot(acts[0], pair);
-                store4(p0.maxNormalImpulse,
-                       select(now, max4(load4(p0.maxNormalImpulse), increment[0]), load4(p0.maxNormalImpulse)));
-                applyMasked(now, arms[0], increment[0] * nx, increment[0] * ny, mA, iA, mB, iB, v);
-            }
-        }
-        {
-            const Mask4 later = acts[0] & pair;
-            store4(p0.maxNormalImpulse,
-                   select(later, max4(load4(p0.maxNormalImpulse), increment[0]), load4(p0.maxNormalImpulse)));
-            applyMasked(later, arms[0], increment[0] * nx, increment[0] * ny, mA, iA, mB, iB, v);
-            store4(p1.maxNormalImpulse,
-                   select(acts[1], max4(load4(p1.maxNormalImpulse), increment[1]), load4(p1.maxNormalImpulse)));
-            applyMasked(acts[1], arms[1], increment[1] * nx, increment[1] * ny, mA, iA, mB, iB, v);
-        }
-
-        // Coulomb friction, bounded by μ times the point's own normal impulse.
-        const Float4 tx = ny, ty = -nx;  // rightPerp(n)
-        const Float4 friction = load4(k.friction), tangentSpeed = load4(k.tangentSpeed);
-        for (int j = 0; j < 2; ++j) {
-            WideContactPoint& p = k.points[j];
-            const Float4 vt = relativeSpeed(v, arms[j], tx, ty) - tangentSpeed;
-            const Float4 lambda = load4(p.tangentImpulse);
-            const Float4 maxFriction = friction * load4(p.normalImpulse);
-            const Float4 next = clamp4(lambda + (-load4(p.tangentMass)) * vt, -maxFriction, maxFriction);
-            const Float4 impulse = next - lambda;
-            store4(p.tangentImpulse, select(present[j], next, lambda));
-            applyMasked(present[j], arms[j], impulse * tx, impulse * ty, mA, iA, mB, iB, v);
-        }
-        A.vx = v.vAx, A.vy = v.vAy, A.w = v.wA;
-        B.vx = v.vBx, B.vy = v.vBy, B.w = v.wB;
-        scatterVelocities(states, k.a, A, k.mA, k.iA);
-        scatterVelocities(states, k.b, B, k.mB, k.iB);
-    }
+    const SweepParams sp{1.0f / h, -impactSpeed, pass == SolvePass::soft_bias, leaveImpacts};
+#if defined(I2D_AVX2_KERNEL)
+    if (wideContactLanes() == 8 && lastBlock > firstBlock)
+        firstBlock = solveWideContactsAvx2(&s.wideContacts[0], s.states.data(), sp, firstBlock, lastBlock);
+#endif
+    for (int i = firstBlock; i < lastBlock; ++i)
+        solveBlock(Lanes4{&s.wideContacts[static_cast<std::size_t>(i)]}, s.states.data(), sp);
 }
 
 void writeBackWideContacts(SolverArrays& s, int firstBlock, int lastBlock) {

@@ -4,7 +4,7 @@
 // speculative, pushed at the cap, left to the impact law in the last relax,
 // round sides, a side that does not move — must give the same velocities and
 // impulses bit for bit, in every soft_step pass (the sanitizer build runs the
-// portable path).
+// portable path; on CPUs with AVX2 the eight-lane path is checked as well).
 #include <gtest/gtest.h>
 
 #include <cmath>
@@ -81,7 +81,14 @@ void fill(WorldState& w, unsigned seed, int n) {
     }
 }
 
-TEST(WideContact, AgreesBitForBitWithTheScalarRows) {
+/// Restores the widest lanes the CPU offers when a test ends.
+struct LaneLimit {
+    explicit LaneLimit(int lanes) { limitWideContactLanes(lanes); }
+    ~LaneLimit() { limitWideContactLanes(8); }
+};
+
+void expectAgreement(int lanes) {
+    const LaneLimit limit(lanes);
     for (unsigned seed = 1; seed <= 30; ++seed) {
         const int n = 41;  // not a multiple of four: the last block has empty lanes
         WorldState scalar({}, 1), wide({}, 2);
@@ -119,6 +126,16 @@ TEST(WideContact, AgreesBitForBitWithTheScalarRows) {
             }
         }
     }
+}
+
+TEST(WideContact, AgreesBitForBitWithTheScalarRowsInFourLanes) { expectAgreement(4); }
+
+// Two blocks at a time in eight lanes where the CPU has AVX2 (41 rows are 11
+// blocks: five pairs and one block left to the four lanes).
+TEST(WideContact, AgreesBitForBitWithTheScalarRowsInEightLanes) {
+    limitWideContactLanes(8);
+    if (wideContactLanes() != 8) GTEST_SKIP() << "no AVX2 on this CPU (or a portable build)";
+    expectAgreement(8);
 }
 
 }  // namespace

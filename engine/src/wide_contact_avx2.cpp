@@ -1,0 +1,126 @@
+// The wide contact sweeps eight lanes at a time: two blocks of one colour in
+// an AVX register (wide_contact_kernel.hpp says why that is bit-identical to
+// four lanes and to the scalar rows). Compiled with -mavx2 when the engine is
+// built for x86-64 (engine/CMakeLists.txt) and called only when the CPU has
+// AVX2 (wideContactLanes in wide_contact.cpp); everything here that is
+// compiled for AVX2 is private to this file.
+#include "wide_contact_kernel.hpp"
+
+#if defined(I2D_AVX2_KERNEL) && defined(__AVX2__)
+#include <immintrin.h>
+
+namespace i2d::detail {
+
+namespace {
+
+#define I2D_AVX inline __attribute__((always_inline))
+
+struct Float8 {
+    __m256 v;
+};
+struct Mask8 {
+    __m256 m;
+};
+I2D_AVX Float8 operator+(Float8 a, Float8 b) { return {_mm256_add_ps(a.v, b.v)}; }
+I2D_AVX Float8 operator-(Float8 a, Float8 b) { return {_mm256_sub_ps(a.v, b.v)}; }
+I2D_AVX Float8 operator*(Float8 a, Float8 b) { return {_mm256_mul_ps(a.v, b.v)}; }
+I2D_AVX Float8 operator-(Float8 a) { return {_mm256_xor_ps(a.v, _mm256_set1_ps(-0.0f))}; }
+I2D_AVX Mask8 operator<(Float8 a, Float8 b) { return {_mm256_cmp_ps(a.v, b.v, _CMP_LT_OQ)}; }
+I2D_AVX Mask8 operator>(Float8 a, Float8 b) { return {_mm256_cmp_ps(a.v, b.v, _CMP_GT_OQ)}; }
+/// a ≠ 0, NaN included, as SSE2's cmpneq and the scalar !=.
+I2D_AVX Mask8 nonZero(Float8 a) { return {_mm256_cmp_ps(a.v, _mm256_setzero_ps(), _CMP_NEQ_UQ)}; }
+I2D_AVX Mask8 operator&(Mask8 a, Mask8 b) { return {_mm256_and_ps(a.m, b.m)}; }
+/// a and not b.
+I2D_AVX Mask8 andNot(Mask8 a, Mask8 b) { return {_mm256_andnot_ps(b.m, a.m)}; }
+/// The bits of yes where the mask holds, else of no (a mask lane is all ones or all zeros).
+I2D_AVX Float8 select(Mask8 m, Float8 yes, Float8 no) {
+    return {_mm256_or_ps(_mm256_and_ps(m.m, yes.v), _mm256_andnot_ps(m.m, no.v))};
+}
+/// Block k0's four lanes, then block k1's.
+I2D_AVX Float8 load8(const float* lo, const float* hi) {
+    return {_mm256_insertf128_ps(_mm256_castps128_ps256(_mm_loadu_ps(lo)), _mm_loadu_ps(hi), 1)};
+}
+I2D_AVX void store8(float* lo, float* hi, Float8 a) {
+    _mm_storeu_ps(lo, _mm256_castps256_ps128(a.v));
+    _mm_storeu_ps(hi, _mm256_extractf128_ps(a.v, 1));
+}
+
+/// Two blocks of one colour in the eight lanes of Float8.
+struct Lanes8 {
+    using V = Float8;
+    using M = Mask8;
+    WideContactBlock* k0;
+    WideContactBlock* k1;
+    I2D_AVX static V splat(float x) { return {_mm256_set1_ps(x)}; }
+    I2D_AVX V load(BlockField f) const { return load8(k0->*f, k1->*f); }
+    I2D_AVX V load(int j, PointField f) const { return load8(k0->points[j].*f, k1->points[j].*f); }
+    I2D_AVX void store(int j, PointField f, V x) const { store8(k0->points[j].*f, k1->points[j].*f, x); }
+
+    /// The eight bodies' states (two rows of four floats each, body.hpp),
+    /// transposed so that each field is one register of eight lanes.
+    I2D_AVX WideBodyT<V> gather(const BodyState* states, bool sideA) const {
+        const int* i0 = sideA ? k0->a : k0->b;
+        const int* i1 = sideA ? k1->a : k1->b;
+        __m256 r[8];
+        for (int i = 0; i < 4; ++i) {
+            r[i] = _mm256_loadu_ps(reinterpret_cast<const float*>(states + i0[i]));
+            r[4 + i] = _mm256_loadu_ps(reinterpret_cast<const float*>(states + i1[i]));
+        }
+        const __m256 t0 = _mm256_unpacklo_ps(r[0], r[1]), t1 = _mm256_unpackhi_ps(r[0], r[1]);
+        const __m256 t2 = _mm256_unpacklo_ps(r[2], r[3]), t3 = _mm256_unpackhi_ps(r[2], r[3]);
+        const __m256 t4 = _mm256_unpacklo_ps(r[4], r[5]), t5 = _mm256_unpackhi_ps(r[4], r[5]);
+        const __m256 t6 = _mm256_unpacklo_ps(r[6], r[7]), t7 = _mm256_unpackhi_ps(r[6], r[7]);
+        const __m256 u0 = _mm256_shuffle_ps(t0, t2, 0x44), u1 = _mm256_shuffle_ps(t0, t2, 0xEE);
+        const __m256 u2 = _mm256_shuffle_ps(t1, t3, 0x44), u3 = _mm256_shuffle_ps(t1, t3, 0xEE);
+        const __m256 u4 = _mm256_shuffle_ps(t4, t6, 0x44), u5 = _mm256_shuffle_ps(t4, t6, 0xEE);
+        const __m256 u6 = _mm256_shuffle_ps(t5, t7, 0x44), u7 = _mm256_shuffle_ps(t5, t7, 0xEE);
+        WideBodyT<V> b;
+        b.vx = {_mm256_permute2f128_ps(u0, u4, 0x20)};
+        b.vy = {_mm256_permute2f128_ps(u1, u5, 0x20)};
+        b.w = {_mm256_permute2f128_ps(u2, u6, 0x20)};
+        b.reserved = {_mm256_permute2f128_ps(u3, u7, 0x20)};
+        b.dpx = {_mm256_permute2f128_ps(u0, u4, 0x31)};
+        b.dpy = {_mm256_permute2f128_ps(u1, u5, 0x31)};
+        b.qc = {_mm256_permute2f128_ps(u2, u6, 0x31)};
+        b.qs = {_mm256_permute2f128_ps(u3, u7, 0x31)};
+        return b;
+    }
+
+    /// The velocity rows of the bodies that can move; a side that cannot is
+    /// never written (wide_body.hpp says why).
+    I2D_AVX void scatter(BodyState* states, bool sideA, const WideBodyT<V>& b) const {
+        scatterHalf(states, *k0, sideA, _mm256_castps256_ps128(b.vx.v), _mm256_castps256_ps128(b.vy.v),
+                    _mm256_castps256_ps128(b.w.v), _mm256_castps256_ps128(b.reserved.v));
+        scatterHalf(states, *k1, sideA, _mm256_extractf128_ps(b.vx.v, 1), _mm256_extractf128_ps(b.vy.v, 1),
+                    _mm256_extractf128_ps(b.w.v, 1), _mm256_extractf128_ps(b.reserved.v, 1));
+    }
+    I2D_AVX static void scatterHalf(BodyState* states, const WideContactBlock& k, bool sideA, __m128 r0, __m128 r1,
+                                    __m128 r2, __m128 r3) {
+        _MM_TRANSPOSE4_PS(r0, r1, r2, r3);
+        const __m128 rows[4] = {r0, r1, r2, r3};
+        const int* index = sideA ? k.a : k.b;
+        const float* invMass = sideA ? k.mA : k.mB;
+        const float* invInertia = sideA ? k.iA : k.iB;
+        for (int i = 0; i < 4; ++i)
+            if (invMass[i] != 0.0f || invInertia[i] != 0.0f)
+                _mm_storeu_ps(reinterpret_cast<float*>(states + index[i]), rows[i]);
+    }
+};
+
+}  // namespace
+
+int warmStartWideContactsAvx2(WideContactBlock* blocks, BodyState* states, int first, int last) {
+    int i = first;
+    for (; i + 1 < last; i += 2) warmStartBlock(Lanes8{blocks + i, blocks + i + 1}, states);
+    return i;
+}
+
+int solveWideContactsAvx2(WideContactBlock* blocks, BodyState* states, const SweepParams& sp, int first, int last) {
+    int i = first;
+    for (; i + 1 < last; i += 2) solveBlock(Lanes8{blocks + i, blocks + i + 1}, states, sp);
+    return i;
+}
+
+}  // namespace i2d::detail
+
+#endif

@@ -1,0 +1,209 @@
+// The warm start and the sweep of wide contact blocks (wide_contact.hpp),
+// written once over a lane policy L that says how lanes are loaded, stored,
+// gathered and scattered: Lanes4 (wide_contact.cpp) runs one block in the
+// four lanes of Float4; on x86-64 CPUs with AVX2, Lanes8
+// (wide_contact_avx2.cpp) runs two blocks of the same colour in the eight
+// lanes of an AVX register. Two blocks of one colour touch no movable body in
+// common, so solving them together is solving them one after the other. Each
+// lane does the same IEEE operations (+, −, ×, comparisons, selects; no fused
+// multiply-add, which AVX2 does not bring) in the same order as the scalar
+// row of contact_solver.cpp, so every path gives bit-identical results
+// (tests/unit/test_wide_contact.cpp runs them all). The order of operations
+// follows solveContactsFor, warmStartContacts and their helpers line by line:
+// normal rows with their regimes (speculative, soft push capped at maxPush,
+// relax), a manifold's two points together (pairScale) or one after the
+// other, then Coulomb friction per point. What the scalar row skips with a
+// branch, a lane keeps with a select.
+//
+// This header defines templates only: the eight-lane instantiations use a
+// vector type private to the AVX2 file and so stay private to it, and no
+// function compiled for AVX2 can be picked by the linker for code that runs
+// on a CPU without it.
+#pragma once
+
+#include "body.hpp"
+#include "wide_contact.hpp"
+
+namespace i2d::detail {
+
+#define I2D_KERNEL inline __attribute__((always_inline))
+
+#define I2D_KERNEL inline __attribute__((always_inline))
+
+template <class V>
+struct WideVelocitiesT {
+    V vAx, vAy, wA, vBx, vBy, wB;
+};
+
+/// A point's arms, loaded once per sweep of its block.
+template <class V>
+struct WideArmsT {
+    V rAx, rAy, rBx, rBy;
+};
+
+template <class V>
+struct WideBodyT {
+    V vx, vy, w, reserved;
+    V dpx, dpy, qc, qs;
+};
+
+template <class V, class M>
+I2D_KERNEL V maxv(V a, V b) {
+    return select(a < b, b, a);
+}
+template <class V, class M>
+I2D_KERNEL V clampv(V a, V lo, V hi) {
+    return select(a < lo, lo, select(a > hi, hi, a));
+}
+
+/// dot((v_B + ω_B × r_B) − (v_A + ω_A × r_A), d) for a direction (dx, dy),
+/// with ω × r = (−ω·r_y, ω·r_x) as i2d::cross(float, Vec2).
+template <class V>
+I2D_KERNEL V relativeSpeed(const WideVelocitiesT<V>& v, const WideArmsT<V>& r, V dx, V dy) {
+    const V ux = (v.vBx + (-v.wB) * r.rBy) - (v.vAx + (-v.wA) * r.rAy);
+    const V uy = (v.vBy + v.wB * r.rBx) - (v.vAy + v.wA * r.rAx);
+    return ux * dx + uy * dy;
+}
+
+/// Applies the impulse P = (px, py) at the point where `m` holds: A (−), B (+).
+template <class V, class M>
+I2D_KERNEL void applyMasked(M m, const WideArmsT<V>& r, V px, V py, V mA, V iA, V mB, V iB, WideVelocitiesT<V>& v) {
+    v.vAx = select(m, v.vAx - mA * px, v.vAx);
+    v.vAy = select(m, v.vAy - mA * py, v.vAy);
+    v.wA = select(m, v.wA - iA * (r.rAx * py - r.rAy * px), v.wA);
+    v.vBx = select(m, v.vBx + mB * px, v.vBx);
+    v.vBy = select(m, v.vBy + mB * py, v.vBy);
+    v.wB = select(m, v.wB + iB * (r.rBx * py - r.rBy * px), v.wB);
+}
+
+using BlockField = float (WideContactBlock::*)[4];
+using PointField = float (WideContactPoint::*)[4];
+
+template <class L>
+I2D_KERNEL void warmStartBlock(const L& k, BodyState* states) {
+    using V = typename L::V;
+    using M = typename L::M;
+    WideBodyT<V> A = k.gather(states, true), B = k.gather(states, false);
+    WideVelocitiesT<V> v{A.vx, A.vy, A.w, B.vx, B.vy, B.w};
+    const V nx = k.load(&WideContactBlock::nx), ny = k.load(&WideContactBlock::ny);
+    const V tx = ny, ty = -nx;  // rightPerp(n)
+    const V mA = k.load(&WideContactBlock::mA), iA = k.load(&WideContactBlock::iA);
+    const V mB = k.load(&WideContactBlock::mB), iB = k.load(&WideContactBlock::iB);
+    for (int j = 0; j < 2; ++j) {
+        const V ln = k.load(j, &WideContactPoint::normalImpulse), lt = k.load(j, &WideContactPoint::tangentImpulse);
+        const WideArmsT<V> r{k.load(j, &WideContactPoint::rAx), k.load(j, &WideContactPoint::rAy),
+                             k.load(j, &WideContactPoint::rBx), k.load(j, &WideContactPoint::rBy)};
+        applyMasked<V, M>(nonZero(k.load(j, &WideContactPoint::present)), r, ln * nx + lt * tx, ln * ny + lt * ty, mA,
+                          iA, mB, iB, v);
+    }
+    A.vx = v.vAx, A.vy = v.vAy, A.w = v.wA;
+    B.vx = v.vBx, B.vy = v.vBy, B.w = v.wB;
+    k.scatter(states, true, A);
+    k.scatter(states, false, B);
+}
+
+struct SweepParams {
+    float invH;
+    float minusImpactSpeed;
+    bool softBias;
+    bool leaveImpacts;
+};
+
+template <class L>
+I2D_KERNEL void solveBlock(const L& k, BodyState* states, const SweepParams& sp) {
+    using V = typename L::V;
+    using M = typename L::M;
+    const V invH = L::splat(sp.invH), zero = L::splat(0.0f), one = L::splat(1.0f);
+    const V minusImpactSpeed = L::splat(sp.minusImpactSpeed);
+    WideBodyT<V> A = k.gather(states, true), B = k.gather(states, false);
+    WideVelocitiesT<V> v{A.vx, A.vy, A.w, B.vx, B.vy, B.w};
+    const V nx = k.load(&WideContactBlock::nx), ny = k.load(&WideContactBlock::ny);
+    const V mA = k.load(&WideContactBlock::mA), iA = k.load(&WideContactBlock::iA);
+    const V mB = k.load(&WideContactBlock::mB), iB = k.load(&WideContactBlock::iB);
+    // A round side's contact point does not turn with it (contact_solver.cpp).
+    const M roundA = nonZero(k.load(&WideContactBlock::roundA)), roundB = nonZero(k.load(&WideContactBlock::roundB));
+    const V qAc = select(roundA, one, A.qc), qAs = select(roundA, zero, A.qs);
+    const V qBc = select(roundB, one, B.qc), qBs = select(roundB, zero, B.qs);
+    const V dpx = B.dpx - A.dpx, dpy = B.dpy - A.dpy;
+
+    // Each point's target: Δλ = −m·ms·(vn + bias) − is·λ, and whether the
+    // last relax leaves it to the impact law.
+    WideArmsT<V> arms[2];
+    V bias[2], ms[2], is[2];
+    M skip[2], present[2];
+    for (int j = 0; j < 2; ++j) {
+        const WideArmsT<V>& r = arms[j] = {k.load(j, &WideContactPoint::rAx), k.load(j, &WideContactPoint::rAy),
+                                           k.load(j, &WideContactPoint::rBx), k.load(j, &WideContactPoint::rBy)};
+        present[j] = nonZero(k.load(j, &WideContactPoint::present));
+        const V rotBx = qBc * r.rBx - qBs * r.rBy, rotBy = qBs * r.rBx + qBc * r.rBy;
+        const V rotAx = qAc * r.rAx - qAs * r.rAy, rotAy = qAs * r.rAx + qAc * r.rAy;
+        const V dx = dpx + (rotBx - rotAx), dy = dpy + (rotBy - rotAy);
+        const V sep = (dx * nx + dy * ny) + k.load(j, &WideContactPoint::adjustedSeparation);
+        const M speculative = sep > zero;
+        skip[j] = sp.leaveImpacts ? speculative & (relativeSpeed(v, r, nx, ny) < minusImpactSpeed) : M{};
+        if (sp.softBias) {
+            bias[j] = select(speculative, sep * invH,
+                             maxv<V, M>(k.load(&WideContactBlock::biasRate) * sep, -k.load(&WideContactBlock::maxPush)));
+            ms[j] = select(speculative, one, k.load(&WideContactBlock::massScale));
+            is[j] = select(speculative, zero, k.load(&WideContactBlock::impulseScale));
+        } else {
+            bias[j] = select(speculative, sep * invH, zero);
+            ms[j] = one;
+            is[j] = zero;
+        }
+    }
+
+    // Normal rows: both points against the same velocities where the
+    // manifold's points go together, one after the other elsewhere.
+    const M pair = andNot(andNot(nonZero(k.load(&WideContactBlock::together)), skip[0]), skip[1]);
+    const V scale = select(pair, k.load(&WideContactBlock::pairScale), one);
+    V increment[2];
+    M acts[2];
+    auto raiseMax = [&](int j, M m) {
+        const V old = k.load(j, &WideContactPoint::maxNormalImpulse);
+        k.store(j, &WideContactPoint::maxNormalImpulse, select(m, maxv<V, M>(old, increment[j]), old));
+    };
+    for (int j = 0; j < 2; ++j) {
+        const V lambda = k.load(j, &WideContactPoint::normalImpulse);
+        const V vn = relativeSpeed(v, arms[j], nx, ny);
+        const V alone = (-k.load(j, &WideContactPoint::normalMass)) * ms[j] * (vn + bias[j]) - is[j] * lambda;
+        const V next = maxv<V, M>(lambda + scale * alone, zero);
+        increment[j] = next - lambda;
+        acts[j] = andNot(present[j], skip[j]);
+        k.store(j, &WideContactPoint::normalImpulse, select(acts[j], next, lambda));
+        if (j == 0) {
+            // One after the other: the first point acts before the second is solved.
+            const M now = andNot(acts[0], pair);
+            raiseMax(0, now);
+            applyMasked<V, M>(now, arms[0], increment[0] * nx, increment[0] * ny, mA, iA, mB, iB, v);
+        }
+    }
+    {
+        const M later = acts[0] & pair;
+        raiseMax(0, later);
+        applyMasked<V, M>(later, arms[0], increment[0] * nx, increment[0] * ny, mA, iA, mB, iB, v);
+        raiseMax(1, acts[1]);
+        applyMasked<V, M>(acts[1], arms[1], increment[1] * nx, increment[1] * ny, mA, iA, mB, iB, v);
+    }
+
+    // Coulomb friction, bounded by μ times the point's own normal impulse.
+    const V tx = ny, ty = -nx;  // rightPerp(n)
+    const V friction = k.load(&WideContactBlock::friction), tangentSpeed = k.load(&WideContactBlock::tangentSpeed);
+    for (int j = 0; j < 2; ++j) {
+        const V vt = relativeSpeed(v, arms[j], tx, ty) - tangentSpeed;
+        const V lambda = k.load(j, &WideContactPoint::tangentImpulse);
+        const V maxFriction = friction * k.load(j, &WideContactPoint::normalImpulse);
+        const V next =
+            clampv<V, M>(lambda + (-k.load(j, &WideContactPoint::tangentMass)) * vt, -maxFriction, maxFriction);
+        const V impulse = next - lambda;
+        k.store(j, &WideContactPoint::tangentImpulse, select(present[j], next, lambda));
+        applyMasked<V, M>(present[j], arms[j], impulse * tx, impulse * ty, mA, iA, mB, iB, v);
+    }
+    A.vx = v.vAx, A.vy = v.vAy, A.w = v.wA;
+    B.vx = v.vBx, B.vy = v.vBy, B.w = v.wB;
+    k.scatter(states, true, A);
+    k.scatter(states, false, B);
+}
+
+
+}  // namespace i2d::detail
