@@ -1,9 +1,10 @@
 #!/usr/bin/env bash
 # Speed against error: runs the sweep (Impulse2D across its solver settings,
 # Box2D 2.4.1 across its iteration counts, on the benchmark scenes), the
-# scaling, memory and idle-body figures, draws docs/images/perf_*.png with
-# gnuplot and rewrites the generated part of docs/performance.md (between
-# its generated:begin and generated:end markers; the rest is kept).
+# scaling on 1 and 2 workers, the stage-by-stage profile, the memory and
+# idle-body figures, draws docs/images/perf_*.png with gnuplot and rewrites
+# the generated part of docs/performance.md (between its generated:begin and
+# generated:end markers; the rest is kept).
 #
 # Usage: scripts/performance.sh [--quick] [extra sweep arguments]
 #   --quick   a few points, one repeat, short runs (under 3 minutes; for development)
@@ -26,7 +27,13 @@ cmake --build build -j 2 --target sweep >&2
 
 out=build/perf
 mkdir -p "$out" docs/images
-build/tests/benchmark/sweep --out "$out" --images docs/images --assets assets "$@"
+# The revision measured, named in the report (so that two reports, before and
+# after a change, say which is which).
+revision=()
+if rev=$(git describe --always --dirty 2>/dev/null); then
+  revision=(--revision "$rev")
+fi
+build/tests/benchmark/sweep --out "$out" --images docs/images --assets assets "${revision[@]}" "$@"
 gnuplot "$out/plots.gp"
 
 doc=docs/performance.md

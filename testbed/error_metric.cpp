@@ -30,6 +30,7 @@ ErrorMetric errorMetricFor(const std::string& scene) {
         {"tall_stack50", ErrorMetric::max_sway},
         {"card_house", ErrorMetric::max_excursion},
         {"rain1000", ErrorMetric::max_penetration},
+        {"circle_pile1000", ErrorMetric::max_penetration},
         {"joint_grid", ErrorMetric::joint_stretch},
         {"heavy_chain", ErrorMetric::joint_stretch},
         {"bounce", ErrorMetric::rebound_error},

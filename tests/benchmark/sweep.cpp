@@ -2,6 +2,7 @@
 // across its iteration counts, on the benchmark scenes, in one run.
 //
 //   sweep [--quick] [--out DIR] [--images DIR] [--assets DIR] [--scenes a,b,...] [--no-scaling]
+//         [--no-profile] [--revision TEXT]
 //
 // For each scene every point (one engine, one setting) is run R times; within
 // a repeat the two engines' points alternate, so that a slow spell of a
@@ -10,11 +11,13 @@
 // (tb::errorMetricFor). Sleeping is off in every sweep run.
 //
 // Writes to DIR (default build/perf): sweep.csv (one line per point),
-// scaling.csv (ms/step against body count), memory.csv, idle.csv (what
+// scaling.csv (ms/step against body count on 1 and 2 workers), profile.csv
+// (ms per stage of a step, World::profile()), memory.csv, idle.csv (what
 // sleeping and static bodies cost), plot data and plots.gp (a gnuplot
 // script that draws IMAGES/perf_*.png), and generated.md (the generated part
 // of docs/performance.md). scripts/performance.sh runs all of it.
 #include <algorithm>
+#include <array>
 #include <chrono>
 #include <cmath>
 #include <cstdio>
@@ -24,6 +27,7 @@
 #include <iostream>
 #include <limits>
 #include <map>
+#include <memory>
 #include <sstream>
 #include <string>
 #include <thread>
@@ -35,7 +39,9 @@
 
 #include "footprint.hpp"
 #include "run_command.hpp"
+#include "scene_build.hpp"
 #include "scene_loader.hpp"
+#include "thread_pool.hpp"
 
 namespace {
 
@@ -196,15 +202,29 @@ std::vector<ScenePlan> plans(bool quick) {
         return p;
     };
     if (quick)
-        return {P("pyramid100", 1.0, 1, 0),   P("many_pyramids_small", 2.0, 1, 0),
-                P("tall_stack20", 5.0, 1, 0), P("tall_stack50", 5.0, 1, 0),
-                P("rain1000", 3.0, 1, 0),     P("joint_grid", 3.0, 1, 0),
-                P("heavy_chain", 5.0, 1, 0),  P("card_house", 5.0, 1, 0, cardNote),
-                P("bounce", 3.0, 1, 0),       P("pendulum_wave", 10.0, 1, 0)};
-    return {P("pyramid100", 3.0, 2, 2),    P("many_pyramids", 1.5, 2, 1), P("many_pyramids_small", 4.0, 3, 2),
-            P("tall_stack20", 10.0, 3, 2), P("tall_stack50", 10.0, 3, 2), P("rain1000", 5.0, 3, 2),
-            P("joint_grid", 5.0, 3, 2),    P("heavy_chain", 10.0, 3, 2),  P("card_house", 10.0, 3, 2, cardNote),
-            P("bounce", 4.0, 3, 2),        P("pendulum_wave", 30.0, 3, 2)};
+        return {P("pyramid100", 1.0, 1, 0),
+                P("many_pyramids_small", 2.0, 1, 0),
+                P("tall_stack20", 5.0, 1, 0),
+                P("tall_stack50", 5.0, 1, 0),
+                P("rain1000", 3.0, 1, 0),
+                P("circle_pile1000", 3.0, 1, 0),
+                P("joint_grid", 3.0, 1, 0),
+                P("heavy_chain", 5.0, 1, 0),
+                P("card_house", 5.0, 1, 0, cardNote),
+                P("bounce", 3.0, 1, 0),
+                P("pendulum_wave", 10.0, 1, 0)};
+    return {P("pyramid100", 3.0, 2, 2),
+            P("many_pyramids", 1.5, 2, 1),
+            P("many_pyramids_small", 4.0, 3, 2),
+            P("tall_stack20", 10.0, 3, 2),
+            P("tall_stack50", 10.0, 3, 2),
+            P("rain1000", 5.0, 3, 2),
+            P("circle_pile1000", 5.0, 3, 1),
+            P("joint_grid", 5.0, 3, 2),
+            P("heavy_chain", 10.0, 3, 2),
+            P("card_house", 10.0, 3, 2, cardNote),
+            P("bounce", 4.0, 3, 2),
+            P("pendulum_wave", 30.0, 3, 2)};
 }
 
 // ------------------------------------------------------------- progress --
@@ -389,16 +409,118 @@ tb::SceneDesc idleScene(int idle, bool sleeping) {
     return d;
 }
 
+/// The scaling runs, in this order: Impulse2D on 1 worker, on 2 workers, Box2D 2.4.1.
+constexpr int kScalingRuns = 3;
+const char* const kScalingRunNames[kScalingRuns] = {"impulse2d_1_worker", "impulse2d_2_workers", "box2d"};
+
 struct ScalingRow {
     int bodies = 0;
-    double ms[2] = {0, 0};
-    int contacts[2] = {0, 0};
+    double ms[kScalingRuns] = {0, 0, 0};  ///< medians over the repeats
+    /// Per repeat, the ratio to Box2D of the same repeat (1 worker, 2 workers).
+    std::vector<double> ratios[2];
+    int contacts[kScalingRuns] = {0, 0, 0};
 };
 
 struct IdleRow {
     std::string world;
     double ms[2] = {0, 0};  ///< Impulse2D, Box2D
     int awake[2] = {0, 0};  ///< awake dynamic bodies after the last step
+};
+
+// ---------------------------------------------------------------- profile --
+
+/// The stages of a step as World::profile() times them, in step order.
+constexpr int kStages = 7;
+const char* const kStageKeys[kStages] = {"pairs", "narrowphase", "impacts", "solve", "continuous", "proxies", "sleep"};
+
+/// Stage times of one step (ms): the profile's fields, with `continuous`
+/// split into the sweeps and the proxy refresh.
+std::array<double, kStages> stageTimes(const i2d::Profile& p) {
+    return {p.pairs, p.collide, p.impacts, p.solve, p.sweeps, p.continuous - p.sweeps, p.sleep};
+}
+
+struct ProfilePlan {
+    std::string scene;
+    long warm = 0;      ///< steps before the measured ones (the scene settles, pairs are found)
+    long measured = 0;  ///< steps whose times are taken
+    /// Box2D 2.4.1 runs the same steps; not on many_pyramids, whose first 45
+    /// or so steps take 1–2.5 s each in Box2D (about 40 s a run): its ratio
+    /// is in the sweep's table.
+    bool box2d = true;
+};
+
+std::vector<ProfilePlan> profilePlans(bool quick) {
+    if (quick)
+        return {{"pyramid100", 30, 30, true},
+                {"many_pyramids", 10, 10, false},
+                {"rain1000", 120, 60, true},
+                {"circle_pile1000", 120, 60, true}};
+    return {{"pyramid100", 60, 240, true},
+            {"many_pyramids", 30, 60, false},
+            {"rain1000", 180, 180, true},
+            {"circle_pile1000", 180, 180, true}};
+}
+
+/// Medians over the measured steps of one run.
+struct ProfileRun {
+    std::array<double, kStages> stage{};
+    double step = 0.0;  ///< the engine's own step time (Profile::step)
+    double wall = 0.0;  ///< World::step timed from outside
+    int contacts = 0;   ///< touching contacts after the last step
+};
+
+/// One run of `desc` in Impulse2D on `workers` workers (a tb::ThreadPool
+/// as the task system above 1): `warm` steps, then `measured` steps timed.
+ProfileRun profileImpulse(const tb::SceneDesc& desc, int workers, long warm, long measured) {
+    tb::Scene scene = tb::buildScene(desc);
+    std::unique_ptr<tb::ThreadPool> pool;
+    if (workers > 1) {
+        pool = std::make_unique<tb::ThreadPool>(workers);
+        scene.world->setTaskSystem(pool.get());
+    }
+    std::vector<double> stage[kStages], step, wall;
+    for (long i = 0; i < warm + measured; ++i) {
+        const auto t0 = std::chrono::steady_clock::now();
+        scene.world->step(desc.dt);
+        const auto t1 = std::chrono::steady_clock::now();
+        if (i < warm) continue;
+        const i2d::Profile& p = scene.world->profile();
+        const std::array<double, kStages> t = stageTimes(p);
+        for (int k = 0; k < kStages; ++k) stage[k].push_back(t[static_cast<std::size_t>(k)]);
+        step.push_back(p.step);
+        wall.push_back(std::chrono::duration<double, std::milli>(t1 - t0).count());
+    }
+    ProfileRun r;
+    for (int k = 0; k < kStages; ++k) r.stage[static_cast<std::size_t>(k)] = median(stage[k]);
+    r.step = median(step);
+    r.wall = median(wall);
+    r.contacts = scene.world->contactCount();
+    if (pool) scene.world->setTaskSystem(nullptr);
+    return r;
+}
+
+/// The same run in Box2D 2.4.1 at 8/3: the median wall time of the measured steps.
+double profileBox2D(const tb::SceneDesc& desc, long warm, long measured) {
+    std::unique_ptr<tb::Simulation> sim = tb::makeSimulation(desc, EngineKind::box2d, {});
+    std::vector<double> wall;
+    for (long i = 0; i < warm + measured; ++i) {
+        const auto t0 = std::chrono::steady_clock::now();
+        sim->step(desc.dt);
+        const auto t1 = std::chrono::steady_clock::now();
+        if (i >= warm) wall.push_back(std::chrono::duration<double, std::milli>(t1 - t0).count());
+    }
+    return median(wall);
+}
+
+/// One scene of the profile table: Impulse2D on 1 and 2 workers and Box2D
+/// 2.4.1, each figure the median over the repeats of a run's median.
+struct ProfileRow {
+    ProfilePlan plan;
+    int bodies = 0;
+    int repeats = 0;
+    ProfileRun run[2];              ///< 1 worker, 2 workers
+    double box2d = 0.0;             ///< 0 when Box2D does not run the scene here
+    std::vector<double> ratios[2];  ///< per repeat, Impulse2D's wall time over Box2D's
 };
 
 struct MemoryRow {
@@ -412,6 +534,8 @@ struct MemoryRow {
 struct Options {
     bool quick = false;
     bool scaling = true;
+    bool profile = true;
+    std::string revision;  ///< the source revision measured, named in the report (--revision)
     std::string out = "build/perf";
     std::string images = "docs/images";
     std::string assets;
@@ -444,7 +568,8 @@ void writeCsv(const std::vector<SceneResult>& results, const std::string& path) 
 /// Error floor of the log-scale plots (an exact 0 has no place on them).
 constexpr double kPlotFloor = 1e-6;
 
-void writePlots(const std::vector<SceneResult>& results, const std::vector<ScalingRow>& scaling, const Options& o) {
+void writePlots(const std::vector<SceneResult>& results, const std::vector<ScalingRow>& scaling,
+                const std::vector<ProfileRow>& profile, const Options& o) {
     namespace fs = std::filesystem;
     const std::string dataDir = o.out + "/plot";
     fs::create_directories(dataDir);
@@ -492,16 +617,61 @@ void writePlots(const std::vector<SceneResult>& results, const std::vector<Scali
         gp << "\n";
     }
     if (!scaling.empty()) {
+        // bodies, ms (1 worker, 2 workers, Box2D), ratio 1 worker (median, min, max), ratio 2 workers (same).
         std::ofstream sd(dataDir + "/scaling.dat");
-        for (const ScalingRow& s : scaling) sd << s.bodies << ' ' << s.ms[0] << ' ' << s.ms[1] << '\n';
+        for (const ScalingRow& s : scaling) {
+            sd << s.bodies << ' ' << s.ms[0] << ' ' << s.ms[1] << ' ' << s.ms[2];
+            for (const std::vector<double>& r : s.ratios)
+                sd << ' ' << median(r) << ' ' << *std::min_element(r.begin(), r.end()) << ' '
+                   << *std::max_element(r.begin(), r.end());
+            sd << '\n';
+        }
+        const std::string sdat = "'" + dataDir + "/scaling.dat'";
         gp << "\nset output '" << o.images << "/perf_scaling.png'\n"
            << "set title 'ms per step against body count (columns of 10 boxes, sleeping off)'\n"
            << "set xlabel 'dynamic bodies (log scale)'\nset ylabel 'ms per step (median, log scale)'\n"
            << "set key top left box opaque\n"
-           << "plot '" << dataDir
-           << "/scaling.dat' using 1:2 with linespoints pt 7 lw 2 lc rgb '#1f77b4' title 'Impulse2D defaults', \\\n"
-           << "     '" << dataDir
-           << "/scaling.dat' using 1:3 with linespoints pt 5 lw 2 dt 2 lc rgb '#d62728' title 'Box2D 2.4.1 8/3'\n";
+           << "plot " << sdat
+           << " using 1:2 with linespoints pt 7 lw 2 lc rgb '#1f77b4' title 'Impulse2D defaults, 1 worker', \\\n"
+           << "     " << sdat
+           << " using 1:3 with linespoints pt 9 lw 2 lc rgb '#2ca02c' title 'Impulse2D defaults, 2 workers', \\\n"
+           << "     " << sdat
+           << " using 1:4 with linespoints pt 5 lw 2 dt 2 lc rgb '#d62728' title 'Box2D 2.4.1 8/3'\n";
+        gp << "\nset output '" << o.images << "/perf_scaling_ratio.png'\n"
+           << "set title 'Impulse2D ms per step / Box2D 2.4.1 ms per step, same repeat (bars: spread over repeats)'\n"
+           << "set xlabel 'dynamic bodies (log scale)'\nset ylabel 'ratio to Box2D 2.4.1 at 8/3'\n"
+           << "unset logscale y\nset yrange [0:1.3<*]\nset key top left box opaque\n"
+           << "plot " << sdat
+           << " using 1:5:6:7 with yerrorlines pt 7 lw 2 lc rgb '#1f77b4' title 'Impulse2D, 1 worker', \\\n"
+           << "     " << sdat
+           << " using 1:8:9:10 with yerrorlines pt 9 lw 2 lc rgb '#2ca02c' title 'Impulse2D, 2 workers', \\\n"
+           << "     1 with lines lw 1 dt 2 lc rgb '#d62728' title 'Box2D 2.4.1 (1.0)'\n"
+           << "set logscale y\nset yrange [*:*]\n";
+    }
+    if (!profile.empty()) {
+        // One bar per scene and worker count: each stage's share of the sum of the stage medians.
+        std::ofstream pd(dataDir + "/profile.dat");
+        for (const ProfileRow& r : profile)
+            for (int w = 0; w < 2; ++w) {
+                const ProfileRun& m = r.run[w];
+                double sum = 0.0;
+                for (double t : m.stage) sum += t;
+                pd << '"' << r.plan.scene << ", " << w + 1 << (w ? " workers" : " worker") << '"';
+                for (double t : m.stage) pd << ' ' << (sum > 0.0 ? 100.0 * t / sum : 0.0);
+                pd << '\n';
+            }
+        const char* colours[kStages] = {"#9467bd", "#ff7f0e", "#8c564b", "#1f77b4", "#d62728", "#2ca02c", "#7f7f7f"};
+        gp << "\nset output '" << o.images << "/perf_profile.png'\n"
+           << "set title \"Where a step's time goes: each stage's share (Impulse2D defaults, sleeping off)\"\n"
+           << "unset logscale xy\nset yrange [0:100]\nset xrange [*:*]\nset xlabel ''\n"
+           << "set ylabel 'share of the step (% of the stage medians'' sum)'\n"
+           << "set style data histograms\nset style histogram rowstacked\nset style fill solid 0.9 border -1\n"
+           << "set boxwidth 0.7\nset key outside right box opaque\nset xtics rotate by -25 font 'sans,9'\n"
+           << "plot ";
+        for (int k = 0; k < kStages; ++k)
+            gp << (k ? ", \\\n     '' using " : ("'" + dataDir + "/profile.dat' using ")) << k + 2
+               << (k ? "" : ":xtic(1)") << " lc rgb '" << colours[k] << "' title '" << kStageKeys[k] << "'";
+        gp << "\n";
     }
 }
 
@@ -520,7 +690,7 @@ std::string machineLine() {
         }
     std::ostringstream s;
     s << cpu << ", " << std::thread::hardware_concurrency() << " logical cores (shared with other work), "
-      << "one thread, g++ " << __GNUC__ << "." << __GNUC_MINOR__ << " Release build (-O3)";
+      << "g++ " << __GNUC__ << "." << __GNUC_MINOR__ << " Release build (-O3)";
     return s.str();
 }
 
@@ -560,12 +730,14 @@ const std::map<std::string, std::string>& shortfallNotes() {
 }
 
 void writeMarkdown(const std::vector<SceneResult>& results, const std::vector<ScalingRow>& scaling,
-                   const std::vector<MemoryRow>& memory, const std::vector<IdleRow>& idle, const Options& o,
-                   double sweepSeconds) {
+                   const std::vector<ProfileRow>& profile, const std::vector<MemoryRow>& memory,
+                   const std::vector<IdleRow>& idle, const Options& o, double sweepSeconds) {
     std::ofstream md(o.out + "/generated.md");
     md << "## Speed against error (generated)\n\n"
        << "Generated by `scripts/performance.sh" << (o.quick ? " --quick" : "") << "` (the `sweep` program in "
-       << "`tests/benchmark/`); do not edit by hand. Machine: " << machineLine() << ". dt = 1/60 s, sleeping off. "
+       << "`tests/benchmark/`); do not edit by hand"
+       << (o.revision.empty() ? std::string() : ". Source revision `" + o.revision + "`")
+       << ". Machine: " << machineLine() << ". dt = 1/60 s, sleeping off, one worker unless a table says otherwise. "
        << "Each point is the median over repeats of a run's median ms/step, the two engines' runs interleaved in "
        << "every repeat; ratios compare figures of the same run. The sweep took " << num(sweepSeconds / 60.0)
        << " minutes" << (o.quick ? " (quick mode: one repeat, few points, short runs; for development only)" : "")
@@ -578,15 +750,16 @@ void writeMarkdown(const std::vector<SceneResult>& results, const std::vector<Sc
           "(\"vbias\") at 1, 4, 8 substeps; `baumgarte` with 1, 2, 4, 8, 16, 32 velocity iterations; `split` with 2/1, "
           "4/2, 8/3, 16/6, 32/10 velocity/position iterations. `soft_step` solves once and relaxes once per substep, so "
           "the iteration counts do not apply to it. Box2D 2.4.1: 1/1, 2/1, 4/2, 8/3, 16/6, 32/10 velocity/position "
-          "iterations. Run lengths and repeats are in the table; many_pyramids (22,000 boxes) runs a reduced set "
-          "(soft step 1, 2, 4, 8 substeps and 8 at ×2, baumgarte 4 and 16, split 4/2 and 16/6, Box2D 2/1 to 32/10); "
-          "quick mode runs fewer points still, once each.\n\n";
+          "iterations. Run lengths and repeats are in the table; many_pyramids (22,000 boxes) and "
+          "circle_pile1000 (to keep the sweep short) run a reduced set (soft step 1, 2, 4, 8 substeps and 8 at ×2, "
+          "baumgarte 4 and 16, split 4/2 and 16/6, Box2D 2/1 to 32/10); quick mode runs fewer points still, once "
+          "each.\n\n";
 
     md << "**Error figures** (computed by the testbed, `error` in `testbed run --json`):\n\n"
           "| metric | scenes | definition |\n|---|---|---|\n"
           "| `max_excursion` (m) | pyramids, card_house | largest distance of any dynamic body from its start over the run: sway, sinking, collapse |\n"
           "| `max_sway` (m) | tall stacks (they start with 0.1 m gaps, so settling is no error) | largest sideways distance of any dynamic body from its start over the run |\n"
-          "| `max_penetration` (m) | rain1000 | largest penetration over the touching contacts over the run |\n"
+          "| `max_penetration` (m) | rain1000, circle_pile1000 | largest penetration over the touching contacts over the run |\n"
           "| `joint_stretch` (m) | joint_grid, heavy_chain | largest joint error over the run (`joint_error.max`) |\n"
           "| `rebound_error` (m) | bounce | largest \\|h − e²·d\\| over the balls: d the drop to the lowest point, h the first rebound's height above it, e = max(e_ball, e_ground) (both engines mix restitution by max) |\n"
           "| `energy_drift` (1) | pendulum_wave | largest \\|E(t) − E(0)\\| over the run divided by the pendulums' swing energy |\n\n"
@@ -687,15 +860,93 @@ void writeMarkdown(const std::vector<SceneResult>& results, const std::vector<Sc
     }
 
     if (!scaling.empty()) {
-        md << "### Scaling\n\n![ms per step against body count](images/perf_scaling.png)\n\n"
-              "Columns of 10 boxes (1 m, resting, 1.5 m apart) on one ground box, 1 s per run, 3 repeats interleaved"
-              " (quick: 20 steps, 1 repeat); Impulse2D at its defaults, Box2D at 8/3, sleeping off.\n\n"
-              "| dynamic bodies | Impulse2D ms/step | Box2D ms/step | ratio | Impulse2D µs per body | Box2D µs per body |\n"
-              "|---|---|---|---|---|---|\n";
+        const ScalingRow& last = scaling.back();
+        md << "### Scaling, on 1 and 2 workers\n\n![ms per step against body count](images/perf_scaling.png)\n\n"
+              "![ratio to Box2D 2.4.1 against body count](images/perf_scaling_ratio.png)\n\n"
+              "Columns of 10 boxes (1 m, resting, 1.5 m apart) on one ground box, "
+           << (o.quick ? "20 steps per run, 1 repeat (quick mode)" : "1 s per run, 3 repeats")
+           << "; Impulse2D at its defaults on 1 worker and on 2 workers (a `std::thread` pool as the world's task "
+              "system, `testbed run --threads 2`), Box2D 2.4.1 at 8/3 (one thread: it has no other), sleeping off. In "
+              "each repeat the three runs go in turn, in an order rotated by the repeat; a figure is the median over "
+              "the repeats of a run's median ms/step, and a ratio is the median over the repeats of Impulse2D's time "
+              "over Box2D's in the same repeat, with its spread (smallest–largest over the repeats) in brackets. The "
+              "world hands work to its second worker only in steps large enough to gain from it, so the small "
+              "worlds run on one either way. The two workers share the machine's "
+           << std::thread::hardware_concurrency()
+           << " cores with whatever else runs on it, so the 2-worker figures are the noisiest.\n\n"
+              "| dynamic bodies | Impulse2D 1 worker ms/step | Impulse2D 2 workers ms/step | Box2D ms/step | ratio, 1 "
+              "worker | ratio, 2 workers | 2 workers' speed-up | Impulse2D µs per body (1 worker) | Box2D µs per body "
+              "|\n|---|---|---|---|---|---|---|---|---|\n";
+        auto ratioText = [](const std::vector<double>& r) {
+            std::string t = "**" + fmt("%.2f", median(r)) + "**";
+            if (r.size() > 1)
+                t += " (" + fmt("%.2f", *std::min_element(r.begin(), r.end())) + "–" +
+                     fmt("%.2f", *std::max_element(r.begin(), r.end())) + ")";
+            return t;
+        };
         for (const ScalingRow& s : scaling)
-            md << "| " << s.bodies << " | " << num(s.ms[0]) << " | " << num(s.ms[1]) << " | "
-               << fmt("%.2f", s.ms[0] / s.ms[1]) << " | " << num(1000.0 * s.ms[0] / s.bodies) << " | "
-               << num(1000.0 * s.ms[1] / s.bodies) << " |\n";
+            md << "| " << s.bodies << " | " << num(s.ms[0]) << " | " << num(s.ms[1]) << " | " << num(s.ms[2]) << " | "
+               << ratioText(s.ratios[0]) << " | " << ratioText(s.ratios[1]) << " | " << fmt("%.2f", s.ms[0] / s.ms[1])
+               << "× | " << num(1000.0 * s.ms[0] / s.bodies) << " | " << num(1000.0 * s.ms[2] / s.bodies) << " |\n";
+        md << "\nAt " << last.bodies << " bodies Impulse2D takes " << num(last.ms[0]) << " ms per step on 1 worker and "
+           << num(last.ms[1]) << " on 2 (" << fmt("%.2f", last.ms[0] / last.ms[1]) << "× faster), against Box2D "
+           << "2.4.1's " << num(last.ms[2]) << " ms: " << fmt("%.2f", median(last.ratios[0])) << "× and "
+           << fmt("%.2f", median(last.ratios[1])) << "× its time.\n\n";
+    }
+    if (!profile.empty()) {
+        md << "### Where a step's time goes\n\n![each stage's share of a step](images/perf_profile.png)\n\n"
+           << "Impulse2D at its defaults (the scene's settings), sleeping off, timed stage by stage by "
+              "`World::profile()`"
+           << (o.revision.empty() ? std::string() : ", source revision `" + o.revision + "`")
+           << ". Each run steps the scene from its start, leaves the first steps untimed (the pile and the rain "
+              "land, pairs are found) and times the next ones; a figure is the median over the timed steps of one "
+              "run, then the median over the repeats. In each repeat Impulse2D on 1 worker, on 2 workers (a "
+              "`std::thread` pool as the world's task system) and Box2D 2.4.1 at 8/3 (wall time of the same "
+              "steps) run in turn, in an order rotated by the repeat; the ratio is the median over the repeats of "
+              "Impulse2D's wall time over Box2D's in the same repeat, its spread (smallest–largest) in brackets. "
+              "Stage medians need not add up to the step's median; the bracket after a stage is its share of "
+              "their sum. ";
+        for (const ProfileRow& r : profile)
+            if (!r.plan.box2d)
+                md << "Box2D does not run " << r.plan.scene << " here: its first 45 or so steps take 1–2.5 s each "
+                   << "in Box2D 2.4.1 (about 40 s a run); its ratio is in the sweep's table of a full run. ";
+        md << "The figures stand alone: the table of another revision, made by the same command on the same "
+              "machine, is its before or after.\n\n"
+              "| stage | what it times |\n|---|---|\n"
+              "| pairs | the broadphase: new pairs among the moved boxes, their contacts created |\n"
+              "| narrowphase | the contacts' manifolds, contacts whose boxes stopped overlapping destroyed |\n"
+              "| impacts | the closed-form impact law at approaching contacts |\n"
+              "| solve | the solver: awake bodies gathered, rows coloured and prepared, the substeps (integrate, warm "
+              "start, solve, relax), restitution, impulses and positions stored |\n"
+              "| continuous | fast bodies swept against static shapes (and bullets) |\n"
+              "| proxies | the awake bodies' broadphase boxes moved |\n"
+              "| sleep | the sleep test and freeing the step's large arrays |\n\n"
+              "| scene | bodies | touching contacts | steps untimed + timed × repeats | workers | step ms "
+              "(wall) |";
+        for (const char* k : kStageKeys) md << " " << k << " ms |";
+        md << " Box2D 2.4.1 8/3 ms | ratio |\n|---|---|---|---|---|---|";
+        for (int k = 0; k < kStages; ++k) md << "---|";
+        md << "---|---|\n";
+        for (const ProfileRow& r : profile)
+            for (int w = 0; w < 2; ++w) {
+                const ProfileRun& m = r.run[w];
+                double sum = 0.0;
+                for (double t : m.stage) sum += t;
+                md << "| " << r.plan.scene << " | " << r.bodies << " | " << m.contacts << " | " << r.plan.warm << " + "
+                   << r.plan.measured << " × " << r.repeats << " | " << w + 1 << " | **" << num(m.wall) << "** |";
+                for (double t : m.stage)
+                    md << " " << num(t) << " (" << fmt("%.0f", sum > 0.0 ? 100.0 * t / sum : 0.0) << " %) |";
+                const std::vector<double>& q = r.ratios[w];
+                if (q.empty()) {
+                    md << " – | – |\n";
+                    continue;
+                }
+                md << " " << num(r.box2d) << " | **" << fmt("%.2f", median(q)) << "**";
+                if (q.size() > 1)
+                    md << " (" << fmt("%.2f", *std::min_element(q.begin(), q.end())) << "–"
+                       << fmt("%.2f", *std::max_element(q.begin(), q.end())) << ")";
+                md << " |\n";
+            }
         md << "\n";
     }
     if (!memory.empty()) {
@@ -751,6 +1002,10 @@ int main(int argc, char** argv) {
             o.quick = true;
         else if (a == "--no-scaling")
             o.scaling = false;
+        else if (a == "--no-profile")
+            o.profile = false;
+        else if (a == "--revision")
+            o.revision = next();
         else if (a == "--out")
             o.out = next();
         else if (a == "--images")
@@ -763,7 +1018,8 @@ int main(int argc, char** argv) {
         } else {
             std::fprintf(
                 stderr,
-                "usage: sweep [--quick] [--out DIR] [--images DIR] [--assets DIR] [--scenes a,b,...] [--no-scaling]\n");
+                "usage: sweep [--quick] [--out DIR] [--images DIR] [--assets DIR] [--scenes a,b,...] [--no-scaling] "
+                "[--no-profile] [--revision TEXT]\n");
             return a == "--help" || a == "-h" ? 0 : 2;
         }
     }
@@ -797,7 +1053,23 @@ int main(int argc, char** argv) {
                                             : std::vector<int>{100, 300, 1000, 3000, 10000, 20000};
     const int scalingSteps = o.quick ? 20 : 60, scalingRepeats = o.quick ? 1 : 3;
     if (o.scaling)
-        for (int n : counts) total += scalingRepeats * 2 * runCost(box2d(8, 3), n, scalingSteps) * 3;
+        for (int n : counts) total += scalingRepeats * kScalingRuns * runCost(box2d(8, 3), n, scalingSteps) * 3;
+
+    std::vector<ProfileRow> profile;
+    std::vector<tb::SceneDesc> profileDescs;
+    if (o.profile)
+        for (const ProfilePlan& plan : profilePlans(o.quick)) {
+            ProfileRow row;
+            row.plan = plan;
+            row.repeats = o.quick ? 1 : 3;
+            tb::SceneDesc desc = tb::loadSceneDesc(plan.scene, o.assets);
+            desc.settings.enableSleep = false;
+            row.bodies = static_cast<int>(desc.bodies.size());
+            Point def;
+            total += row.repeats * (plan.box2d ? 3 : 2) * runCost(def, row.bodies, plan.warm + plan.measured);
+            profile.push_back(row);
+            profileDescs.push_back(std::move(desc));
+        }
 
     Progress progress(total);
     for (std::size_t s = 0; s < results.size(); ++s) {
@@ -831,19 +1103,24 @@ int main(int argc, char** argv) {
             row.bodies = n;
             tb::SceneDesc desc = columnsScene(n, true);
             desc.settings.enableSleep = false;
-            std::vector<double> ms[2];
-            for (int rep = 0; rep < scalingRepeats; ++rep)
-                for (int e = 0; e < 2; ++e) {
-                    const int which = (rep % 2) ? 1 - e : e;
-                    const EngineKind kind = which ? EngineKind::box2d : EngineKind::impulse2d;
-                    progress.advance(0.0, "scaling " + std::to_string(n) + " " + tb::engineName(kind));
+            std::vector<double> ms[kScalingRuns];
+            for (int rep = 0; rep < scalingRepeats; ++rep) {
+                double repMs[kScalingRuns] = {};
+                // The three runs in a rotating order, so no run always goes first.
+                for (int e = 0; e < kScalingRuns; ++e) {
+                    const int which = (e + rep) % kScalingRuns;
+                    const EngineKind kind = which == 2 ? EngineKind::box2d : EngineKind::impulse2d;
+                    desc.threads = which == 1 ? 2 : 1;
+                    progress.advance(0.0, "scaling " + std::to_string(n) + " " + kScalingRunNames[which]);
                     tb::RunReport rr = tb::runScene(desc, scalingSteps, kind, {}, nullptr, false);
                     ms[which].push_back(rr.msMedian);
+                    repMs[which] = rr.msMedian;
                     row.contacts[which] = rr.contacts;
                     progress.advance(runCost(box2d(8, 3), n, scalingSteps) * 3, "scaling");
                 }
-            row.ms[0] = median(ms[0]);
-            row.ms[1] = median(ms[1]);
+                for (int w = 0; w < 2; ++w) row.ratios[w].push_back(repMs[w] / repMs[2]);
+            }
+            for (int k = 0; k < kScalingRuns; ++k) row.ms[k] = median(ms[k]);
             scaling.push_back(row);
         }
         const int memBodies = 10000;
@@ -880,15 +1157,60 @@ int main(int argc, char** argv) {
         for (int w = 0; w < 3; ++w)
             idle.push_back({worlds[w].first, {median(ms[w][0]), median(ms[w][1])}, {awake[w][0], awake[w][1]}});
     }
+    for (std::size_t s = 0; s < profile.size(); ++s) {
+        ProfileRow& row = profile[s];
+        const tb::SceneDesc& desc = profileDescs[s];
+        std::vector<ProfileRun> runs[2];
+        std::vector<double> box;
+        const double cost = runCost(Point{}, row.bodies, row.plan.warm + row.plan.measured);
+        for (int rep = 0; rep < row.repeats; ++rep) {
+            double repMs[3] = {};
+            // Impulse2D on 1 worker, on 2, Box2D: in turn, the order rotated by the repeat.
+            for (int e = 0; e < 3; ++e) {
+                const int which = (e + rep) % 3;
+                if (which == 2 && !row.plan.box2d) continue;
+                progress.advance(0.0, "profile " + row.plan.scene + " " + kScalingRunNames[which]);
+                if (which == 2) {
+                    box.push_back(profileBox2D(desc, row.plan.warm, row.plan.measured));
+                    repMs[2] = box.back();
+                } else {
+                    runs[which].push_back(profileImpulse(desc, which + 1, row.plan.warm, row.plan.measured));
+                    repMs[which] = runs[which].back().wall;
+                }
+                progress.advance(cost, "profile");
+            }
+            if (row.plan.box2d)
+                for (int w = 0; w < 2; ++w) row.ratios[w].push_back(repMs[w] / repMs[2]);
+        }
+        for (int w = 0; w < 2; ++w) {
+            auto med = [&](auto field) {
+                std::vector<double> v;
+                for (const ProfileRun& r : runs[w]) v.push_back(field(r));
+                return median(v);
+            };
+            ProfileRun& m = row.run[w];
+            for (std::size_t k = 0; k < kStages; ++k) m.stage[k] = med([k](const ProfileRun& r) { return r.stage[k]; });
+            m.step = med([](const ProfileRun& r) { return r.step; });
+            m.wall = med([](const ProfileRun& r) { return r.wall; });
+            m.contacts = runs[w].back().contacts;
+        }
+        row.box2d = median(box);
+    }
     progress.finish();
     const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
 
     writeCsv(results, o.out + "/sweep.csv");
     if (!scaling.empty()) {
         std::ofstream f(o.out + "/scaling.csv");
-        f << "bodies,impulse2d_ms_per_step,box2d_ms_per_step,impulse2d_contacts,box2d_contacts\n";
-        for (const ScalingRow& s : scaling)
-            f << s.bodies << ',' << s.ms[0] << ',' << s.ms[1] << ',' << s.contacts[0] << ',' << s.contacts[1] << '\n';
+        f << "bodies,impulse2d_1_worker_ms_per_step,impulse2d_2_workers_ms_per_step,box2d_ms_per_step,"
+             "ratio_1_worker_min,ratio_1_worker_max,ratio_2_workers_min,ratio_2_workers_max,impulse2d_contacts,"
+             "box2d_contacts\n";
+        for (const ScalingRow& s : scaling) {
+            f << s.bodies << ',' << s.ms[0] << ',' << s.ms[1] << ',' << s.ms[2];
+            for (const std::vector<double>& r : s.ratios)
+                f << ',' << *std::min_element(r.begin(), r.end()) << ',' << *std::max_element(r.begin(), r.end());
+            f << ',' << s.contacts[0] << ',' << s.contacts[2] << '\n';
+        }
         std::ofstream m(o.out + "/memory.csv");
         m << "engine,bytes_per_body,bytes_per_touching_contact,bodies,touching_contacts\n";
         for (const MemoryRow& r : memory)
@@ -900,8 +1222,29 @@ int main(int argc, char** argv) {
             id << '"' << r.world << "\"," << r.ms[0] << ',' << r.ms[1] << ',' << r.awake[0] << ',' << r.awake[1]
                << '\n';
     }
-    writePlots(results, scaling, o);
-    writeMarkdown(results, scaling, memory, idle, o, seconds);
+    if (!profile.empty()) {
+        std::ofstream f(o.out + "/profile.csv");
+        f << "scene,bodies,workers,warm_steps,measured_steps,repeats";
+        for (const char* k : kStageKeys) f << ',' << k << "_ms";
+        f << ",step_ms,wall_ms,box2d_wall_ms,ratio_median,ratio_min,ratio_max,touching_contacts\n";
+        for (const ProfileRow& r : profile)
+            for (int w = 0; w < 2; ++w) {
+                const ProfileRun& m = r.run[w];
+                f << r.plan.scene << ',' << r.bodies << ',' << w + 1 << ',' << r.plan.warm << ',' << r.plan.measured
+                  << ',' << r.repeats;
+                for (double t : m.stage) f << ',' << t;
+                const std::vector<double>& q = r.ratios[w];
+                f << ',' << m.step << ',' << m.wall << ',';
+                if (q.empty())
+                    f << ",,,,";
+                else
+                    f << r.box2d << ',' << median(q) << ',' << *std::min_element(q.begin(), q.end()) << ','
+                      << *std::max_element(q.begin(), q.end()) << ',';
+                f << m.contacts << '\n';
+            }
+    }
+    writePlots(results, scaling, profile, o);
+    writeMarkdown(results, scaling, profile, memory, idle, o, seconds);
     std::fprintf(stderr, "sweep: %.0f s; wrote %s/sweep.csv, plots.gp, generated.md\n", seconds, o.out.c_str());
     return 0;
 }

@@ -225,34 +225,12 @@ TEST(SceneLoader, MissingFileAndUnknownScene) {
 
 TEST(ShippedScenes, ListedWithDescriptions) {
     auto scenes = tb::listScenes(kAssets);
-    std::vector<std::string> expected = {"stack5",
-                                         "stack5_overlap",
-                                         "funnel",
-                                         "pendulum_wave",
-                                         "pendulum_grid",
-                                         "pyramid20",
-                                         "pyramid100",
-                                         "tall_stack20",
-                                         "tall_stack50",
-                                         "card_house",
-                                         "dominoes",
-                                         "newtons_cradle",
-                                         "bridge",
-                                         "heavy_chain",
-                                         "rain1000",
-                                         "many_pyramids",
-                                         "many_pyramids_small",
-                                         "joint_grid",
-                                         "bullets",
-                                         "spinning_rod",
-                                         "incline",
-                                         "bounce",
-                                         "ragdoll",
-                                         "car",
-                                         "chain_swing",
-                                         "slider_crank",
-                                         "gears",
-                                         "pulley"};
+    std::vector<std::string> expected = {
+        "stack5",     "stack5_overlap", "funnel",       "pendulum_wave",   "pendulum_grid", "pyramid20",
+        "pyramid100", "tall_stack20",   "tall_stack50", "card_house",      "dominoes",      "newtons_cradle",
+        "bridge",     "heavy_chain",    "rain1000",     "circle_pile1000", "many_pyramids", "many_pyramids_small",
+        "joint_grid", "bullets",        "spinning_rod", "incline",         "bounce",        "ragdoll",
+        "car",        "chain_swing",    "slider_crank", "gears",           "pulley"};
     for (const auto& name : expected) {
         auto it = std::find_if(scenes.begin(), scenes.end(), [&](const auto& s) { return s.first == name; });
         ASSERT_NE(it, scenes.end()) << name;
@@ -283,6 +261,7 @@ TEST(ShippedScenes, CountsMatchTheirDescriptions) {
     EXPECT_EQ(count(tb::loadSceneDesc("many_pyramids", kAssets)), 22000);
     EXPECT_EQ(count(tb::loadSceneDesc("many_pyramids_small", kAssets)), 1100);
     EXPECT_EQ(count(tb::loadSceneDesc("rain1000", kAssets)), 1000);
+    EXPECT_EQ(count(tb::loadSceneDesc("circle_pile1000", kAssets)), 1000);
     EXPECT_EQ(count(tb::loadSceneDesc("card_house", kAssets)), 40);
     EXPECT_EQ(count(tb::loadSceneDesc("pendulum_wave", kAssets)), 50);
     tb::SceneDesc stack = tb::loadSceneDesc("stack5", kAssets);
