@@ -10,6 +10,7 @@
 #pragma once
 
 #include <cstdint>
+#include <limits>
 #include <vector>
 
 #include "impulse2d/types.hpp"
@@ -43,6 +44,10 @@ struct Body {
     /// when the body has no solid shape. Bounds how far a turn moves its
     /// surface (continuous.cpp). Set by updateMass.
     float reach = -1.0f;
+    /// The highest its centre of mass has been, along −gravity, at the end of
+    /// a step (m; −∞ before its first step). A push between bodies does not
+    /// lift a body above it (deep_overlap.cpp).
+    float highest = -std::numeric_limits<float>::infinity();
     std::uint32_t generation = 1;
     /// The pose at the step's start, kept when a stage before the solver
     /// moves the body (the impact stage's time-of-impact shift), so that

@@ -3,9 +3,23 @@
 // the positions for one substep and are then dropped (deep_overlap.cpp).
 #pragma once
 
+#include "impulse2d/math.hpp"
+
 namespace i2d::detail {
 
 struct WorldState;
+
+/// A deep contact between two moving bodies pushed apart sideways
+/// (perpendicular to gravity) instead of along its normal.
+struct SidePush {
+    int row;      ///< in SolverArrays::constraints
+    Vec2 axis;    ///< unit, from A's side towards B's
+    float depth;  ///< overlap of the two shapes' extents along axis at step start (m)
+};
+
+/// Once per step, after the rows are prepared, in a step with a deep overlap:
+/// which deep rows are pushed sideways (SolverArrays::sidePushes).
+void prepareDeepOverlaps(WorldState& w);
 
 /// The push of every deep contact, solved by a few Gauss-Seidel sweeps on
 /// the pseudo-velocities SolverArrays::biasV/biasW (zeroed here first); each

@@ -358,6 +358,7 @@ void solve(WorldState& w, float dt) {
     } endStages{w.runner};
     s.positionUpdates = 0;
     prepareContacts(w, h, soft);
+    if (soft && s.anyDeepOverlap) prepareDeepOverlaps(w);
     packContactColours(w, soft);
     prepareJoints(w, dt);
     // Joint stiffness capped at 1/4 of the substep rate, so jointHertz 60 holds
@@ -456,6 +457,9 @@ void solve(WorldState& w, float dt) {
     // The relax and restitution passes act after the last position update, so
     // the limits are applied once more to the velocities the body keeps.
     const float maxAngular = kMaxRotationPerStep / (dt / static_cast<float>(substeps));
+    const Vec2 gravity = w.settings.gravity;
+    const float gravityLength = length(gravity);
+    const Vec2 up = gravityLength > 0.0f ? (-1.0f / gravityLength) * gravity : Vec2{0.0f, 1.0f};
     auto writeBack = [&](int first, int last) {
         for (std::size_t i = static_cast<std::size_t>(first); i < static_cast<std::size_t>(last); ++i) {
             Body& body = w.bodies[s.stateBodies[i]];
@@ -469,6 +473,7 @@ void solve(WorldState& w, float dt) {
             q = {q.c / mag, q.s / mag};
             body.xf.q = q;
             body.xf.p = body.center - rotate(q, body.localCenter);
+            body.highest = std::max(body.highest, dot(body.center, up));
             body.force = {};
             body.torque = 0.0f;
             body.solverIndex = kNullIndex;

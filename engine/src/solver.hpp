@@ -6,6 +6,7 @@
 
 #include "body.hpp"
 #include "contact_solver.hpp"
+#include "deep_overlap.hpp"
 #include "joint.hpp"
 #include "joint_tree.hpp"
 #include "scratch_array.hpp"
@@ -41,9 +42,12 @@ struct SolverArrays {
     int wideFrameAt = -1;                          ///< the positionUpdates the blocks' kept anchors and K were made at
     std::vector<int> wideBlockStart;               ///< per joint colour: its first block; then the block count
     std::vector<std::uint8_t> jointColours;
-    std::vector<std::uint32_t> bodyColours;       ///< per state: the joint colours its rows took (joint_solver.cpp)
-    std::vector<int> deepContactCount;            ///< per state: contacts overlapping deeper than kDeepOverlap
-    bool anyDeepOverlap = false;                  ///< some row overlaps deeper than kDeepOverlap this step
+    std::vector<std::uint32_t> bodyColours;  ///< per state: the joint colours its rows took (joint_solver.cpp)
+    std::vector<int> deepContactCount;       ///< per state: contacts overlapping deeper than kDeepOverlap
+    bool anyDeepOverlap = false;             ///< some row overlaps deeper than kDeepOverlap this step
+    std::vector<SidePush> sidePushes;        ///< deep rows pushed sideways, in row order (deep_overlap.cpp)
+    std::vector<std::uint8_t> supported;     ///< per state: rests on something immovable (deep_overlap.cpp)
+    std::vector<int> supportStart, supportAbove, supportQueue;  ///< deep_overlap.cpp's lists of what rests on what
     std::vector<RollingConstraint> rolling;       ///< contacts with rolling resistance (contact_solver.cpp)
     ScratchArray<WideContactBlock> wideContacts;  ///< the coloured contact rows four at a time (wide_contact.cpp)
     bool wideContactsActive = false;              ///< this step solves them so

@@ -4,20 +4,21 @@
 // the ground, deep inside the ground) the test measures:
 //  - separated: when the deepest contact first comes within 2 cm (by 2 s),
 //    and the deepest contact at 2 s (at most 2 cm);
-//  - nothing thrown: how far a body rises above the higher of where it was
-//    created and where it ends (a pile on the ground must lift some bodies
-//    onto others: that is where they end, not a throw; at most 0.5 m), and
-//    how much faster than a free fall from the highest point it reached
-//    allows, plus the push cap (maxPushSpeed), a body ever moves (never);
+//  - nothing thrown: how far a body rises above where it was created (for a
+//    body created inside the ground: above where it is just out of it; at
+//    most 0.5 m), and how much faster than a free fall from the highest point
+//    it reached allows, plus the push cap (maxPushSpeed), a body ever moves
+//    (never);
 //  - no energy: the largest total energy (potential from the ground's top)
-//    over the larger of its start and its end (the end: the potential energy
-//    of the separated pile at rest, which a pile created on the ground must
-//    be lifted to; at most 1.02).
+//    over its start plus the potential energy that lifting the bodies just
+//    out of the ground needs (at most 1.02; for piles in the air that is the
+//    start).
 // The piles deep in the ground meet every bound, the piles in the air every
 // one but the deepest contact at 2 s, which a fast hit between two moving
 // bodies can exceed (InTheAirAtOnePoint says why); the piles on the ground
-// are held at today's figures (OnTheGround says why). The seeds and layouts
-// here were not used while the push was developed.
+// meet the separation and speed bounds and are held near the others
+// (OnTheGround says why). The ground piles' seeds were drawn after the
+// sideways push was written and were not used to develop it.
 #include <gtest/gtest.h>
 
 #include <algorithm>
@@ -53,9 +54,9 @@ BodyId makeBody(World& world, Kind kind, Vec2 p, float angle) {
 struct PileFigures {
     float deepestAt2s = 0.0f;   ///< m
     float separatedAt = -1.0f;  ///< s: first time the deepest contact is within 2 cm, −1 if never in 20 s
-    float overshoot = 0.0f;     ///< largest rise above max(created, final) height (m)
+    float rise = 0.0f;          ///< largest rise of a body above where it was created, out of the ground (m)
     float speedExcess = 0.0f;   ///< largest speed beyond free fall from the highest point reached + cap (m/s)
-    float energyRatio = 0.0f;   ///< largest E / max(E start, E end)
+    float energyRatio = 0.0f;   ///< largest E / (E start + lift out of the ground)
 };
 
 float deepest(const World& world) {
@@ -65,7 +66,17 @@ float deepest(const World& world) {
     return -d;
 }
 
-/// Steps the world 20 s and measures the figures over `bodies`.
+/// Steps the world 20 s and measures the figures over `bodies`. A body's rise
+/// is measured from where it was created, raised by how deep its lowest point
+/// was below the ground's top: a body created inside the ground has to rise
+/// that far to get out (the issue asks the same of it). The energy
+/// is compared with the start plus the potential energy that lifting each
+/// body just out of the ground needs (m·g times the depth of its lowest
+/// point below the ground's top, where it was created): no push can separate
+/// a body from the ground without it, and for a pile created above the ground
+/// it is zero, so there the bound is the issue's "never above 1.02 times the
+/// initial". (A body created inside the ground starts with a negative
+/// potential energy, to which no ratio applies.)
 PileFigures measure(World& world, const std::vector<BodyId>& bodies) {
     const float cap = world.settings().maxPushSpeed;
     auto energy = [&] {
@@ -77,8 +88,15 @@ PileFigures measure(World& world, const std::vector<BodyId>& bodies) {
         }
         return e;
     };
-    std::vector<float> created, highest;
-    for (BodyId b : bodies) created.push_back(world.position(b).y);
+    std::vector<float> created, highest, base;
+    double lift = 0.0;
+    for (BodyId b : bodies) {
+        created.push_back(world.position(b).y);
+        float lowest = 0.0f;
+        for (ShapeId sh : world.bodyShapes(b)) lowest = std::min(lowest, world.shapeAABB(sh).lower.y);
+        base.push_back(created.back() - lowest);
+        lift += world.mass(b) * kG * -lowest;
+    }
     highest = created;
     const double e0 = energy();
     double eMax = e0;
@@ -95,23 +113,22 @@ PileFigures measure(World& world, const std::vector<BodyId>& bodies) {
         if (step == 2 * 60) f.deepestAt2s = deepest(world);
         if (f.separatedAt < 0.0f && deepest(world) <= 0.02f) f.separatedAt = step * kDt;
     }
-    for (std::size_t i = 0; i < bodies.size(); ++i)
-        f.overshoot = std::max(f.overshoot, highest[i] - std::max(created[i], world.position(bodies[i]).y));
-    f.energyRatio = static_cast<float>(eMax / std::max(e0, energy()));
+    for (std::size_t i = 0; i < bodies.size(); ++i) f.rise = std::max(f.rise, highest[i] - base[i]);
+    f.energyRatio = static_cast<float>(eMax / (e0 + lift));
     return f;
 }
 
 void print(const PileFigures& f, const std::string& what) {
-    std::printf("[figure] %s: within 2 cm after %.2f s, deepest at 2 s %.4f m, rise above created/final %.3f m, speed "
-                "beyond free fall + cap %+.2f m/s, energy %.4f x\n",
-                what.c_str(), f.separatedAt, f.deepestAt2s, f.overshoot, f.speedExcess, f.energyRatio);
+    std::printf("[figure] %s: within 2 cm after %.2f s, deepest at 2 s %.4f m, rise above created %.3f m, speed "
+                "beyond free fall + cap %+.2f m/s, energy %.4f x start + lift out of the ground\n",
+                what.c_str(), f.separatedAt, f.deepestAt2s, f.rise, f.speedExcess, f.energyRatio);
 }
 
 /// The issue's bounds.
 void expectGentle(const PileFigures& f, const std::string& what) {
     print(f, what);
     EXPECT_LE(f.deepestAt2s, 0.02f) << what;
-    EXPECT_LE(f.overshoot, 0.5f) << what;
+    EXPECT_LE(f.rise, 0.5f) << what;
     EXPECT_LE(f.speedExcess, 0.0f) << what;
     EXPECT_LE(f.energyRatio, 1.02f) << what;
 }
@@ -160,33 +177,37 @@ TEST(OverlapPiles, InTheAirAtOnePoint) {
             EXPECT_GE(f.separatedAt, 0.0f) << what;
             EXPECT_LE(f.separatedAt, 2.0f) << what;
             EXPECT_LE(f.deepestAt2s, 0.05f) << what;
-            EXPECT_LE(f.overshoot, 0.5f) << what;
+            EXPECT_LE(f.rise, 0.5f) << what;
             EXPECT_LE(f.speedExcess, 0.0f) << what;
             EXPECT_LE(f.energyRatio, 1.02f) << what;
         }
 }
 
 // Separated by 2 s and nothing faster than a fall from where it was lifted
-// allows. Not yet met: the push separates bodies along their contact
-// normals, which stacks some of them into leaning columns that then topple
-// (boxes, seed 11: three boxes created 0.4 m above and 0.25 m beside each
-// other are pushed into a column whose top box rises 1.2 m above where it
-// was created before the column falls over); the energy
-// of the pile at its highest is up to 1.55 times its energy at rest.
-// Box2D 2.4.1 on such piles: up to 1.0 m and 1.45 times; this engine before
-// the pseudo-velocity push, which separated more slowly: 0.57 m and 1.32.
-// Held at 1.3 m and 1.6 times; the targets are 0.5 m and 1.02.
+// allows. Pushed along their contact normals, such piles were stacked into
+// leaning columns that toppled (a box rose 1.23 m, the energy reached 1.49
+// times the start plus the lift out of the ground); deep rows between two
+// moving bodies whose lower one is supported are now pushed sideways instead
+// when lifting would raise the upper one above the highest it has been
+// (deep_overlap.cpp). Measured over 18 layouts (seeds 31, 47, 59, 83, 101,
+// 113): rise within 0.5 m in 16, at most 0.70 m (a box carried on top of
+// another that is itself pushed aside); energy within 1.02 in 13, at most
+// 1.07 (the soft rows of the contacts shallower than the push's 5 cm add
+// some kinetic energy as the bodies are slid together). Held at 0.75 m and
+// 1.08; the targets are 0.5 m and 1.02 (docs/validation.md).
 TEST(OverlapPiles, OnTheGround) {
     for (Kind kind : {Kind::box, Kind::circle, Kind::capsule})
-        for (unsigned seed : {11u, 23u}) {
+        for (unsigned seed : {31u, 47u}) {
             const std::string what = std::string("8 ") + kindName(kind) + " scattered on the ground, seed " +
                                      std::to_string(seed);
             const PileFigures f = groundPile(kind, 8, seed);
             print(f, what);
+            EXPECT_GE(f.separatedAt, 0.0f) << what;
+            EXPECT_LE(f.separatedAt, 2.0f) << what;
             EXPECT_LE(f.deepestAt2s, 0.02f) << what;
             EXPECT_LE(f.speedExcess, 0.0f) << what;
-            EXPECT_LE(f.overshoot, 1.3f) << what;
-            EXPECT_LE(f.energyRatio, 1.6f) << what;
+            EXPECT_LE(f.rise, 0.75f) << what;
+            EXPECT_LE(f.energyRatio, 1.08f) << what;
         }
 }
 
