@@ -1,12 +1,12 @@
 // Four contact manifolds at a time (see wide_contact.hpp): packing the rows
 // into blocks, the four-lane policy of the sweeps (wide_contact_kernel.hpp
-// holds the sweeps, wide_contact_avx2.cpp the eight-lane policy), the choice
+// holds the sweeps, wide_avx2.cpp the eight-lane policy), the choice
 // between four and eight lanes, and the write-back to the rows.
 #include "wide_contact.hpp"
 
 #include "solver.hpp"
-#include "wide_body.hpp"
 #include "wide_contact_kernel.hpp"
+#include "wide_lanes4.hpp"
 
 namespace i2d::detail {
 
@@ -54,28 +54,6 @@ void packWideContactBlock(SolverArrays& s, int block, int start, int last) {
 
 namespace {
 
-/// One block in the lanes of Float4.
-struct Lanes4 {
-    using V = Float4;
-    using M = Mask4;
-    WideContactBlock* k;
-    static V splat(float x) { return detail::splat(x); }
-    V load(BlockField f) const { return load4(k->*f); }
-    V load(int j, PointField f) const { return load4(k->points[j].*f); }
-    void store(int j, PointField f, V x) const { store4(k->points[j].*f, x); }
-    WideBodyT<V> gather(const BodyState* states, bool sideA) const {
-        const WideBody b = gatherBodies(states, sideA ? k->a : k->b);
-        return {b.vx, b.vy, b.w, b.reserved, b.dpx, b.dpy, b.qc, b.qs};
-    }
-    void scatter(BodyState* states, bool sideA, const WideBodyT<V>& b) const {
-        const WideBody w{b.vx, b.vy, b.w, b.reserved, b.dpx, b.dpy, b.qc, b.qs};
-        if (sideA)
-            scatterVelocities(states, k->a, w, k->mA, k->iA);
-        else
-            scatterVelocities(states, k->b, w, k->mB, k->iB);
-    }
-};
-
 int& laneLimit() {
     static int limit = 8;
     return limit;
@@ -91,13 +69,13 @@ bool cpuHasAvx2() {
 }  // namespace
 
 #if defined(I2D_AVX2_KERNEL)
-// wide_contact_avx2.cpp: pairs of blocks from `first`; each returns the first
+// wide_avx2.cpp: pairs of blocks from `first`; each returns the first
 // block it left (the odd one at the end, if any).
 int warmStartWideContactsAvx2(WideContactBlock* blocks, BodyState* states, int first, int last);
 int solveWideContactsAvx2(WideContactBlock* blocks, BodyState* states, const SweepParams& sp, int first, int last);
 #endif
 
-int wideContactLanes() {
+int wideLanes() {
 #if defined(I2D_AVX2_KERNEL)
     static const bool avx2 = cpuHasAvx2();
     return avx2 && laneLimit() >= 8 ? 8 : 4;
@@ -106,26 +84,26 @@ int wideContactLanes() {
 #endif
 }
 
-void limitWideContactLanes(int lanes) { laneLimit() = lanes; }
+void limitWideLanes(int lanes) { laneLimit() = lanes; }
 
 void warmStartWideContacts(SolverArrays& s, int firstBlock, int lastBlock) {
 #if defined(I2D_AVX2_KERNEL)
-    if (wideContactLanes() == 8 && lastBlock > firstBlock)
+    if (wideLanes() == 8 && lastBlock > firstBlock)
         firstBlock = warmStartWideContactsAvx2(&s.wideContacts[0], s.states.data(), firstBlock, lastBlock);
 #endif
     for (int i = firstBlock; i < lastBlock; ++i)
-        warmStartBlock(Lanes4{&s.wideContacts[static_cast<std::size_t>(i)]}, s.states.data());
+        warmStartBlock(Lanes4<WideContactBlock>{&s.wideContacts[static_cast<std::size_t>(i)]}, s.states.data());
 }
 
 void solveWideContacts(SolverArrays& s, SolvePass pass, float h, bool leaveImpacts, float impactSpeed, int firstBlock,
                        int lastBlock) {
     const SweepParams sp{1.0f / h, -impactSpeed, pass == SolvePass::soft_bias, leaveImpacts};
 #if defined(I2D_AVX2_KERNEL)
-    if (wideContactLanes() == 8 && lastBlock > firstBlock)
+    if (wideLanes() == 8 && lastBlock > firstBlock)
         firstBlock = solveWideContactsAvx2(&s.wideContacts[0], s.states.data(), sp, firstBlock, lastBlock);
 #endif
     for (int i = firstBlock; i < lastBlock; ++i)
-        solveBlock(Lanes4{&s.wideContacts[static_cast<std::size_t>(i)]}, s.states.data(), sp);
+        solveBlock(Lanes4<WideContactBlock>{&s.wideContacts[static_cast<std::size_t>(i)]}, s.states.data(), sp);
 }
 
 void writeBackWideContacts(SolverArrays& s, int firstBlock, int lastBlock) {

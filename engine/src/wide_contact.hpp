@@ -54,11 +54,11 @@ void solveWideContacts(SolverArrays& s, SolvePass pass, float h, bool leaveImpac
 /// The accumulated impulses of blocks [firstBlock, lastBlock) back into their
 /// rows (for restitution and the store, which read the rows).
 void writeBackWideContacts(SolverArrays& s, int firstBlock, int lastBlock);
-/// How many lanes the sweeps use: 8 (two blocks at once) on an x86-64 CPU
-/// with AVX2, else 4. Both give bit-identical results.
-int wideContactLanes();
+/// How many lanes the wide contact and hinge sweeps use: 8 (two blocks at
+/// once) on an x86-64 CPU with AVX2, else 4. Both give bit-identical results.
+int wideLanes();
 /// At most this many lanes (4 or 8) from now on: for tests comparing the two.
-void limitWideContactLanes(int lanes);
+void limitWideLanes(int lanes);
 /// Drops the accumulated impulses of every lane on a body marked bad.
 void dropWideContactImpulses(SolverArrays& s, const std::vector<char>& bad);
 

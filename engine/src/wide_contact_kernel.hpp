@@ -2,7 +2,7 @@
 // written once over a lane policy L that says how lanes are loaded, stored,
 // gathered and scattered: Lanes4 (wide_contact.cpp) runs one block in the
 // four lanes of Float4; on x86-64 CPUs with AVX2, Lanes8
-// (wide_contact_avx2.cpp) runs two blocks of the same colour in the eight
+// (wide_avx2.cpp) runs two blocks of the same colour in the eight
 // lanes of an AVX register. Two blocks of one colour touch no movable body in
 // common, so solving them together is solving them one after the other. Each
 // lane does the same IEEE operations (+, −, ×, comparisons, selects; no fused
@@ -21,14 +21,10 @@
 // on a CPU without it.
 #pragma once
 
-#include "body.hpp"
 #include "wide_contact.hpp"
+#include "wide_lanes.hpp"
 
 namespace i2d::detail {
-
-#define I2D_KERNEL inline __attribute__((always_inline))
-
-#define I2D_KERNEL inline __attribute__((always_inline))
 
 template <class V>
 struct WideVelocitiesT {
@@ -40,21 +36,6 @@ template <class V>
 struct WideArmsT {
     V rAx, rAy, rBx, rBy;
 };
-
-template <class V>
-struct WideBodyT {
-    V vx, vy, w, reserved;
-    V dpx, dpy, qc, qs;
-};
-
-template <class V, class M>
-I2D_KERNEL V maxv(V a, V b) {
-    return select(a < b, b, a);
-}
-template <class V, class M>
-I2D_KERNEL V clampv(V a, V lo, V hi) {
-    return select(a < lo, lo, select(a > hi, hi, a));
-}
 
 /// dot((v_B + ω_B × r_B) − (v_A + ω_A × r_A), d) for a direction (dx, dy),
 /// with ω × r = (−ω·r_y, ω·r_x) as i2d::cross(float, Vec2).

@@ -83,8 +83,8 @@ void fill(WorldState& w, unsigned seed, int n) {
 
 /// Restores the widest lanes the CPU offers when a test ends.
 struct LaneLimit {
-    explicit LaneLimit(int lanes) { limitWideContactLanes(lanes); }
-    ~LaneLimit() { limitWideContactLanes(8); }
+    explicit LaneLimit(int lanes) { limitWideLanes(lanes); }
+    ~LaneLimit() { limitWideLanes(8); }
 };
 
 void expectAgreement(int lanes) {
@@ -133,8 +133,8 @@ TEST(WideContact, AgreesBitForBitWithTheScalarRowsInFourLanes) { expectAgreement
 // Two blocks at a time in eight lanes where the CPU has AVX2 (41 rows are 11
 // blocks: five pairs and one block left to the four lanes).
 TEST(WideContact, AgreesBitForBitWithTheScalarRowsInEightLanes) {
-    limitWideContactLanes(8);
-    if (wideContactLanes() != 8) GTEST_SKIP() << "no AVX2 on this CPU (or a portable build)";
+    limitWideLanes(8);
+    if (wideLanes() != 8) GTEST_SKIP() << "no AVX2 on this CPU (or a portable build)";
     expectAgreement(8);
 }
 

@@ -10,6 +10,7 @@
 
 #include "joint_rows.hpp"
 #include "solver.hpp"
+#include "wide_contact.hpp"
 #include "wide_revolute.hpp"
 
 namespace {
@@ -96,7 +97,14 @@ void expectSame(Case& c, const char* what) {
     }
 }
 
-TEST(WideRevolute, AgreesBitForBitWithTheScalarRow) {
+/// Restores the widest lanes the CPU offers when a test ends.
+struct LaneLimit {
+    explicit LaneLimit(int lanes) { limitWideLanes(lanes); }
+    ~LaneLimit() { limitWideLanes(8); }
+};
+
+void expectAgreement(int lanes) {
+    const LaneLimit limit(lanes);
     for (unsigned seed = 1; seed <= 20; ++seed) {
         Case c = makeCase(seed, 37);  // not a multiple of four: the last block has empty lanes
         const int blocks = static_cast<int>(c.wide.wideRevolutes.size());
@@ -118,6 +126,16 @@ TEST(WideRevolute, AgreesBitForBitWithTheScalarRow) {
             expectSame(c, "solve");
         }
     }
+}
+
+TEST(WideRevolute, AgreesBitForBitWithTheScalarRowInFourLanes) { expectAgreement(4); }
+
+// Two blocks at a time in eight lanes where the CPU has AVX2 (37 rows are 10
+// blocks: five pairs).
+TEST(WideRevolute, AgreesBitForBitWithTheScalarRowInEightLanes) {
+    limitWideLanes(8);
+    if (wideLanes() != 8) GTEST_SKIP() << "no AVX2 on this CPU (or a portable build)";
+    expectAgreement(8);
 }
 
 }  // namespace

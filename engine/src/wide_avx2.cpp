@@ -1,10 +1,11 @@
-// The wide contact sweeps eight lanes at a time: two blocks of one colour in
-// an AVX register (wide_contact_kernel.hpp says why that is bit-identical to
-// four lanes and to the scalar rows). Compiled with -mavx2 when the engine is
-// built for x86-64 (engine/CMakeLists.txt) and called only when the CPU has
-// AVX2 (wideContactLanes in wide_contact.cpp); everything here that is
-// compiled for AVX2 is private to this file.
+// The wide contact and hinge sweeps eight lanes at a time: two blocks of one
+// colour in an AVX register (wide_contact_kernel.hpp says why that is
+// bit-identical to four lanes and to the scalar rows). Compiled with -mavx2
+// when the engine is built for x86-64 (engine/CMakeLists.txt) and called only
+// when the CPU has AVX2 (wideLanes in wide_contact.cpp); everything
+// here that is compiled for AVX2 is private to this file.
 #include "wide_contact_kernel.hpp"
+#include "wide_revolute_kernel.hpp"
 
 #if defined(I2D_AVX2_KERNEL) && defined(__AVX2__)
 #include <immintrin.h>
@@ -24,11 +25,16 @@ struct Mask8 {
 I2D_AVX Float8 operator+(Float8 a, Float8 b) { return {_mm256_add_ps(a.v, b.v)}; }
 I2D_AVX Float8 operator-(Float8 a, Float8 b) { return {_mm256_sub_ps(a.v, b.v)}; }
 I2D_AVX Float8 operator*(Float8 a, Float8 b) { return {_mm256_mul_ps(a.v, b.v)}; }
+I2D_AVX Float8 operator/(Float8 a, Float8 b) { return {_mm256_div_ps(a.v, b.v)}; }
 I2D_AVX Float8 operator-(Float8 a) { return {_mm256_xor_ps(a.v, _mm256_set1_ps(-0.0f))}; }
 I2D_AVX Mask8 operator<(Float8 a, Float8 b) { return {_mm256_cmp_ps(a.v, b.v, _CMP_LT_OQ)}; }
 I2D_AVX Mask8 operator>(Float8 a, Float8 b) { return {_mm256_cmp_ps(a.v, b.v, _CMP_GT_OQ)}; }
 /// a ≠ 0, NaN included, as SSE2's cmpneq and the scalar !=.
 I2D_AVX Mask8 nonZero(Float8 a) { return {_mm256_cmp_ps(a.v, _mm256_setzero_ps(), _CMP_NEQ_UQ)}; }
+/// b where a ≠ 0, else 0 (a division guarded against a singular lane).
+I2D_AVX Float8 whereNonZero(Float8 a, Float8 b) {
+    return {_mm256_and_ps(_mm256_cmp_ps(a.v, _mm256_setzero_ps(), _CMP_NEQ_UQ), b.v)};
+}
 I2D_AVX Mask8 operator&(Mask8 a, Mask8 b) { return {_mm256_and_ps(a.m, b.m)}; }
 /// a and not b.
 I2D_AVX Mask8 andNot(Mask8 a, Mask8 b) { return {_mm256_andnot_ps(b.m, a.m)}; }
@@ -46,13 +52,16 @@ I2D_AVX void store8(float* lo, float* hi, Float8 a) {
 }
 
 /// Two blocks of one colour in the eight lanes of Float8.
+template <class Block>
 struct Lanes8 {
     using V = Float8;
     using M = Mask8;
-    WideContactBlock* k0;
-    WideContactBlock* k1;
+    Block* k0;
+    Block* k1;
     I2D_AVX static V splat(float x) { return {_mm256_set1_ps(x)}; }
-    I2D_AVX V load(BlockField f) const { return load8(k0->*f, k1->*f); }
+    I2D_AVX V load(float (Block::*f)[4]) const { return load8(k0->*f, k1->*f); }
+    I2D_AVX void store(float (Block::*f)[4], V x) const { store8(k0->*f, k1->*f, x); }
+    /// A contact block's point j.
     I2D_AVX V load(int j, PointField f) const { return load8(k0->points[j].*f, k1->points[j].*f); }
     I2D_AVX void store(int j, PointField f, V x) const { store8(k0->points[j].*f, k1->points[j].*f, x); }
 
@@ -94,8 +103,8 @@ struct Lanes8 {
         scatterHalf(states, *k1, sideA, _mm256_extractf128_ps(b.vx.v, 1), _mm256_extractf128_ps(b.vy.v, 1),
                     _mm256_extractf128_ps(b.w.v, 1), _mm256_extractf128_ps(b.reserved.v, 1));
     }
-    I2D_AVX static void scatterHalf(BodyState* states, const WideContactBlock& k, bool sideA, __m128 r0, __m128 r1,
-                                    __m128 r2, __m128 r3) {
+    I2D_AVX static void scatterHalf(BodyState* states, const Block& k, bool sideA, __m128 r0, __m128 r1, __m128 r2,
+                                    __m128 r3) {
         _MM_TRANSPOSE4_PS(r0, r1, r2, r3);
         const __m128 rows[4] = {r0, r1, r2, r3};
         const int* index = sideA ? k.a : k.b;
@@ -111,13 +120,28 @@ struct Lanes8 {
 
 int warmStartWideContactsAvx2(WideContactBlock* blocks, BodyState* states, int first, int last) {
     int i = first;
-    for (; i + 1 < last; i += 2) warmStartBlock(Lanes8{blocks + i, blocks + i + 1}, states);
+    for (; i + 1 < last; i += 2) warmStartBlock(Lanes8<WideContactBlock>{blocks + i, blocks + i + 1}, states);
     return i;
 }
 
 int solveWideContactsAvx2(WideContactBlock* blocks, BodyState* states, const SweepParams& sp, int first, int last) {
     int i = first;
-    for (; i + 1 < last; i += 2) solveBlock(Lanes8{blocks + i, blocks + i + 1}, states, sp);
+    for (; i + 1 < last; i += 2) solveBlock(Lanes8<WideContactBlock>{blocks + i, blocks + i + 1}, states, sp);
+    return i;
+}
+
+int warmStartWideRevolutesAvx2(WideRevoluteBlock* blocks, BodyState* states, int first, int last, bool kept) {
+    int i = first;
+    for (; i + 1 < last; i += 2)
+        warmStartHingeBlock(Lanes8<WideRevoluteBlock>{blocks + i, blocks + i + 1}, states, kept);
+    return i;
+}
+
+int solveWideRevolutesAvx2(WideRevoluteBlock* blocks, BodyState* states, const HingeRates& rates, int first, int last,
+                           bool kept) {
+    int i = first;
+    for (; i + 1 < last; i += 2)
+        solveHingeBlock(Lanes8<WideRevoluteBlock>{blocks + i, blocks + i + 1}, states, rates, kept);
     return i;
 }
 
