@@ -90,6 +90,7 @@ void prepareContacts(WorldState& w, float h, bool soft) {
     SolverArrays& s = w.solver;
     s.deepContactCount.assign(s.states.size(), 0);
     s.rolling.clear();
+    s.deepRows.clear();
     bool anyDeep = false;
     // Each row goes straight to its place in colour order (solver.cpp coloured
     // the contacts and left each colour's first slot in colourOffsets).
@@ -135,6 +136,7 @@ void prepareContacts(WorldState& w, float h, bool soft) {
         for (int j = 0; j < cc.pointCount; ++j)
             cc.deepOverlap = cc.deepOverlap || ct.manifold.points[j].separation < -kDeepOverlap;
         if (cc.deepOverlap) {
+            s.deepRows.push_back(row);
             ++w.solver.deepContactCount[static_cast<std::size_t>(a)];
             ++w.solver.deepContactCount[static_cast<std::size_t>(b)];
             anyDeep = true;
@@ -171,6 +173,7 @@ void prepareContacts(WorldState& w, float h, bool soft) {
         }
     }
     s.anyDeepOverlap = anyDeep;
+    std::sort(s.deepRows.begin(), s.deepRows.end());  // the push sweeps them in row order
     if (anyDeep && !soft) sharePushAmongDeepContacts(w);
     // The push a point would ask for at its overlap: the soft step's bias
     // rate, or Baumgarte's β/Δt past the slop.

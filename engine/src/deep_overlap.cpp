@@ -172,15 +172,15 @@ void pushDeepOverlaps(WorldState& w) {
     const float cap = w.settings.maxPushSpeed;
     s.biasV.assign(s.states.size(), Vec2{});
     s.biasW.assign(s.states.size(), 0.0f);
-    for (ContactConstraint& cc : s.constraints)
+    for (int r : s.deepRows) {
+        ContactConstraint& cc = s.constraints[static_cast<std::size_t>(r)];
         for (int j = 0; j < cc.pointCount; ++j) cc.points[j].biasImpulse = 0.0f;
+    }
     const BodyState* states = s.states.data();
-    const int rows = static_cast<int>(s.constraints.size());
     for (int sweep = 0; sweep < kPushSweeps; ++sweep) {
         std::size_t nextSide = 0;
-        for (int r = 0; r < rows; ++r) {
-            ContactConstraint& cc = s.constraints[r];
-            if (!cc.deepOverlap) continue;
+        for (int r : s.deepRows) {  // ascending, as the rows
+            ContactConstraint& cc = s.constraints[static_cast<std::size_t>(r)];
             if (nextSide < s.sidePushes.size() && s.sidePushes[nextSide].row == r) {
                 // Pushed sideways (prepareDeepOverlaps): one row through the
                 // centres, on the two bodies' translation, until B has moved

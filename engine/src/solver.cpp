@@ -122,9 +122,7 @@ void colourContacts(WorldState& w) {
 /// block for the wide sweep; the overflow group stays scalar.
 void packContactColours(WorldState& w, bool soft) {
     SolverArrays& s = w.solver;
-    // Deep overlaps are pushed from the rows' impulses between the passes
-    // (deep_overlap.cpp): such a step keeps the scalar rows.
-    s.wideContactsActive = soft && s.rolling.empty() && !s.anyDeepOverlap && s.rowCount > 0;
+    s.wideContactsActive = soft && s.rolling.empty() && s.rowCount > 0;
     s.contactOverflowStart = 0;
     if (!s.wideContactsActive) {
         s.wideContacts.resizeForOverwrite(0);
@@ -151,6 +149,8 @@ void packContactColours(WorldState& w, bool soft) {
     s.wideContactColourStart[kColourCount] = blocks;
     s.contactOverflowStart = start;
     s.wideContacts.resizeForOverwrite(static_cast<std::size_t>(blocks));
+    // Only the deep overlaps' push (deep_overlap.cpp) asks where a row went.
+    if (s.anyDeepOverlap) s.wideLaneOfRow.resize(static_cast<std::size_t>(start));
     auto pack = [&](int b, int e) {
         for (int k = b; k < e; ++k)
             packWideContactBlock(s, k, blockRows[static_cast<std::size_t>(2 * k)],
@@ -410,6 +410,8 @@ void solve(WorldState& w, float dt) {
             for (int pass = 0; pass < kJointSolvePasses; ++pass) joints(SolvePass::soft_bias);
             contacts(SolvePass::soft_bias, h);
             if (s.anyDeepOverlap) {
+                // The push reads the load its rows carry (deep_overlap.cpp).
+                if (s.wideContactsActive) readWideNormalImpulses(s, s.deepRows);
                 pushDeepOverlaps(w);
                 dropNonFinitePush(s);
                 integratePositionsPushed(s, h, maxSpeed);

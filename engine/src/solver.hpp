@@ -45,6 +45,8 @@ struct SolverArrays {
     std::vector<std::uint32_t> bodyColours;  ///< per state: the joint colours its rows took (joint_solver.cpp)
     std::vector<int> deepContactCount;       ///< per state: contacts overlapping deeper than kDeepOverlap
     bool anyDeepOverlap = false;             ///< some row overlaps deeper than kDeepOverlap this step
+    std::vector<int> deepRows;               ///< the rows that do, ascending (contact_solver.cpp)
+    std::vector<int> wideLaneOfRow;          ///< per row of a wide block: block·4 + lane (wide_contact.cpp)
     std::vector<SidePush> sidePushes;        ///< deep rows pushed sideways, in row order (deep_overlap.cpp)
     std::vector<std::uint8_t> supported;     ///< per state: rests on something immovable (deep_overlap.cpp)
     std::vector<int> supportStart, supportAbove, supportQueue;  ///< deep_overlap.cpp's lists of what rests on what

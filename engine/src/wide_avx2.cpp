@@ -36,6 +36,7 @@ I2D_AVX Float8 whereNonZero(Float8 a, Float8 b) {
     return {_mm256_and_ps(_mm256_cmp_ps(a.v, _mm256_setzero_ps(), _CMP_NEQ_UQ), b.v)};
 }
 I2D_AVX Mask8 operator&(Mask8 a, Mask8 b) { return {_mm256_and_ps(a.m, b.m)}; }
+I2D_AVX Mask8 operator|(Mask8 a, Mask8 b) { return {_mm256_or_ps(a.m, b.m)}; }
 /// a and not b.
 I2D_AVX Mask8 andNot(Mask8 a, Mask8 b) { return {_mm256_andnot_ps(b.m, a.m)}; }
 /// The bits of yes where the mask holds, else of no (a mask lane is all ones or all zeros).

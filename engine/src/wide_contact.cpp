@@ -21,6 +21,7 @@ void packWideContactBlock(SolverArrays& s, int block, int start, int last) {
             k.a[lane] = used ? cc->a : zero;
             k.b[lane] = used ? cc->b : zero;
             k.row[lane] = used ? r : -1;
+            if (used && s.anyDeepOverlap) s.wideLaneOfRow[static_cast<std::size_t>(r)] = 4 * block + lane;
             k.nx[lane] = used ? cc->normal.x : 0.0f, k.ny[lane] = used ? cc->normal.y : 0.0f;
             k.friction[lane] = used ? cc->friction : 0.0f;
             k.tangentSpeed[lane] = used ? cc->tangentSpeed : 0.0f;
@@ -34,6 +35,7 @@ void packWideContactBlock(SolverArrays& s, int block, int start, int last) {
             k.together[lane] = used && cc->pointsTogether ? 1.0f : 0.0f;
             k.roundA[lane] = used && cc->roundA ? 1.0f : 0.0f;
             k.roundB[lane] = used && cc->roundB ? 1.0f : 0.0f;
+            k.deep[lane] = used && cc->deepOverlap ? 1.0f : 0.0f;
             for (int j = 0; j < 2; ++j) {
                 WideContactPoint& p = k.points[j];
                 const bool present = used && j < cc->pointCount;
@@ -119,6 +121,16 @@ void writeBackWideContacts(SolverArrays& s, int firstBlock, int lastBlock) {
                 cp.maxNormalImpulse = k.points[j].maxNormalImpulse[lane];
             }
         }
+    }
+}
+
+void readWideNormalImpulses(SolverArrays& s, const std::vector<int>& rows) {
+    for (int r : rows) {
+        if (r >= s.contactOverflowStart) break;  // ascending: the rest are scalar rows
+        const int slot = s.wideLaneOfRow[static_cast<std::size_t>(r)];
+        const WideContactBlock& k = s.wideContacts[static_cast<std::size_t>(slot / 4)];
+        ContactConstraint& cc = s.constraints[static_cast<std::size_t>(r)];
+        for (int j = 0; j < cc.pointCount; ++j) cc.points[j].normalImpulse = k.points[j].normalImpulse[slot % 4];
     }
 }
 

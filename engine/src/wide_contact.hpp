@@ -5,9 +5,10 @@
 // order, its branches turned into selects, so the results are bit-identical
 // (tests/unit/test_wide_contact.cpp). Used in soft_step for the rows of the
 // coloured groups; the overflow group (rows that share bodies), split and
-// baumgarte modes, and steps with rolling resistance or with overlaps deeper
-// than kDeepOverlap (pushed apart from the rows between passes,
-// deep_overlap.cpp) keep the scalar rows.
+// baumgarte modes, and steps with rolling resistance keep the scalar rows. A
+// row overlapping deeper than kDeepOverlap is rigid in its block's push pass,
+// as in the scalar row; the push that moves it apart (deep_overlap.cpp) reads
+// its load from the block (readWideNormalImpulses).
 #pragma once
 
 #include <vector>
@@ -38,6 +39,7 @@ struct WideContactBlock {
     float biasRate[4], massScale[4], impulseScale[4], maxPush[4];
     float pairScale[4];                       ///< the rows' pairScale (1 unless the points are solved together)
     float together[4], roundA[4], roundB[4];  ///< the rows' flags as 1 or 0
+    float deep[4];  ///< 1 where the row overlaps deeper than kDeepOverlap (rigid in the soft_bias pass)
     WideContactPoint points[2];
 };
 
@@ -59,6 +61,9 @@ void writeBackWideContacts(SolverArrays& s, int firstBlock, int lastBlock);
 int wideLanes();
 /// At most this many lanes (4 or 8) from now on: for tests comparing the two.
 void limitWideLanes(int lanes);
+/// The normal impulses accumulated so far of `rows` (ascending) from their
+/// blocks into the rows, for the push of deep overlaps (deep_overlap.cpp).
+void readWideNormalImpulses(SolverArrays& s, const std::vector<int>& rows);
 /// Drops the accumulated impulses of every lane on a body marked bad.
 void dropWideContactImpulses(SolverArrays& s, const std::vector<char>& bad);
 

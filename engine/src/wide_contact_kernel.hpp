@@ -123,11 +123,13 @@ I2D_KERNEL void solveBlock(const L& k, BodyState* states, const SweepParams& sp)
         const M speculative = sep > zero;
         skip[j] = sp.leaveImpacts ? speculative & (relativeSpeed(v, r, nx, ny) < minusImpactSpeed) : M{};
         if (sp.softBias) {
-            bias[j] = select(
-                speculative, sep * invH,
-                maxv<V, M>(k.load(&WideContactBlock::biasRate) * sep, -k.load(&WideContactBlock::maxPush)));
-            ms[j] = select(speculative, one, k.load(&WideContactBlock::massScale));
-            is[j] = select(speculative, zero, k.load(&WideContactBlock::impulseScale));
+            // A deep overlap's row is rigid here (pushed apart on
+            // pseudo-velocities instead, deep_overlap.cpp): no bias, full mass.
+            const M rigid = speculative | nonZero(k.load(&WideContactBlock::deep));
+            const V soft = maxv<V, M>(k.load(&WideContactBlock::biasRate) * sep, -k.load(&WideContactBlock::maxPush));
+            bias[j] = select(speculative, sep * invH, select(rigid, zero, soft));
+            ms[j] = select(rigid, one, k.load(&WideContactBlock::massScale));
+            is[j] = select(rigid, zero, k.load(&WideContactBlock::impulseScale));
         } else {
             bias[j] = select(speculative, sep * invH, zero);
             ms[j] = one;
