@@ -1,7 +1,8 @@
 // Contact rows solved four manifolds at a time (wide_contact.cpp) against the
 // scalar rows (contact_solver.cpp) on the same random rows: every regime a
 // row can be in — one or two points, points together or one after the other,
-// speculative, pushed at the cap, left to the impact law in the last relax,
+// speculative, pushed at the cap, deep (rigid in the push pass), left to the
+// impact law in the last relax,
 // round sides, a side that does not move — must give the same velocities and
 // impulses bit for bit, in every soft_step pass (the sanitizer build runs the
 // portable path; on CPUs with AVX2 the eight-lane path is checked as well).
@@ -57,7 +58,7 @@ void fill(WorldState& w, unsigned seed, int n) {
         cc.impulseScale = soft.impulseScale;
         cc.maxPush = unit(rng) < 0.3f ? 0.1f : 3.0f;  // some pushes reach their cap
         cc.tangentSpeed = unit(rng) < 0.2f ? u(rng) : 0.0f;
-        cc.deepOverlap = false;
+        cc.deepOverlap = unit(rng) < 0.15f;  // rigid in the push pass (deep_overlap.cpp pushes it)
         cc.pointCount = static_cast<std::uint8_t>(unit(rng) < 0.3f ? 1 : 2);
         cc.pointsTogether = cc.pointCount == 2 && unit(rng) < 0.7f;
         cc.pairScale = cc.pointsTogether ? 0.5f + 0.5f * unit(rng) : 1.0f;
