@@ -58,16 +58,13 @@ namespace {
 
 constexpr int kColourCount = 24;  ///< colours tried before the overflow group
 
-/// Contact rows, joints and awake bodies from which a step shares its solve
-/// with the task system's workers: below, a colour's sweep takes a few
-/// microseconds and handing it out costs more than it saves (joint_grid,
-/// 2,600 items, and rain1000, 3,000, ran slower on two workers than on one);
-/// pyramid100 (15,000) gained a fifth. Then the bodies per chunk of an
-/// integration stage, and the contact blocks per chunk when they are packed
-/// or written back: large, so that few cache lines are written by two workers.
-constexpr int kParallelWork = 4096;
+/// The bodies per chunk of an integration stage, and the contact blocks per
+/// chunk when they are packed, prepared or written back: large, so that few
+/// cache lines are written by two workers (kParallelWork, stage_runner.hpp,
+/// decides whether a step's solve is shared at all).
 constexpr int kBodyGrain = 512;
 constexpr int kPackGrain = 32;
+constexpr int kPrepareGrain = 16;
 
 /// Colours the rows of this step's active contacts (greedy, in activeContacts
 /// order, overflow group last) and leaves in colourOffsets the first row of
@@ -83,13 +80,22 @@ void colourContacts(WorldState& w) {
     s.colourOffsets.assign(kColourCount + 1, 0);
     s.contactColours.resize(count);
     int rows = 0;
+    bool anyDeep = false, anyRolling = false;
     for (std::size_t i = 0; i < count; ++i) {
         RowBodies rb;
-        if (!contactRowBodies(w, w.contacts[w.activeContacts[i]], zeroState, rb)) {
+        const int contact = w.activeContacts[i];
+        const Contact& ct = w.contacts[contact];
+        if (!contactRowBodies(w, ct, zeroState, rb)) {
             s.contactColours[i] = kNoRow;
             continue;
         }
         ++rows;
+        // What decides the rows' path before any is prepared: the same tests
+        // as prepareContacts' and prepareRollingResistance's.
+        for (int j = 0; j < ct.manifold.pointCount; ++j)
+            anyDeep = anyDeep || ct.manifold.points[j].separation < -kDeepOverlap;
+        const ContactSurface* surface = contactSurface(w, contact);
+        if (surface && surface->rollingResistance > 0.0f && !(rb.invIA + rb.invIB <= 0.0f)) anyRolling = true;
         const bool moveA = static_cast<std::size_t>(rb.a) < bodyCount && (rb.invMassA != 0.0f || rb.invIA != 0.0f);
         const bool moveB = static_cast<std::size_t>(rb.b) < bodyCount && (rb.invMassB != 0.0f || rb.invIB != 0.0f);
         const std::size_t wa = static_cast<std::size_t>(rb.a) / 64, wb = static_cast<std::size_t>(rb.b) / 64;
@@ -115,25 +121,14 @@ void colourContacts(WorldState& w) {
         offset += c;
     }
     s.rowCount = rows;
+    s.anyDeepOverlap = anyDeep;
+    s.anyRollingRow = anyRolling;
 }
 
-/// soft_step without rolling resistance: the rows of each colour (their ends
-/// are in colourOffsets once prepareContacts placed them) packed four to a
-/// block for the wide sweep; the overflow group stays scalar.
-void packContactColours(WorldState& w, bool soft) {
-    SolverArrays& s = w.solver;
-    // Deep overlaps are pushed from the rows' impulses between the passes
-    // (deep_overlap.cpp): such a step keeps the scalar rows.
-    s.wideContactsActive = soft && s.rolling.empty() && !s.anyDeepOverlap && s.rowCount > 0;
-    s.contactOverflowStart = 0;
-    if (!s.wideContactsActive) {
-        s.wideContacts.resizeForOverwrite(0);
-        return;
-    }
-    // One allocation, sized first: growing block by block made a fresh
-    // allocation, page faults and a copy per doubling, every step. Each
-    // block's first row and its colour's end, then the blocks packed on
-    // every worker (each is written alone).
+/// The wide blocks of the coloured rows (colourOffsets[c] is colour c's
+/// end): each block's first row and its colour's end in wideBlockRows, each
+/// colour's first block; returns the block count.
+int layoutWideBlocks(SolverArrays& s) {
     std::vector<int>& blockRows = s.wideBlockRows;
     blockRows.clear();
     s.wideContactColourStart.resize(kColourCount + 1);
@@ -150,13 +145,70 @@ void packContactColours(WorldState& w, bool soft) {
     const int blocks = static_cast<int>(blockRows.size() / 2);
     s.wideContactColourStart[kColourCount] = blocks;
     s.contactOverflowStart = start;
+    // One allocation, sized first: growing block by block made a fresh
+    // allocation, page faults and a copy per doubling, every step.
     s.wideContacts.resizeForOverwrite(static_cast<std::size_t>(blocks));
-    auto pack = [&](int b, int e) {
+    return blocks;
+}
+
+/// The contact rows of this step (after colourContacts). soft_step without
+/// rolling resistance or deep overlaps solves the coloured rows four at a
+/// time: with closed-form impacts each block is prepared straight from its
+/// contacts on every worker, and only the overflow group gets scalar rows;
+/// with velocity-bias impacts (whose restitution pass reads the rows) the
+/// rows are prepared and then packed. Otherwise every row stays scalar.
+void prepareContactRows(WorldState& w, float h, bool soft) {
+    SolverArrays& s = w.solver;
+    s.wideContactsActive = soft && !s.anyRollingRow && !s.anyDeepOverlap && s.rowCount > 0;
+    s.wideContactsOnly = s.wideContactsActive && w.settings.impactModel == ImpactModel::closed_form;
+    s.contactOverflowStart = 0;
+    if (!s.wideContactsOnly) {
+        prepareContacts(w, h, soft);
+        if (!s.wideContactsActive) {
+            s.wideContacts.resizeForOverwrite(0);
+            return;
+        }
+        const int blocks = layoutWideBlocks(s);
+        const std::vector<int>& blockRows = s.wideBlockRows;
+        auto pack = [&](int b, int e) {
+            for (int k = b; k < e; ++k)
+                packWideContactBlock(s, k, blockRows[static_cast<std::size_t>(2 * k)],
+                                     blockRows[static_cast<std::size_t>(2 * k + 1)]);
+        };
+        w.runner.run(blocks, kPackGrain, pack);
+        return;
+    }
+    // Each row's contact at its place in colour order (the counting sort
+    // prepareContacts does while it writes the rows).
+    s.rowContacts.resizeForOverwrite(static_cast<std::size_t>(s.rowCount));
+    const std::size_t activeCount = w.activeContacts.size();
+    for (std::size_t k = 0; k < activeCount; ++k) {
+        const std::uint8_t colour = s.contactColours[k];
+        if (colour == kNoRow) continue;
+        s.rowContacts[static_cast<std::size_t>(s.colourOffsets[colour]++)] = w.activeContacts[k];
+    }
+    s.rolling.clear();
+    const RowContext x = makeRowContext(w, h, soft);
+    const int blocks = layoutWideBlocks(s);
+    // The overflow group's scalar rows; they are all the rows there are, so
+    // the scalar sweeps start at 0.
+    const int overflow = s.contactOverflowStart;
+    s.contactOverflowStart = 0;
+    s.constraints.resizeForOverwrite(static_cast<std::size_t>(s.rowCount - overflow));
+    for (int r = overflow; r < s.rowCount; ++r) {
+        ContactConstraint& cc = s.constraints[static_cast<std::size_t>(r - overflow)];
+        prepareContactRow(w, x, s.rowContacts[static_cast<std::size_t>(r)], cc);
+        finishContactRow(x, w.settings.penetrationSlop, cc);
+    }
+    const std::vector<int>& blockRows = s.wideBlockRows;
+    const int* rowContacts = s.rowContacts.begin();
+    auto prepare = [&](int b, int e) {
         for (int k = b; k < e; ++k)
-            packWideContactBlock(s, k, blockRows[static_cast<std::size_t>(2 * k)],
-                                 blockRows[static_cast<std::size_t>(2 * k + 1)]);
+            prepareWideContactBlock(w, x, rowContacts, s.wideContacts[static_cast<std::size_t>(k)],
+                                    blockRows[static_cast<std::size_t>(2 * k)],
+                                    blockRows[static_cast<std::size_t>(2 * k + 1)]);
     };
-    w.runner.run(blocks, kPackGrain, pack);
+    w.runner.run(blocks, kPrepareGrain, prepare);
 }
 
 // ---------------------------------------------------------------------------
@@ -351,18 +403,11 @@ void solve(WorldState& w, float dt) {
     gatherBodies(w, h);
     const std::size_t n = s.stateBodies.size();
     colourContacts(w);
-    // The step's work is shared with the task system's workers when it is
-    // large enough to gain from it (kParallelWork); the result is the same.
-    const bool parallel = w.tasks != nullptr && w.tasks->workerCount() > 1 &&
-                          s.rowCount + w.joints.count + static_cast<int>(n) >= kParallelWork;
-    w.runner.begin(parallel ? w.tasks : nullptr);
-    struct EndStages {
-        StageRunner& runner;
-        ~EndStages() { runner.end(); }
-    } endStages{w.runner};
+    // The solve is shared with the task system's workers when it is large
+    // enough to gain from it (kParallelWork); the result is the same.
+    w.runner.share(s.rowCount + w.joints.count + static_cast<int>(n) >= kParallelWork);
     s.positionUpdates = 0;
-    prepareContacts(w, h, soft);
-    packContactColours(w, soft);
+    prepareContactRows(w, h, soft);
     prepareJoints(w, dt);
     w.profile.prepare = msSince(prepareStart);
     // Joint stiffness capped at 1/4 of the substep rate, so jointHertz 60 holds
@@ -424,7 +469,10 @@ void solve(WorldState& w, float dt) {
             joints(SolvePass::soft_relax);
             contacts(i + 1 == substeps ? SolvePass::soft_relax_last : SolvePass::soft_relax, h);
         }
-        if (s.wideContactsActive) {  // restitution and the store read the rows
+        if (s.wideContactsOnly) {  // blocks without rows store into their contacts
+            auto store = [&](int b, int e) { storeWideContacts(s, w.contacts, b, e); };
+            w.runner.run(static_cast<int>(s.wideContacts.size()), kPackGrain, store);
+        } else if (s.wideContactsActive) {  // restitution and the store read the rows
             auto back = [&](int b, int e) { writeBackWideContacts(s, b, e); };
             w.runner.run(static_cast<int>(s.wideContacts.size()), kPackGrain, back);
         }
@@ -507,11 +555,13 @@ void releaseLargeStepArrays(WorldState& w) {
     releaseIfLarge(s.biasW);
     releaseIfLarge(s.constraints);
     releaseIfLarge(s.wideContacts);
+    releaseIfLarge(s.rowContacts);
     releaseIfLarge(s.contactColours);
     releaseIfLarge(s.colourBits);
     releaseIfLarge(s.deepContactCount);
     releaseIfLarge(w.activeContacts);
     releaseIfLarge(w.gatherScratch);
+    releaseIfLarge(w.collideUpdates);
     releaseIfLarge(w.impactChanged);
     releaseIfLarge(w.islands.unionParent);
 }
@@ -536,6 +586,18 @@ void stepWorld(WorldState& w, float dt) {
     updatePairs(w);
     profile.pairs = msSince(t);
 
+    // The helpers of a large step start before the narrowphase and stay
+    // until the solve ends: one hand-over per step. Started for the solve
+    // alone, they woke too late to share a narrowphase of half a millisecond.
+    const int work = w.contacts.count + w.joints.count + static_cast<int>(w.islands.awakeBodies.size());
+    const bool parallel = w.tasks != nullptr && w.tasks->workerCount() > 1 && work >= kParallelWork;
+    w.runner.begin(parallel ? w.tasks : nullptr);
+    struct EndStages {
+        StageRunner& runner;
+        void end() { runner.end(); }
+        ~EndStages() { runner.end(); }
+    } stages{w.runner};
+
     t = Clock::now();
     collide(w);
     profile.collide = msSince(t);
@@ -546,6 +608,7 @@ void stepWorld(WorldState& w, float dt) {
 
     t = Clock::now();
     solve(w, dt);
+    stages.end();
     profile.solve = msSince(t);
 
     t = Clock::now();

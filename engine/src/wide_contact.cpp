@@ -8,46 +8,85 @@
 
 #include "solver.hpp"
 #include "wide_body.hpp"
+#include "world_state.hpp"
 
 namespace i2d::detail {
 
+namespace {
+
+/// Lane `lane` of block k from row cc (null: an empty lane), every field written.
+inline void packLane(WideContactBlock& k, int lane, const ContactConstraint* cc, int row, int zero) {
+    const bool used = cc != nullptr;
+    k.a[lane] = used ? cc->a : zero;
+    k.b[lane] = used ? cc->b : zero;
+    k.row[lane] = used ? row : -1;
+    k.contact[lane] = used ? cc->contact : -1;
+    k.nx[lane] = used ? cc->normal.x : 0.0f, k.ny[lane] = used ? cc->normal.y : 0.0f;
+    k.friction[lane] = used ? cc->friction : 0.0f;
+    k.tangentSpeed[lane] = used ? cc->tangentSpeed : 0.0f;
+    k.mA[lane] = used ? cc->invMassA : 0.0f, k.iA[lane] = used ? cc->invIA : 0.0f;
+    k.mB[lane] = used ? cc->invMassB : 0.0f, k.iB[lane] = used ? cc->invIB : 0.0f;
+    k.biasRate[lane] = used ? cc->biasRate : 0.0f;
+    k.massScale[lane] = used ? cc->massScale : 1.0f;
+    k.impulseScale[lane] = used ? cc->impulseScale : 0.0f;
+    k.maxPush[lane] = used ? cc->maxPush : 0.0f;
+    k.pairScale[lane] = used ? cc->pairScale : 1.0f;
+    k.together[lane] = used && cc->pointsTogether ? 1.0f : 0.0f;
+    k.roundA[lane] = used && cc->roundA ? 1.0f : 0.0f;
+    k.roundB[lane] = used && cc->roundB ? 1.0f : 0.0f;
+    for (int j = 0; j < 2; ++j) {
+        WideContactPoint& p = k.points[j];
+        const bool present = used && j < cc->pointCount;
+        const ContactPointConstraint* cp = present ? &cc->points[j] : nullptr;
+        p.rAx[lane] = present ? cp->rA.x : 0.0f, p.rAy[lane] = present ? cp->rA.y : 0.0f;
+        p.rBx[lane] = present ? cp->rB.x : 0.0f, p.rBy[lane] = present ? cp->rB.y : 0.0f;
+        p.adjustedSeparation[lane] = present ? cp->adjustedSeparation : 0.0f;
+        p.normalMass[lane] = present ? cp->normalMass : 0.0f;
+        p.tangentMass[lane] = present ? cp->tangentMass : 0.0f;
+        p.normalImpulse[lane] = present ? cp->normalImpulse : 0.0f;
+        p.tangentImpulse[lane] = present ? cp->tangentImpulse : 0.0f;
+        p.maxNormalImpulse[lane] = present ? cp->maxNormalImpulse : 0.0f;
+        p.present[lane] = present ? 1.0f : 0.0f;
+    }
+}
+
+}  // namespace
+
 void packWideContactBlock(SolverArrays& s, int block, int start, int last) {
     const int zero = static_cast<int>(s.states.size()) - 1;
-    {
-        WideContactBlock& k = s.wideContacts[static_cast<std::size_t>(block)];
+    WideContactBlock& k = s.wideContacts[static_cast<std::size_t>(block)];
+    for (int lane = 0; lane < 4; ++lane) {
+        const int r = start + lane;
+        packLane(k, lane, r < last ? &s.constraints[static_cast<std::size_t>(r)] : nullptr, r, zero);
+    }
+}
+
+void prepareWideContactBlock(const WorldState& w, const RowContext& x, const int* rowContacts, WideContactBlock& k,
+                             int start, int last) {
+    for (int lane = 0; lane < 4; ++lane) {
+        const int r = start + lane;
+        if (r >= last) {
+            packLane(k, lane, nullptr, -1, x.zeroState);
+            continue;
+        }
+        // The scalar row's own preparation, on the stack: the lane holds
+        // exactly what packing that row would have given.
+        ContactConstraint cc;
+        prepareContactRow(w, x, rowContacts[r], cc);
+        finishContactRow(x, w.settings.penetrationSlop, cc);
+        packLane(k, lane, &cc, -1, x.zeroState);
+    }
+}
+
+void storeWideContacts(SolverArrays& s, SlotArray<Contact>& contacts, int firstBlock, int lastBlock) {
+    for (int i = firstBlock; i < lastBlock; ++i) {
+        const WideContactBlock& k = s.wideContacts[static_cast<std::size_t>(i)];
         for (int lane = 0; lane < 4; ++lane) {
-            const int r = start + lane;
-            const bool used = r < last;
-            const ContactConstraint* cc = used ? &s.constraints[static_cast<std::size_t>(r)] : nullptr;
-            k.a[lane] = used ? cc->a : zero;
-            k.b[lane] = used ? cc->b : zero;
-            k.row[lane] = used ? r : -1;
-            k.nx[lane] = used ? cc->normal.x : 0.0f, k.ny[lane] = used ? cc->normal.y : 0.0f;
-            k.friction[lane] = used ? cc->friction : 0.0f;
-            k.tangentSpeed[lane] = used ? cc->tangentSpeed : 0.0f;
-            k.mA[lane] = used ? cc->invMassA : 0.0f, k.iA[lane] = used ? cc->invIA : 0.0f;
-            k.mB[lane] = used ? cc->invMassB : 0.0f, k.iB[lane] = used ? cc->invIB : 0.0f;
-            k.biasRate[lane] = used ? cc->biasRate : 0.0f;
-            k.massScale[lane] = used ? cc->massScale : 1.0f;
-            k.impulseScale[lane] = used ? cc->impulseScale : 0.0f;
-            k.maxPush[lane] = used ? cc->maxPush : 0.0f;
-            k.pairScale[lane] = used ? cc->pairScale : 1.0f;
-            k.together[lane] = used && cc->pointsTogether ? 1.0f : 0.0f;
-            k.roundA[lane] = used && cc->roundA ? 1.0f : 0.0f;
-            k.roundB[lane] = used && cc->roundB ? 1.0f : 0.0f;
-            for (int j = 0; j < 2; ++j) {
-                WideContactPoint& p = k.points[j];
-                const bool present = used && j < cc->pointCount;
-                const ContactPointConstraint* cp = present ? &cc->points[j] : nullptr;
-                p.rAx[lane] = present ? cp->rA.x : 0.0f, p.rAy[lane] = present ? cp->rA.y : 0.0f;
-                p.rBx[lane] = present ? cp->rB.x : 0.0f, p.rBy[lane] = present ? cp->rB.y : 0.0f;
-                p.adjustedSeparation[lane] = present ? cp->adjustedSeparation : 0.0f;
-                p.normalMass[lane] = present ? cp->normalMass : 0.0f;
-                p.tangentMass[lane] = present ? cp->tangentMass : 0.0f;
-                p.normalImpulse[lane] = present ? cp->normalImpulse : 0.0f;
-                p.tangentImpulse[lane] = present ? cp->tangentImpulse : 0.0f;
-                p.maxNormalImpulse[lane] = present ? cp->maxNormalImpulse : 0.0f;
-                p.present[lane] = present ? 1.0f : 0.0f;
+            if (k.contact[lane] < 0) continue;
+            Contact& ct = contacts[k.contact[lane]];
+            for (int j = 0; j < ct.manifold.pointCount; ++j) {
+                ct.normalImpulse[j] = k.points[j].normalImpulse[lane];
+                ct.tangentImpulse[j] = k.points[j].tangentImpulse[lane];
             }
         }
     }

@@ -18,6 +18,7 @@
 namespace i2d::detail {
 
 struct SolverArrays;
+struct WorldState;
 
 /// One of the two points of four manifolds.
 struct WideContactPoint {
@@ -31,7 +32,8 @@ struct WideContactPoint {
 /// both sides with zero masses and no points.
 struct WideContactBlock {
     int a[4], b[4];  ///< solver state indices
-    int row[4];      ///< the row in SolverArrays::constraints, −1 for an empty lane
+    int row[4];      ///< the row in SolverArrays::constraints, −1 for an empty lane or one prepared without a row
+    int contact[4];  ///< the contact slot, −1 for an empty lane
     float nx[4], ny[4];
     float friction[4], tangentSpeed[4];
     float mA[4], iA[4], mB[4], iB[4];
@@ -45,6 +47,15 @@ struct WideContactBlock {
 /// (of one colour, which ends at `last`) into block `block` of
 /// s.wideContacts (sized by the caller), every field written.
 void packWideContactBlock(SolverArrays& s, int block, int start, int last);
+/// Prepares block k straight from the contacts of rows [start, min(start + 4, last)), rowContacts[r]
+/// being row r's contact slot, with no scalar row (row −1): the lanes are
+/// what packWideContactBlock makes of the rows prepareContacts writes.
+/// Writes k only, so blocks may be prepared on any worker.
+void prepareWideContactBlock(const WorldState& w, const RowContext& x, const int* rowContacts, WideContactBlock& k,
+                             int start, int last);
+/// The accumulated impulses of blocks [firstBlock, lastBlock) into their
+/// contacts for the next step's warm start (the store of blocks without rows).
+void storeWideContacts(SolverArrays& s, SlotArray<Contact>& contacts, int firstBlock, int lastBlock);
 void warmStartWideContacts(SolverArrays& s, int firstBlock, int lastBlock);
 /// One sweep of blocks [firstBlock, lastBlock) in a soft_step pass: soft_bias,
 /// soft_relax or soft_relax_last (`leaveImpacts`: the last relax with the
