@@ -106,7 +106,9 @@ Manifold computeManifold(const WorldState& w, const Contact& c) {
 }
 
 /// What the narrowphase found for one contact (updateManifold).
-enum class Update : std::uint8_t { parted, apart, touching };
+/// `kept`: touching as before and no hit to report, so applyUpdate has
+/// nothing to do (most contacts of a resting pile; it need not read them again).
+enum class Update : std::uint8_t { parted, apart, touching, kept };
 
 /// The manifold part of a contact's update: the new manifold (kept or
 /// computed), seam ghosts dropped, the pre-solve callback, the impulses
@@ -163,6 +165,7 @@ Update updateManifold(WorldState& w, int c) {
     } else if (m.pointCount == 0) {
         ct.framed = false;  // switched off by the pre-solve callback
     }
+    if (touching && ct.touching && !ct.enableHitEvents) return Update::kept;
     return touching ? Update::touching : Update::apart;
 }
 
@@ -170,6 +173,7 @@ Update updateManifold(WorldState& w, int c) {
 /// destroys a contact whose boxes parted (false), reports hits, begin and
 /// end events, and wakes what a new touch reaches.
 bool applyUpdate(WorldState& w, int c, Update update) {
+    if (update == Update::kept) return true;
     if (update == Update::parted) {
         destroyContact(w, c, true);
         return false;

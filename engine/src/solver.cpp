@@ -64,7 +64,7 @@ constexpr int kColourCount = 24;  ///< colours tried before the overflow group
 /// decides whether a step's solve is shared at all).
 constexpr int kBodyGrain = 512;
 constexpr int kPackGrain = 32;
-constexpr int kPrepareGrain = 16;
+constexpr int kPrepareGrain = 128;  ///< contacts per chunk when rows are prepared
 
 /// Colours the rows of this step's active contacts (greedy, in activeContacts
 /// order, overflow group last) and leaves in colourOffsets the first row of
@@ -125,17 +125,17 @@ void colourContacts(WorldState& w) {
     s.anyRollingRow = anyRolling;
 }
 
-/// The wide blocks of the coloured rows (colourOffsets[c] is colour c's
-/// end): each block's first row and its colour's end in wideBlockRows, each
+/// The wide blocks of the coloured rows, colour c's rows ending at ends[c]:
+/// each block's first row and its colour's end in wideBlockRows, each
 /// colour's first block; returns the block count.
-int layoutWideBlocks(SolverArrays& s) {
+int layoutWideBlocks(SolverArrays& s, const int* ends) {
     std::vector<int>& blockRows = s.wideBlockRows;
     blockRows.clear();
     s.wideContactColourStart.resize(kColourCount + 1);
     int start = 0;
     for (int c = 0; c < kColourCount; ++c) {
         s.wideContactColourStart[static_cast<std::size_t>(c)] = static_cast<int>(blockRows.size() / 2);
-        const int end = s.colourOffsets[static_cast<std::size_t>(c)];
+        const int end = ends[c];
         for (int row = start; row < end; row += 4) {
             blockRows.push_back(row);
             blockRows.push_back(end);
@@ -153,22 +153,22 @@ int layoutWideBlocks(SolverArrays& s) {
 
 /// The contact rows of this step (after colourContacts). soft_step without
 /// rolling resistance or deep overlaps solves the coloured rows four at a
-/// time: with closed-form impacts each block is prepared straight from its
-/// contacts on every worker, and only the overflow group gets scalar rows;
-/// with velocity-bias impacts (whose restitution pass reads the rows) the
-/// rows are prepared and then packed. Otherwise every row stays scalar.
+/// time: with closed-form impacts each row is prepared straight into its
+/// lane on every worker, and only the overflow group gets scalar rows; with
+/// velocity-bias impacts (whose restitution pass reads the rows) the rows
+/// are prepared and then packed. Otherwise every row stays scalar.
 void prepareContactRows(WorldState& w, float h, bool soft) {
     SolverArrays& s = w.solver;
     s.wideContactsActive = soft && !s.anyRollingRow && !s.anyDeepOverlap && s.rowCount > 0;
     s.wideContactsOnly = s.wideContactsActive && w.settings.impactModel == ImpactModel::closed_form;
     s.contactOverflowStart = 0;
     if (!s.wideContactsOnly) {
-        prepareContacts(w, h, soft);
+        prepareContacts(w, h, soft);  // leaves each colour's end in colourOffsets
         if (!s.wideContactsActive) {
             s.wideContacts.resizeForOverwrite(0);
             return;
         }
-        const int blocks = layoutWideBlocks(s);
+        const int blocks = layoutWideBlocks(s, s.colourOffsets.data());
         const std::vector<int>& blockRows = s.wideBlockRows;
         auto pack = [&](int b, int e) {
             for (int k = b; k < e; ++k)
@@ -178,37 +178,55 @@ void prepareContactRows(WorldState& w, float h, bool soft) {
         w.runner.run(blocks, kPackGrain, pack);
         return;
     }
-    // Each row's contact at its place in colour order (the counting sort
-    // prepareContacts does while it writes the rows).
-    s.rowContacts.resizeForOverwrite(static_cast<std::size_t>(s.rowCount));
+    // colourOffsets holds each colour's first row, so the next colour's is its end.
+    layoutWideBlocks(s, s.colourOffsets.data() + 1);
+    const int overflow = s.contactOverflowStart;
+    s.contactOverflowStart = 0;  // the scalar rows are the overflow group's alone
+    s.rolling.clear();
+    // Each active contact's row, as prepareContacts places them (a stable
+    // counting sort by colour), -1 without one.
+    std::vector<int>& begin = s.colourBegin;
+    begin.assign(s.colourOffsets.begin(), s.colourOffsets.end());
     const std::size_t activeCount = w.activeContacts.size();
+    s.rowContacts.resizeForOverwrite(activeCount);
     for (std::size_t k = 0; k < activeCount; ++k) {
         const std::uint8_t colour = s.contactColours[k];
-        if (colour == kNoRow) continue;
-        s.rowContacts[static_cast<std::size_t>(s.colourOffsets[colour]++)] = w.activeContacts[k];
+        s.rowContacts[k] = colour == kNoRow ? -1 : s.colourOffsets[colour]++;
     }
-    s.rolling.clear();
-    const RowContext x = makeRowContext(w, h, soft);
-    const int blocks = layoutWideBlocks(s);
-    // The overflow group's scalar rows; they are all the rows there are, so
-    // the scalar sweeps start at 0.
-    const int overflow = s.contactOverflowStart;
-    s.contactOverflowStart = 0;
     s.constraints.resizeForOverwrite(static_cast<std::size_t>(s.rowCount - overflow));
-    for (int r = overflow; r < s.rowCount; ++r) {
-        ContactConstraint& cc = s.constraints[static_cast<std::size_t>(r - overflow)];
-        prepareContactRow(w, x, s.rowContacts[static_cast<std::size_t>(r)], cc);
-        finishContactRow(x, w.settings.penetrationSlop, cc);
-    }
-    const std::vector<int>& blockRows = s.wideBlockRows;
-    const int* rowContacts = s.rowContacts.begin();
-    auto prepare = [&](int b, int e) {
-        for (int k = b; k < e; ++k)
-            prepareWideContactBlock(w, x, rowContacts, s.wideContacts[static_cast<std::size_t>(k)],
-                                    blockRows[static_cast<std::size_t>(2 * k)],
-                                    blockRows[static_cast<std::size_t>(2 * k + 1)]);
+    // Contact by contact in slot order, which reads the contacts and bodies
+    // in the order they lie in memory; each row goes to its lane (or the
+    // overflow group's scalar row), so the contacts may be shared among the
+    // workers.
+    const RowContext x = makeRowContext(w, h, soft);
+    const float slop = w.settings.penetrationSlop;
+    auto prepare = [&](int first, int last) {
+        for (int k = first; k < last; ++k) {
+            const int row = s.rowContacts[static_cast<std::size_t>(k)];
+            if (row < 0) continue;
+            const int contact = w.activeContacts[static_cast<std::size_t>(k)];
+            if (row >= overflow) {
+                ContactConstraint& cc = s.constraints[static_cast<std::size_t>(row - overflow)];
+                prepareContactRow(w, x, contact, cc);
+                finishContactRow(x, slop, cc);
+                continue;
+            }
+            const std::size_t colour = s.contactColours[static_cast<std::size_t>(k)];
+            const int inColour = row - begin[colour];
+            WideContactBlock& block =
+                s.wideContacts[static_cast<std::size_t>(s.wideContactColourStart[colour] + inColour / 4)];
+            prepareWideContactLane(w, x, contact, block, inColour % 4);
+        }
     };
-    w.runner.run(blocks, kPrepareGrain, prepare);
+    w.runner.run(static_cast<int>(activeCount), kPrepareGrain, prepare);
+    // The lanes past each colour's last row stay empty.
+    for (int c = 0; c < kColourCount; ++c) {
+        const int count = begin[static_cast<std::size_t>(c) + 1] - begin[static_cast<std::size_t>(c)];
+        if (count % 4 == 0) continue;
+        WideContactBlock& block =
+            s.wideContacts[static_cast<std::size_t>(s.wideContactColourStart[static_cast<std::size_t>(c) + 1] - 1)];
+        for (int lane = count % 4; lane < 4; ++lane) packEmptyWideContactLane(block, lane, x.zeroState);
+    }
 }
 
 // ---------------------------------------------------------------------------

@@ -49,7 +49,8 @@ struct SolverArrays {
     ScratchArray<WideContactBlock> wideContacts;  ///< the coloured contact rows four at a time (wide_contact.cpp)
     bool wideContactsActive = false;              ///< this step solves them so
     bool wideContactsOnly = false;                ///< ... prepared without scalar rows (solver.cpp)
-    ScratchArray<int> rowContacts;                ///< then: each row's contact slot, in colour order
+    ScratchArray<int> rowContacts;                ///< then: each active contact's row, −1 for none
+    std::vector<int> colourBegin;                 ///< then: each colour's first row
     std::vector<int> wideContactColourStart;      ///< per colour: its first block; then the block count
     std::vector<int> wideBlockRows;               ///< per block: its first row and its colour's end
     int contactOverflowStart = 0;                 ///< the first row of the scalar rest (the overflow group)

@@ -61,21 +61,17 @@ void packWideContactBlock(SolverArrays& s, int block, int start, int last) {
     }
 }
 
-void prepareWideContactBlock(const WorldState& w, const RowContext& x, const int* rowContacts, WideContactBlock& k,
-                             int start, int last) {
-    for (int lane = 0; lane < 4; ++lane) {
-        const int r = start + lane;
-        if (r >= last) {
-            packLane(k, lane, nullptr, -1, x.zeroState);
-            continue;
-        }
-        // The scalar row's own preparation, on the stack: the lane holds
-        // exactly what packing that row would have given.
-        ContactConstraint cc;
-        prepareContactRow(w, x, rowContacts[r], cc);
-        finishContactRow(x, w.settings.penetrationSlop, cc);
-        packLane(k, lane, &cc, -1, x.zeroState);
-    }
+void prepareWideContactLane(const WorldState& w, const RowContext& x, int contact, WideContactBlock& k, int lane) {
+    // The scalar row's own preparation, on the stack: the lane holds exactly
+    // what packing that row would have given.
+    ContactConstraint cc;
+    prepareContactRow(w, x, contact, cc);
+    finishContactRow(x, w.settings.penetrationSlop, cc);
+    packLane(k, lane, &cc, -1, x.zeroState);
+}
+
+void packEmptyWideContactLane(WideContactBlock& k, int lane, int zeroState) {
+    packLane(k, lane, nullptr, -1, zeroState);
 }
 
 void storeWideContacts(SolverArrays& s, SlotArray<Contact>& contacts, int firstBlock, int lastBlock) {

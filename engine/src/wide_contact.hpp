@@ -47,12 +47,13 @@ struct WideContactBlock {
 /// (of one colour, which ends at `last`) into block `block` of
 /// s.wideContacts (sized by the caller), every field written.
 void packWideContactBlock(SolverArrays& s, int block, int start, int last);
-/// Prepares block k straight from the contacts of rows [start, min(start + 4, last)), rowContacts[r]
-/// being row r's contact slot, with no scalar row (row −1): the lanes are
-/// what packWideContactBlock makes of the rows prepareContacts writes.
-/// Writes k only, so blocks may be prepared on any worker.
-void prepareWideContactBlock(const WorldState& w, const RowContext& x, const int* rowContacts, WideContactBlock& k,
-                             int start, int last);
+/// Prepares lane `lane` of block k straight from contact slot `contact`,
+/// with no scalar row (row −1): the lane holds what packWideContactBlock
+/// makes of the row prepareContacts writes. Writes that lane only, so the
+/// lanes may be prepared on any worker.
+void prepareWideContactLane(const WorldState& w, const RowContext& x, int contact, WideContactBlock& k, int lane);
+/// Lane `lane` of block k empty: the zero state on both sides, no points.
+void packEmptyWideContactLane(WideContactBlock& k, int lane, int zeroState);
 /// The accumulated impulses of blocks [firstBlock, lastBlock) into their
 /// contacts for the next step's warm start (the store of blocks without rows).
 void storeWideContacts(SolverArrays& s, SlotArray<Contact>& contacts, int firstBlock, int lastBlock);
