@@ -210,6 +210,9 @@ bool applyUpdate(WorldState& w, int c, Update update) {
 
 /// Contacts per chunk of the parallel manifold stage.
 constexpr int kCollideGrain = 64;
+/// The gathered contacts are listed by reading every slot once they are at
+/// least 1/kDenseGather of the slots (collide).
+constexpr std::size_t kDenseGather = 4;
 
 }  // namespace
 
@@ -344,8 +347,20 @@ void collide(WorldState& w) {
                 scratch.push_back(c);
             }
         }
-        // Contact-slot order, so results do not depend on the awake list's order.
-        std::sort(scratch.begin() + static_cast<std::ptrdiff_t>(roundBegin), scratch.end());
+        // Contact-slot order, so results do not depend on the awake list's
+        // order. When the first round gathered a good part of all the slots
+        // (a world mostly awake), reading the slots' stamps in order gives that
+        // order for less than sorting: many_pyramids' 44,000 contacts took a
+        // millisecond and a half to sort. Later rounds (islands a touch woke) sort.
+        const std::size_t gathered = scratch.size() - roundBegin;
+        const int slots = w.contacts.capacity();
+        if (roundBegin == 0 && gathered * kDenseGather >= static_cast<std::size_t>(slots)) {
+            scratch.clear();
+            for (int c = 0; c < slots; ++c)
+                if (w.contacts[c].stamp == w.stepStamp) scratch.push_back(c);
+        } else {
+            std::sort(scratch.begin() + static_cast<std::ptrdiff_t>(roundBegin), scratch.end());
+        }
         if (w.preSolve) {
             // The game's callback runs on the stepping thread, contact by
             // contact in slot order, each seeing the updates before it.
