@@ -453,7 +453,9 @@ void solveContacts(WorldState& w, float h, SolvePass target) {
         const bool leaveImpacts = target == SolvePass::soft_relax_last &&
                                   w.settings.impactModel == ImpactModel::closed_form;
         const float impactSpeed = w.settings.impactThreshold;
-        forEachWideColour(w, [&](int b, int e) { solveWideContacts(s, target, h, leaveImpacts, impactSpeed, b, e); });
+        const bool trackMax = !s.wideContactsOnly;
+        forEachWideColour(
+            w, [&](int b, int e) { solveWideContacts(s, target, h, leaveImpacts, impactSpeed, b, e, trackMax); });
         first = static_cast<std::size_t>(s.contactOverflowStart);
     }
     switch (target) {

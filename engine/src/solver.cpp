@@ -376,17 +376,11 @@ constexpr int kJointSolvePasses = 1;
 // ---------------------------------------------------------------------------
 // The solve stage
 
-/// The solver arrays of this step's awake bodies; h is the (sub)step.
-void gatherBodies(WorldState& w, float h) {
+/// Bodies [first, last) of the awake list into the solver arrays.
+void gatherBodyRange(WorldState& w, float h, Vec2 g, int first, int last) {
     SolverArrays& s = w.solver;
     const std::vector<int>& awake = w.islands.awakeBodies;
-    const std::size_t n = awake.size();
-    const Vec2 g = w.settings.gravity;
-    s.states.resize(n + 1);
-    s.states[n] = BodyState{};  // the zero state for immovable sides of contacts
-    s.integration.resize(n);
-    s.stateBodies.resize(n);
-    for (std::size_t i = 0; i < n; ++i) {
+    for (std::size_t i = static_cast<std::size_t>(first); i < static_cast<std::size_t>(last); ++i) {
         const int b = awake[i];
         Body& body = w.bodies[b];
         body.solverIndex = static_cast<int>(i);
@@ -406,6 +400,21 @@ void gatherBodies(WorldState& w, float h) {
     }
 }
 
+/// The solver arrays of this step's awake bodies; h is the (sub)step. Each
+/// body on its own: shared among the workers.
+void gatherBodies(WorldState& w, float h) {
+    SolverArrays& s = w.solver;
+    const std::vector<int>& awake = w.islands.awakeBodies;
+    const std::size_t n = awake.size();
+    const Vec2 g = w.settings.gravity;
+    s.states.resize(n + 1);
+    s.states[n] = BodyState{};  // the zero state for immovable sides of contacts
+    s.integration.resize(n);
+    s.stateBodies.resize(n);
+    auto range = [&](int first, int last) { gatherBodyRange(w, h, g, first, last); };
+    w.runner.run(static_cast<int>(n), kBodyGrain, range);
+}
+
 using Clock = std::chrono::steady_clock;
 float msSince(Clock::time_point t0) { return std::chrono::duration<float, std::milli>(Clock::now() - t0).count(); }
 
@@ -418,6 +427,10 @@ void solve(WorldState& w, float dt) {
     const float maxSpeed = set.maxLinearSpeed;
 
     const Clock::time_point prepareStart = Clock::now();
+    // Shared when the step will be (the rows are not counted yet).
+    w.runner.share(static_cast<int>(w.activeContacts.size()) + w.joints.count +
+                       static_cast<int>(w.islands.awakeBodies.size()) >=
+                   kParallelWork);
     gatherBodies(w, h);
     const std::size_t n = s.stateBodies.size();
     colourContacts(w);
@@ -580,6 +593,7 @@ void releaseLargeStepArrays(WorldState& w) {
     releaseIfLarge(w.activeContacts);
     releaseIfLarge(w.gatherScratch);
     releaseIfLarge(w.collideUpdates);
+    releaseIfLarge(w.broadPhase.proxyLeaves);
     releaseIfLarge(w.impactChanged);
     releaseIfLarge(w.islands.unionParent);
 }
@@ -605,7 +619,7 @@ void stepWorld(WorldState& w, float dt) {
     profile.pairs = msSince(t);
 
     // The helpers of a large step start before the narrowphase and stay
-    // until the solve ends: one hand-over per step. Started for the solve
+    // until the proxies are refreshed: one hand-over per step. Started for the solve
     // alone, they woke too late to share a narrowphase of half a millisecond.
     const int work = w.contacts.count + w.joints.count + static_cast<int>(w.islands.awakeBodies.size());
     const bool parallel = w.tasks != nullptr && w.tasks->workerCount() > 1 && work >= kParallelWork;
@@ -626,13 +640,13 @@ void stepWorld(WorldState& w, float dt) {
 
     t = Clock::now();
     solve(w, dt);
-    stages.end();
     profile.solve = msSince(t);
 
     t = Clock::now();
     if (w.settings.enableContinuous) solveContinuous(w, dt);
     profile.sweeps = msSince(t);
-    for (int b : w.islands.awakeBodies) synchronizeProxies(w, b, dt);
+    refreshProxies(w, dt);
+    stages.end();
     profile.continuous = msSince(t);
 
     t = Clock::now();

@@ -141,8 +141,11 @@ void warmStartWideContacts(SolverArrays& s, int firstBlock, int lastBlock) {
     }
 }
 
-void solveWideContacts(SolverArrays& s, SolvePass pass, float h, bool leaveImpacts, float impactSpeed, int firstBlock,
-                       int lastBlock) {
+namespace {
+
+template <bool kTrackMax>
+void solveWideContactsFor(SolverArrays& s, SolvePass pass, float h, bool leaveImpacts, float impactSpeed,
+                          int firstBlock, int lastBlock) {
     const Float4 invH = splat(1.0f / h), zero = splat(0.0f), one = splat(1.0f);
     const Float4 minusImpactSpeed = splat(-impactSpeed);
     const bool softBias = pass == SolvePass::soft_bias;
@@ -205,18 +208,21 @@ void solveWideContacts(SolverArrays& s, SolvePass pass, float h, bool leaveImpac
             if (j == 0) {
                 // One after the other: the first point acts before the second is solved.
                 const Mask4 now = andNot(acts[0], pair);
-                store4(p0.maxNormalImpulse,
-                       select(now, max4(load4(p0.maxNormalImpulse), increment[0]), load4(p0.maxNormalImpulse)));
+                if constexpr (kTrackMax)
+                    store4(p0.maxNormalImpulse,
+                           select(now, max4(load4(p0.maxNormalImpulse), increment[0]), load4(p0.maxNormalImpulse)));
                 applyMasked(now, arms[0], increment[0] * nx, increment[0] * ny, mA, iA, mB, iB, v);
             }
         }
         {
             const Mask4 later = acts[0] & pair;
-            store4(p0.maxNormalImpulse,
-                   select(later, max4(load4(p0.maxNormalImpulse), increment[0]), load4(p0.maxNormalImpulse)));
+            if constexpr (kTrackMax)
+                store4(p0.maxNormalImpulse,
+                       select(later, max4(load4(p0.maxNormalImpulse), increment[0]), load4(p0.maxNormalImpulse)));
             applyMasked(later, arms[0], increment[0] * nx, increment[0] * ny, mA, iA, mB, iB, v);
-            store4(p1.maxNormalImpulse,
-                   select(acts[1], max4(load4(p1.maxNormalImpulse), increment[1]), load4(p1.maxNormalImpulse)));
+            if constexpr (kTrackMax)
+                store4(p1.maxNormalImpulse,
+                       select(acts[1], max4(load4(p1.maxNormalImpulse), increment[1]), load4(p1.maxNormalImpulse)));
             applyMasked(acts[1], arms[1], increment[1] * nx, increment[1] * ny, mA, iA, mB, iB, v);
         }
 
@@ -238,6 +244,16 @@ void solveWideContacts(SolverArrays& s, SolvePass pass, float h, bool leaveImpac
         scatterVelocities(states, k.a, A, k.mA, k.iA);
         scatterVelocities(states, k.b, B, k.mB, k.iB);
     }
+}
+
+}  // namespace
+
+void solveWideContacts(SolverArrays& s, SolvePass pass, float h, bool leaveImpacts, float impactSpeed, int firstBlock,
+                       int lastBlock, bool trackMax) {
+    if (trackMax)
+        solveWideContactsFor<true>(s, pass, h, leaveImpacts, impactSpeed, firstBlock, lastBlock);
+    else
+        solveWideContactsFor<false>(s, pass, h, leaveImpacts, impactSpeed, firstBlock, lastBlock);
 }
 
 void writeBackWideContacts(SolverArrays& s, int firstBlock, int lastBlock) {

@@ -61,8 +61,10 @@ void warmStartWideContacts(SolverArrays& s, int firstBlock, int lastBlock);
 /// One sweep of blocks [firstBlock, lastBlock) in a soft_step pass: soft_bias,
 /// soft_relax or soft_relax_last (`leaveImpacts`: the last relax with the
 /// closed-form impact law, see contact_solver.cpp).
+/// `trackMax` false leaves maxNormalImpulse alone: only the velocity-bias
+/// restitution pass reads it, through the rows (writeBackWideContacts).
 void solveWideContacts(SolverArrays& s, SolvePass pass, float h, bool leaveImpacts, float impactSpeed, int firstBlock,
-                       int lastBlock);
+                       int lastBlock, bool trackMax = true);
 /// The accumulated impulses of blocks [firstBlock, lastBlock) back into their
 /// rows (for restitution and the store, which read the rows).
 void writeBackWideContacts(SolverArrays& s, int firstBlock, int lastBlock);
