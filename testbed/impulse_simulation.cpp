@@ -68,6 +68,12 @@ public:
         return worst;
     }
 
+    std::vector<std::pair<const char*, double>> stageTimes() const override {
+        const i2d::Profile& p = scene_.world->profile();
+        return {{"pairs", p.pairs}, {"collide", p.collide},       {"impacts", p.impacts}, {"prepare", p.prepare},
+                {"solve", p.solve}, {"continuous", p.continuous}, {"sleep", p.sleep},     {"step", p.step}};
+    }
+
     ~ImpulseSimulation() override {
         if (pool_) scene_.world->setTaskSystem(nullptr);
     }

@@ -20,6 +20,9 @@ std::string reportToJson(const RunReport& r) {
     j["steps_completed"] = r.stepsCompleted;
     j["dt"] = r.dt;
     j["ms_per_step"] = {{"median", r.msMedian}, {"min", r.msMin}, {"max", r.msMax}};
+    json stages = nullptr;  // an engine without its own stage timing
+    for (const auto& [name, value] : r.stageMedians) stages[name] = value;
+    j["profile"] = stages;
     j["bodies"] = r.bodies;
     j["awake_bodies"] = r.awakeBodies;
     j["joints"] = r.joints;

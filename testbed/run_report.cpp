@@ -47,12 +47,18 @@ RunReport runScene(const SceneDesc& desc, long steps, EngineKind engine, const B
 
     std::vector<double> ms;
     ms.reserve(static_cast<std::size_t>(steps));
+    std::vector<std::vector<double>> stageMs;  // by stage, then step
     for (long i = 0; i < steps && !rep.nan; ++i) {
         auto t0 = std::chrono::steady_clock::now();
         sim->step(desc.dt);
         auto t1 = std::chrono::steady_clock::now();
         ms.push_back(std::chrono::duration<double, std::milli>(t1 - t0).count());
         ++rep.stepsCompleted;
+        const std::vector<std::pair<const char*, double>> stages = sim->stageTimes();
+        if (rep.stageMedians.empty())
+            for (const auto& st : stages) rep.stageMedians.emplace_back(st.first, 0.0);
+        stageMs.resize(stages.size());
+        for (std::size_t k = 0; k < stages.size(); ++k) stageMs[k].push_back(stages[k].second);
         if (observer) observer->afterStep(rep.stepsCompleted, *sim);
 
         rep.maxContacts = std::max(rep.maxContacts, sim->touchingContactCount());
@@ -92,14 +98,19 @@ RunReport runScene(const SceneDesc& desc, long steps, EngineKind engine, const B
         const BodySample& s0 = start[static_cast<std::size_t>(i)];
         if (s.dynamic && std::hypot(s.x - s0.x, s.y - s0.y) > RunReport::kDisplacedDistance) ++rep.displaced;
     }
+    auto median = [](std::vector<double>& v) {
+        std::sort(v.begin(), v.end());
+        const std::size_t n = v.size();
+        return n % 2 ? v[n / 2] : 0.5 * (v[n / 2 - 1] + v[n / 2]);
+    };
     if (!ms.empty()) {
         std::vector<double> sorted = ms;
-        std::sort(sorted.begin(), sorted.end());
-        std::size_t n = sorted.size();
-        rep.msMedian = n % 2 ? sorted[n / 2] : 0.5 * (sorted[n / 2 - 1] + sorted[n / 2]);
+        rep.msMedian = median(sorted);
         rep.msMin = sorted.front();
         rep.msMax = sorted.back();
     }
+    for (std::size_t k = 0; k < rep.stageMedians.size() && k < stageMs.size(); ++k)
+        if (!stageMs[k].empty()) rep.stageMedians[k].second = median(stageMs[k]);
     for (std::size_t k = 0; k < named.size(); ++k) {
         BodySample s = sim->sample(named[k].second);
         RunReport::Named& nb = rep.named[k];

@@ -53,6 +53,9 @@ struct RunReport {
         float minY = 0, maxY = 0;  ///< lowest and highest y over the run (including the start)
     };
     std::vector<Named> named;  ///< sorted by name
+    /// The median over the steps of each stage's time as the engine measures
+    /// it (ms; Simulation::stageTimes), in stage order; empty for Box2D.
+    std::vector<std::pair<std::string, double>> stageMedians;
     /// The scene's error figure (tb::errorMetricFor; metric none for scenes without one).
     ErrorValue error;
 };

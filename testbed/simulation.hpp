@@ -67,6 +67,9 @@ public:
     /// nothing overlaps. Box2D 2.4.1 measures it between its polygons' skins
     /// (b2_polygonRadius = 1 cm beyond the vertices).
     virtual float maxPenetration() const = 0;
+    /// The engine's own timing of the last step's stages (ms), in stage
+    /// order; empty for an engine that does not time them.
+    virtual std::vector<std::pair<const char*, double>> stageTimes() const { return {}; }
     /// What the engine could not express of the scene, one sentence each
     /// (empty when it took the scene as it is).
     const std::vector<std::string>& notes() const { return notes_; }

@@ -8,6 +8,7 @@
 // moved, not how much exists.
 #pragma once
 
+#include <cstdint>
 #include <vector>
 
 #include "dynamic_tree.hpp"
@@ -19,10 +20,11 @@ namespace i2d::detail {
 struct WorldState;
 
 struct BroadPhase {
-    DynamicTree staticTree;       ///< shapes of static bodies
-    DynamicTree movingTree;       ///< shapes of kinematic and dynamic bodies
-    std::vector<int> moveBuffer;  ///< shapes whose proxies moved or were created
-    PairSet pairs;                ///< shape pairs that have a contact
+    DynamicTree staticTree;                 ///< shapes of static bodies
+    DynamicTree movingTree;                 ///< shapes of kinematic and dynamic bodies
+    std::vector<int> moveBuffer;            ///< shapes whose proxies moved or were created
+    std::vector<std::uint8_t> proxyLeaves;  ///< per awake body: a shape left its fat box (refreshProxies)
+    PairSet pairs;                          ///< shape pairs that have a contact
 
     /// Puts a moving shape into the move buffer (once).
     void markMoved(Shape& shape, int index) {
@@ -68,6 +70,9 @@ void destroyProxy(WorldState& w, int shape);
 /// Refreshes the proxies of a body's shapes after it moved; after a step of
 /// dt, a box that must move is stretched ahead along the body's velocity.
 void synchronizeProxies(WorldState& w, int body, float dt = 0.0f);
+/// synchronizeProxies for every awake body; in a large step with workers,
+/// the bodies whose boxes must move are found on all of them first.
+void refreshProxies(WorldState& w, float dt);
 
 /// A static body was moved: its proxies never query, so the moving shapes
 /// overlapping its shapes are woken and put in the move buffer to find the

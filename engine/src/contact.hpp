@@ -47,6 +47,9 @@ struct Contact {
     bool enableEvents = false;
     bool framed = false;           ///< a flat pair whose manifold has points: it may be reused
     bool enableHitEvents = false;  ///< either shape enables hit events
+    /// Shape A, B is a circle, whose contact point does not turn with it
+    /// (contact_solver.hpp): kept here so that preparing the rows reads no shape.
+    bool roundA = false, roundB = false;
 };
 
 /// A contact's rolling resistance and tangent speed, and its rolling row's

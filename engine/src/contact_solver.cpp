@@ -72,21 +72,107 @@ bool contactRowBodies(const WorldState& w, const Contact& ct, int zeroState, Row
     return out.invMassA != 0.0f || out.invIA != 0.0f || out.invMassB != 0.0f || out.invIB != 0.0f;
 }
 
-void prepareContacts(WorldState& w, float h, bool soft) {
+RowContext makeRowContext(const WorldState& w, float h, bool soft) {
     const WorldSettings& set = w.settings;
-    const int zeroState = static_cast<int>(w.solver.states.size()) - 1;
+    RowContext x;
+    x.zeroState = static_cast<int>(w.solver.states.size()) - 1;
     const float rate = 1.0f / h;
     // Capped at an eighth of the substep rate (Box2D v3's cap): 30 Hz at the
     // default 240 Hz substeps. At a quarter, one substep at 60 Hz gave 15 Hz
     // contacts whose release threw a 100-row pyramid's top 2 m above where it
     // started (+2 % energy; tests/testbed/test_energy_audit.cpp).
     const float hertz = std::min(set.contactHertz, 0.125f * rate);
-    const Softness dynamicSoft = makeSoft(hertz, set.contactDampingRatio, h);
+    x.dynamicSoft = makeSoft(hertz, set.contactDampingRatio, h);
     // Against an immovable body only one side gives: stiffen (Solver2D doubles the hertz).
-    const Softness staticSoft = makeSoft(2.0f * hertz, set.contactDampingRatio, h);
-    const bool biasRestitution = set.impactModel == ImpactModel::velocity_bias && !soft;
-    const float fullDt = soft ? h * static_cast<float>(set.substeps) : h;
-    const float warm = set.enableWarmStarting ? 1.0f : 0.0f;
+    x.staticSoft = makeSoft(2.0f * hertz, set.contactDampingRatio, h);
+    x.biasRestitution = set.impactModel == ImpactModel::velocity_bias && !soft;
+    x.fullDt = soft ? h * static_cast<float>(set.substeps) : h;
+    x.warm = set.enableWarmStarting ? 1.0f : 0.0f;
+    // The push a point would ask for at its overlap: the soft step's bias
+    // rate, or Baumgarte's β/Δt past the slop.
+    x.pushRate = soft ? 0.0f : set.pushFactor * rate;
+    x.soft = soft;
+    return x;
+}
+
+bool prepareContactRow(const WorldState& w, const RowContext& x, int c, ContactConstraint& cc) {
+    const WorldSettings& set = w.settings;
+    const Contact& ct = w.contacts[c];
+    const Body& bA = w.bodies[ct.bodyA];
+    const Body& bB = w.bodies[ct.bodyB];
+    RowBodies rb;
+    contactRowBodies(w, ct, x.zeroState, rb);
+    // Every field the passes read is written below (a row reads only its
+    // first pointCount points), so the slot needs no clearing.
+    cc.contact = c;
+    cc.a = rb.a;
+    cc.b = rb.b;
+    cc.invMassA = rb.invMassA;
+    cc.invIA = rb.invIA;
+    cc.invMassB = rb.invMassB;
+    cc.invIB = rb.invIB;
+    cc.normal = ct.manifold.normal;
+    cc.friction = ct.friction;
+    cc.restitution = ct.restitution;
+    const Softness& sf = (cc.invMassA == 0.0f || cc.invMassB == 0.0f) ? x.staticSoft : x.dynamicSoft;
+    cc.biasRate = sf.biasRate;
+    cc.massScale = sf.massScale;
+    cc.impulseScale = sf.impulseScale;
+    cc.pointCount = static_cast<std::uint8_t>(ct.manifold.pointCount);
+    cc.maxPush = set.maxPushSpeed;
+    const ContactSurface* surface = contactSurface(w, c);
+    cc.tangentSpeed = surface ? surface->tangentSpeed : 0.0f;
+    cc.deepOverlap = false;
+    cc.roundA = ct.roundA;
+    cc.roundB = ct.roundB;
+    for (int j = 0; j < cc.pointCount; ++j)
+        cc.deepOverlap = cc.deepOverlap || ct.manifold.points[j].separation < -kDeepOverlap;
+    const Vec2 n = cc.normal;
+    const Vec2 t = rightPerp(n);
+    const Vec2 vA = bA.v, vB = bB.v;
+    const float wA = bA.w, wB = bB.w;
+    for (int j = 0; j < cc.pointCount; ++j) {
+        const ManifoldPoint& mp = ct.manifold.points[j];
+        ContactPointConstraint& cp = cc.points[j];
+        contactArms(ct, bA, bB, j, cp.rA, cp.rB);
+        cp.adjustedSeparation = mp.separation - dot(cp.rB - cp.rA, n);
+        // Effective mass of the normal row: 1 / (J M⁻¹ Jᵀ) with J of Tamis and Maggiore (2015) §5.3.
+        float rnA = cross(cp.rA, n), rnB = cross(cp.rB, n);
+        float kn = cc.invMassA + cc.invMassB + cc.invIA * rnA * rnA + cc.invIB * rnB * rnB;
+        cp.normalMass = kn > 0.0f ? 1.0f / kn : 0.0f;
+        float rtA = cross(cp.rA, t), rtB = cross(cp.rB, t);
+        float kt = cc.invMassA + cc.invMassB + cc.invIA * rtA * rtA + cc.invIB * rtB * rtB;
+        cp.tangentMass = kt > 0.0f ? 1.0f / kt : 0.0f;
+        cp.normalImpulse = x.warm * ct.normalImpulse[j];
+        cp.tangentImpulse = x.warm * ct.tangentImpulse[j];
+        cp.maxNormalImpulse = 0.0f;
+        cp.biasImpulse = 0.0f;
+        Vec2 dv = (vB + cross(wB, cp.rB)) - (vA + cross(wA, cp.rA));
+        cp.relativeVelocity = dot(n, dv);
+        // Tamis and Maggiore (2015) eq. 8.2.1: bounce target −e·v_n for an approach faster than
+        // the threshold that closes the gap within this step.
+        cp.restitutionBias = 0.0f;
+        if (x.biasRestitution && cc.restitution > 0.0f && cp.relativeVelocity < -set.restitutionThreshold &&
+            mp.separation + cp.relativeVelocity * x.fullDt < 0.0f) {
+            cp.restitutionBias = -cc.restitution * cp.relativeVelocity;
+        }
+    }
+    return cc.deepOverlap;
+}
+
+void finishContactRow(const RowContext& x, float penetrationSlop, ContactConstraint& cc) {
+    float deepest = 0.0f;
+    for (int j = 0; j < cc.pointCount; ++j) {
+        const ContactPointConstraint& cp = cc.points[j];
+        deepest = std::min(deepest, cp.adjustedSeparation + dot(cp.rB - cp.rA, cc.normal));
+    }
+    const float push = x.soft ? -cc.biasRate * deepest : -x.pushRate * std::min(deepest + penetrationSlop, 0.0f);
+    cc.pointsTogether = cc.pointCount == 2 && push < cc.maxPush;
+    cc.pairScale = cc.pointsTogether ? pairScale(cc) : 1.0f;
+}
+
+void prepareContacts(WorldState& w, float h, bool soft) {
+    const RowContext x = makeRowContext(w, h, soft);
     SolverArrays& s = w.solver;
     s.deepContactCount.assign(s.states.size(), 0);
     s.rolling.clear();
@@ -101,93 +187,21 @@ void prepareContacts(WorldState& w, float h, bool soft) {
         const std::uint8_t colour = s.contactColours[k];
         if (colour == kNoRow) continue;
         const int c = w.activeContacts[k];
-        const Contact& ct = w.contacts[c];
-        const Body& bA = w.bodies[ct.bodyA];
-        const Body& bB = w.bodies[ct.bodyB];
-        RowBodies rb;
-        contactRowBodies(w, ct, zeroState, rb);
-        const int a = rb.a, b = rb.b;
-        // Every field the passes read is written below (a row reads only its
-        // first pointCount points), so the slot needs no clearing.
         const int row = s.colourOffsets[colour]++;
         ContactConstraint& cc = s.constraints[static_cast<std::size_t>(row)];
-        cc.contact = c;
-        cc.a = a;
-        cc.b = b;
-        cc.invMassA = rb.invMassA;
-        cc.invIA = rb.invIA;
-        cc.invMassB = rb.invMassB;
-        cc.invIB = rb.invIB;
-        cc.normal = ct.manifold.normal;
-        cc.friction = ct.friction;
-        cc.restitution = ct.restitution;
-        const Softness& sf = (cc.invMassA == 0.0f || cc.invMassB == 0.0f) ? staticSoft : dynamicSoft;
-        cc.biasRate = sf.biasRate;
-        cc.massScale = sf.massScale;
-        cc.impulseScale = sf.impulseScale;
-        cc.pointCount = static_cast<std::uint8_t>(ct.manifold.pointCount);
-        cc.maxPush = set.maxPushSpeed;
-        const ContactSurface* surface = contactSurface(w, c);
-        cc.tangentSpeed = surface ? surface->tangentSpeed : 0.0f;
-        if (surface && surface->rollingResistance > 0.0f) prepareRollingResistance(w, row, *surface);
-        cc.deepOverlap = false;
-        cc.roundA = w.shapes[ct.shapeA].type == ShapeType::circle;
-        cc.roundB = w.shapes[ct.shapeB].type == ShapeType::circle;
-        for (int j = 0; j < cc.pointCount; ++j)
-            cc.deepOverlap = cc.deepOverlap || ct.manifold.points[j].separation < -kDeepOverlap;
-        if (cc.deepOverlap) {
+        if (prepareContactRow(w, x, c, cc)) {
             s.deepRows.push_back(row);
-            ++w.solver.deepContactCount[static_cast<std::size_t>(a)];
-            ++w.solver.deepContactCount[static_cast<std::size_t>(b)];
+            ++s.deepContactCount[static_cast<std::size_t>(cc.a)];
+            ++s.deepContactCount[static_cast<std::size_t>(cc.b)];
             anyDeep = true;
         }
-        const Vec2 n = cc.normal;
-        const Vec2 t = rightPerp(n);
-        const Vec2 vA = bA.v, vB = bB.v;
-        const float wA = bA.w, wB = bB.w;
-        for (int j = 0; j < cc.pointCount; ++j) {
-            const ManifoldPoint& mp = ct.manifold.points[j];
-            ContactPointConstraint& cp = cc.points[j];
-            contactArms(ct, bA, bB, j, cp.rA, cp.rB);
-            cp.adjustedSeparation = mp.separation - dot(cp.rB - cp.rA, n);
-            // Effective mass of the normal row: 1 / (J M⁻¹ Jᵀ) with J of Tamis and Maggiore (2015) §5.3.
-            float rnA = cross(cp.rA, n), rnB = cross(cp.rB, n);
-            float kn = cc.invMassA + cc.invMassB + cc.invIA * rnA * rnA + cc.invIB * rnB * rnB;
-            cp.normalMass = kn > 0.0f ? 1.0f / kn : 0.0f;
-            float rtA = cross(cp.rA, t), rtB = cross(cp.rB, t);
-            float kt = cc.invMassA + cc.invMassB + cc.invIA * rtA * rtA + cc.invIB * rtB * rtB;
-            cp.tangentMass = kt > 0.0f ? 1.0f / kt : 0.0f;
-            cp.normalImpulse = warm * ct.normalImpulse[j];
-            cp.tangentImpulse = warm * ct.tangentImpulse[j];
-            cp.maxNormalImpulse = 0.0f;
-            cp.biasImpulse = 0.0f;
-            Vec2 dv = (vB + cross(wB, cp.rB)) - (vA + cross(wA, cp.rA));
-            cp.relativeVelocity = dot(n, dv);
-            // Tamis and Maggiore (2015) eq. 8.2.1: bounce target −e·v_n for an approach faster than
-            // the threshold that closes the gap within this step.
-            cp.restitutionBias = 0.0f;
-            if (biasRestitution && cc.restitution > 0.0f && cp.relativeVelocity < -set.restitutionThreshold &&
-                mp.separation + cp.relativeVelocity * fullDt < 0.0f) {
-                cp.restitutionBias = -cc.restitution * cp.relativeVelocity;
-            }
-        }
+        const ContactSurface* surface = contactSurface(w, c);
+        if (surface && surface->rollingResistance > 0.0f) prepareRollingResistance(w, row, *surface);
     }
     s.anyDeepOverlap = anyDeep;
     std::sort(s.deepRows.begin(), s.deepRows.end());  // the push sweeps them in row order
     if (anyDeep && !soft) sharePushAmongDeepContacts(w);
-    // The push a point would ask for at its overlap: the soft step's bias
-    // rate, or Baumgarte's β/Δt past the slop.
-    const float pushRate = soft ? 0.0f : set.pushFactor * rate;
-    for (ContactConstraint& cc : s.constraints) {
-        float deepest = 0.0f;
-        for (int j = 0; j < cc.pointCount; ++j) {
-            const ContactPointConstraint& cp = cc.points[j];
-            deepest = std::min(deepest, cp.adjustedSeparation + dot(cp.rB - cp.rA, cc.normal));
-        }
-        const float push = soft ? -cc.biasRate * deepest : -pushRate * std::min(deepest + set.penetrationSlop, 0.0f);
-        cc.pointsTogether = cc.pointCount == 2 && push < cc.maxPush;
-        cc.pairScale = cc.pointsTogether ? pairScale(cc) : 1.0f;
-    }
+    for (ContactConstraint& cc : s.constraints) finishContactRow(x, w.settings.penetrationSlop, cc);
 }
 
 namespace {
@@ -442,7 +456,9 @@ void solveContacts(WorldState& w, float h, SolvePass target) {
         const bool leaveImpacts = target == SolvePass::soft_relax_last &&
                                   w.settings.impactModel == ImpactModel::closed_form;
         const float impactSpeed = w.settings.impactThreshold;
-        forEachWideColour(w, [&](int b, int e) { solveWideContacts(s, target, h, leaveImpacts, impactSpeed, b, e); });
+        const bool trackMax = !s.wideContactsOnly;
+        forEachWideColour(
+            w, [&](int b, int e) { solveWideContacts(s, target, h, leaveImpacts, impactSpeed, b, e, trackMax); });
         first = static_cast<std::size_t>(s.contactOverflowStart);
     }
     switch (target) {

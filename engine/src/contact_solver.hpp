@@ -95,6 +95,26 @@ inline float loadPush(const ContactConstraint& cc, const ContactPointConstraint&
 /// Marks an active contact without a row in SolverArrays::contactColours.
 inline constexpr std::uint8_t kNoRow = 0xFF;
 
+/// What the rows of one step share (prepareContactRow).
+struct RowContext {
+    int zeroState;
+    Softness dynamicSoft, staticSoft;
+    bool biasRestitution;  ///< the classic modes' restitution target (velocity-bias impacts)
+    bool soft;             ///< soft_step
+    float fullDt, warm, pushRate;
+};
+RowContext makeRowContext(const WorldState& w, float h, bool soft);
+
+/// Writes every field of the row of contact slot `c` (which gets one:
+/// contactRowBodies) but pointsTogether and pairScale, which
+/// finishContactRow sets once the push caps are final. Reads the world
+/// only, so rows may be prepared on any worker. Returns whether a point
+/// overlaps deeper than kDeepOverlap.
+bool prepareContactRow(const WorldState& w, const RowContext& x, int c, ContactConstraint& cc);
+/// Whether the row's two points are solved together, from its deepest
+/// point's push against its cap, and their coupling scale.
+void finishContactRow(const RowContext& x, float penetrationSlop, ContactConstraint& cc);
+
 /// Rows of every contact in WorldState::activeContacts that gets one (see
 /// contactRowBodies), for substeps of length h (`soft`: soft_step), each
 /// written at its place in colour order: the colouring (solver.cpp) comes first.

@@ -14,7 +14,8 @@ namespace i2d::detail {
 
 template <class T>
 class ScratchArray {
-    static_assert(std::is_trivially_copyable_v<T> && std::is_trivially_destructible_v<T> && std::is_aggregate_v<T>,
+    static_assert(std::is_trivially_copyable_v<T> && std::is_trivially_destructible_v<T> &&
+                      (std::is_aggregate_v<T> || std::is_arithmetic_v<T>),
                   "ScratchArray leaves its elements uninitialised: plain data only");
 
 public:

@@ -58,16 +58,13 @@ namespace {
 
 constexpr int kColourCount = 24;  ///< colours tried before the overflow group
 
-/// Contact rows, joints and awake bodies from which a step shares its solve
-/// with the task system's workers: below, a colour's sweep takes a few
-/// microseconds and handing it out costs more than it saves (joint_grid,
-/// 2,600 items, and rain1000, 3,000, ran slower on two workers than on one);
-/// pyramid100 (15,000) gained a fifth. Then the bodies per chunk of an
-/// integration stage, and the contact blocks per chunk when they are packed
-/// or written back: large, so that few cache lines are written by two workers.
-constexpr int kParallelWork = 4096;
+/// The bodies per chunk of an integration stage, and the contact blocks per
+/// chunk when they are packed, prepared or written back: large, so that few
+/// cache lines are written by two workers (kParallelWork, stage_runner.hpp,
+/// decides whether a step's solve is shared at all).
 constexpr int kBodyGrain = 512;
 constexpr int kPackGrain = 32;
+constexpr int kPrepareGrain = 128;  ///< contacts per chunk when rows are prepared
 
 /// Colours the rows of this step's active contacts (greedy, in activeContacts
 /// order, overflow group last) and leaves in colourOffsets the first row of
@@ -83,13 +80,22 @@ void colourContacts(WorldState& w) {
     s.colourOffsets.assign(kColourCount + 1, 0);
     s.contactColours.resize(count);
     int rows = 0;
+    bool anyDeep = false, anyRolling = false;
     for (std::size_t i = 0; i < count; ++i) {
         RowBodies rb;
-        if (!contactRowBodies(w, w.contacts[w.activeContacts[i]], zeroState, rb)) {
+        const int contact = w.activeContacts[i];
+        const Contact& ct = w.contacts[contact];
+        if (!contactRowBodies(w, ct, zeroState, rb)) {
             s.contactColours[i] = kNoRow;
             continue;
         }
         ++rows;
+        // What decides the rows' path before any is prepared: the same tests
+        // as prepareContacts' and prepareRollingResistance's.
+        for (int j = 0; j < ct.manifold.pointCount; ++j)
+            anyDeep = anyDeep || ct.manifold.points[j].separation < -kDeepOverlap;
+        const ContactSurface* surface = contactSurface(w, contact);
+        if (surface && surface->rollingResistance > 0.0f && !(rb.invIA + rb.invIB <= 0.0f)) anyRolling = true;
         const bool moveA = static_cast<std::size_t>(rb.a) < bodyCount && (rb.invMassA != 0.0f || rb.invIA != 0.0f);
         const bool moveB = static_cast<std::size_t>(rb.b) < bodyCount && (rb.invMassB != 0.0f || rb.invIB != 0.0f);
         const std::size_t wa = static_cast<std::size_t>(rb.a) / 64, wb = static_cast<std::size_t>(rb.b) / 64;
@@ -115,30 +121,21 @@ void colourContacts(WorldState& w) {
         offset += c;
     }
     s.rowCount = rows;
+    s.anyDeepOverlap = anyDeep;
+    s.anyRollingRow = anyRolling;
 }
 
-/// soft_step without rolling resistance: the rows of each colour (their ends
-/// are in colourOffsets once prepareContacts placed them) packed four to a
-/// block for the wide sweep; the overflow group stays scalar.
-void packContactColours(WorldState& w, bool soft) {
-    SolverArrays& s = w.solver;
-    s.wideContactsActive = soft && s.rolling.empty() && s.rowCount > 0;
-    s.contactOverflowStart = 0;
-    if (!s.wideContactsActive) {
-        s.wideContacts.resizeForOverwrite(0);
-        return;
-    }
-    // One allocation, sized first: growing block by block made a fresh
-    // allocation, page faults and a copy per doubling, every step. Each
-    // block's first row and its colour's end, then the blocks packed on
-    // every worker (each is written alone).
+/// The wide blocks of the coloured rows, colour c's rows ending at ends[c]:
+/// each block's first row and its colour's end in wideBlockRows, each
+/// colour's first block; returns the block count.
+int layoutWideBlocks(SolverArrays& s, const int* ends) {
     std::vector<int>& blockRows = s.wideBlockRows;
     blockRows.clear();
     s.wideContactColourStart.resize(kColourCount + 1);
     int start = 0;
     for (int c = 0; c < kColourCount; ++c) {
         s.wideContactColourStart[static_cast<std::size_t>(c)] = static_cast<int>(blockRows.size() / 2);
-        const int end = s.colourOffsets[static_cast<std::size_t>(c)];
+        const int end = ends[c];
         for (int row = start; row < end; row += 4) {
             blockRows.push_back(row);
             blockRows.push_back(end);
@@ -148,15 +145,94 @@ void packContactColours(WorldState& w, bool soft) {
     const int blocks = static_cast<int>(blockRows.size() / 2);
     s.wideContactColourStart[kColourCount] = blocks;
     s.contactOverflowStart = start;
+    // One allocation, sized first: growing block by block made a fresh
+    // allocation, page faults and a copy per doubling, every step.
     s.wideContacts.resizeForOverwrite(static_cast<std::size_t>(blocks));
-    // Only the deep overlaps' push (deep_overlap.cpp) asks where a row went.
-    if (s.anyDeepOverlap) s.wideLaneOfRow.resize(static_cast<std::size_t>(start));
-    auto pack = [&](int b, int e) {
-        for (int k = b; k < e; ++k)
-            packWideContactBlock(s, k, blockRows[static_cast<std::size_t>(2 * k)],
-                                 blockRows[static_cast<std::size_t>(2 * k + 1)]);
+    return blocks;
+}
+
+/// The contact rows of this step (after colourContacts). soft_step without
+/// rolling resistance solves the coloured rows four at a time: with
+/// closed-form impacts and no deep overlap each row is prepared straight
+/// into its lane on every worker, and only the overflow group gets scalar
+/// rows; with velocity-bias impacts (whose restitution pass reads the rows)
+/// or a deep overlap (whose push reads them) the rows are prepared and then
+/// packed. Otherwise every row stays scalar.
+void prepareContactRows(WorldState& w, float h, bool soft) {
+    SolverArrays& s = w.solver;
+    s.wideContactsActive = soft && !s.anyRollingRow && s.rowCount > 0;
+    // The push of deep overlaps (deep_overlap.cpp) reads their rows: a step
+    // with any prepares rows and packs them.
+    s.wideContactsOnly = s.wideContactsActive && !s.anyDeepOverlap &&
+                         w.settings.impactModel == ImpactModel::closed_form;
+    s.contactOverflowStart = 0;
+    if (!s.wideContactsOnly) {
+        prepareContacts(w, h, soft);  // leaves each colour's end in colourOffsets
+        if (!s.wideContactsActive) {
+            s.wideContacts.resizeForOverwrite(0);
+            return;
+        }
+        const int blocks = layoutWideBlocks(s, s.colourOffsets.data());
+        // Only the deep overlaps' push asks where a row went.
+        if (s.anyDeepOverlap) s.wideLaneOfRow.resize(static_cast<std::size_t>(s.contactOverflowStart));
+        const std::vector<int>& blockRows = s.wideBlockRows;
+        auto pack = [&](int b, int e) {
+            for (int k = b; k < e; ++k)
+                packWideContactBlock(s, k, blockRows[static_cast<std::size_t>(2 * k)],
+                                     blockRows[static_cast<std::size_t>(2 * k + 1)]);
+        };
+        w.runner.run(blocks, kPackGrain, pack);
+        return;
+    }
+    // colourOffsets holds each colour's first row, so the next colour's is its end.
+    layoutWideBlocks(s, s.colourOffsets.data() + 1);
+    const int overflow = s.contactOverflowStart;
+    s.contactOverflowStart = 0;  // the scalar rows are the overflow group's alone
+    s.rolling.clear();
+    // Each active contact's row, as prepareContacts places them (a stable
+    // counting sort by colour), -1 without one.
+    std::vector<int>& begin = s.colourBegin;
+    begin.assign(s.colourOffsets.begin(), s.colourOffsets.end());
+    const std::size_t activeCount = w.activeContacts.size();
+    s.rowContacts.resizeForOverwrite(activeCount);
+    for (std::size_t k = 0; k < activeCount; ++k) {
+        const std::uint8_t colour = s.contactColours[k];
+        s.rowContacts[k] = colour == kNoRow ? -1 : s.colourOffsets[colour]++;
+    }
+    s.constraints.resizeForOverwrite(static_cast<std::size_t>(s.rowCount - overflow));
+    // Contact by contact in slot order, which reads the contacts and bodies
+    // in the order they lie in memory; each row goes to its lane (or the
+    // overflow group's scalar row), so the contacts may be shared among the
+    // workers.
+    const RowContext x = makeRowContext(w, h, soft);
+    const float slop = w.settings.penetrationSlop;
+    auto prepare = [&](int first, int last) {
+        for (int k = first; k < last; ++k) {
+            const int row = s.rowContacts[static_cast<std::size_t>(k)];
+            if (row < 0) continue;
+            const int contact = w.activeContacts[static_cast<std::size_t>(k)];
+            if (row >= overflow) {
+                ContactConstraint& cc = s.constraints[static_cast<std::size_t>(row - overflow)];
+                prepareContactRow(w, x, contact, cc);
+                finishContactRow(x, slop, cc);
+                continue;
+            }
+            const std::size_t colour = s.contactColours[static_cast<std::size_t>(k)];
+            const int inColour = row - begin[colour];
+            WideContactBlock& block =
+                s.wideContacts[static_cast<std::size_t>(s.wideContactColourStart[colour] + inColour / 4)];
+            prepareWideContactLane(w, x, contact, block, inColour % 4);
+        }
     };
-    w.runner.run(blocks, kPackGrain, pack);
+    w.runner.run(static_cast<int>(activeCount), kPrepareGrain, prepare);
+    // The lanes past each colour's last row stay empty.
+    for (int c = 0; c < kColourCount; ++c) {
+        const int count = begin[static_cast<std::size_t>(c) + 1] - begin[static_cast<std::size_t>(c)];
+        if (count % 4 == 0) continue;
+        WideContactBlock& block =
+            s.wideContacts[static_cast<std::size_t>(s.wideContactColourStart[static_cast<std::size_t>(c) + 1] - 1)];
+        for (int lane = count % 4; lane < 4; ++lane) packEmptyWideContactLane(block, lane, x.zeroState);
+    }
 }
 
 // ---------------------------------------------------------------------------
@@ -306,17 +382,11 @@ constexpr int kJointSolvePasses = 1;
 // ---------------------------------------------------------------------------
 // The solve stage
 
-/// The solver arrays of this step's awake bodies; h is the (sub)step.
-void gatherBodies(WorldState& w, float h) {
+/// Bodies [first, last) of the awake list into the solver arrays.
+void gatherBodyRange(WorldState& w, float h, Vec2 g, int first, int last) {
     SolverArrays& s = w.solver;
     const std::vector<int>& awake = w.islands.awakeBodies;
-    const std::size_t n = awake.size();
-    const Vec2 g = w.settings.gravity;
-    s.states.resize(n + 1);
-    s.states[n] = BodyState{};  // the zero state for immovable sides of contacts
-    s.integration.resize(n);
-    s.stateBodies.resize(n);
-    for (std::size_t i = 0; i < n; ++i) {
+    for (std::size_t i = static_cast<std::size_t>(first); i < static_cast<std::size_t>(last); ++i) {
         const int b = awake[i];
         Body& body = w.bodies[b];
         body.solverIndex = static_cast<int>(i);
@@ -336,6 +406,24 @@ void gatherBodies(WorldState& w, float h) {
     }
 }
 
+/// The solver arrays of this step's awake bodies; h is the (sub)step. Each
+/// body on its own: shared among the workers.
+void gatherBodies(WorldState& w, float h) {
+    SolverArrays& s = w.solver;
+    const std::vector<int>& awake = w.islands.awakeBodies;
+    const std::size_t n = awake.size();
+    const Vec2 g = w.settings.gravity;
+    s.states.resize(n + 1);
+    s.states[n] = BodyState{};  // the zero state for immovable sides of contacts
+    s.integration.resize(n);
+    s.stateBodies.resize(n);
+    auto range = [&](int first, int last) { gatherBodyRange(w, h, g, first, last); };
+    w.runner.run(static_cast<int>(n), kBodyGrain, range);
+}
+
+using Clock = std::chrono::steady_clock;
+float msSince(Clock::time_point t0) { return std::chrono::duration<float, std::milli>(Clock::now() - t0).count(); }
+
 void solve(WorldState& w, float dt) {
     const WorldSettings& set = w.settings;
     SolverArrays& s = w.solver;
@@ -344,23 +432,22 @@ void solve(WorldState& w, float dt) {
     const float h = dt / static_cast<float>(substeps);
     const float maxSpeed = set.maxLinearSpeed;
 
+    const Clock::time_point prepareStart = Clock::now();
+    // Shared when the step will be (the rows are not counted yet).
+    w.runner.share(static_cast<int>(w.activeContacts.size()) + w.joints.count +
+                       static_cast<int>(w.islands.awakeBodies.size()) >=
+                   kParallelWork);
     gatherBodies(w, h);
     const std::size_t n = s.stateBodies.size();
     colourContacts(w);
-    // The step's work is shared with the task system's workers when it is
-    // large enough to gain from it (kParallelWork); the result is the same.
-    const bool parallel = w.tasks != nullptr && w.tasks->workerCount() > 1 &&
-                          s.rowCount + w.joints.count + static_cast<int>(n) >= kParallelWork;
-    w.runner.begin(parallel ? w.tasks : nullptr);
-    struct EndStages {
-        StageRunner& runner;
-        ~EndStages() { runner.end(); }
-    } endStages{w.runner};
+    // The solve is shared with the task system's workers when it is large
+    // enough to gain from it (kParallelWork); the result is the same.
+    w.runner.share(s.rowCount + w.joints.count + static_cast<int>(n) >= kParallelWork);
     s.positionUpdates = 0;
-    prepareContacts(w, h, soft);
+    prepareContactRows(w, h, soft);
     if (soft && s.anyDeepOverlap) prepareDeepOverlaps(w);
-    packContactColours(w, soft);
     prepareJoints(w, dt);
+    w.profile.prepare = msSince(prepareStart);
     // Joint stiffness capped at 1/4 of the substep rate, so jointHertz 60 holds
     // at 4 substeps as in Box2D v3 (twice its contact hertz). Swept by one
     // Gauss-Seidel pass, a 100:1 chain of distance joints diverged at this
@@ -422,7 +509,10 @@ void solve(WorldState& w, float dt) {
             joints(SolvePass::soft_relax);
             contacts(i + 1 == substeps ? SolvePass::soft_relax_last : SolvePass::soft_relax, h);
         }
-        if (s.wideContactsActive) {  // restitution and the store read the rows
+        if (s.wideContactsOnly) {  // blocks without rows store into their contacts
+            auto store = [&](int b, int e) { storeWideContacts(s, w.contacts, b, e); };
+            w.runner.run(static_cast<int>(s.wideContacts.size()), kPackGrain, store);
+        } else if (s.wideContactsActive) {  // restitution and the store read the rows
             auto back = [&](int b, int e) { writeBackWideContacts(s, b, e); };
             w.runner.run(static_cast<int>(s.wideContacts.size()), kPackGrain, back);
         }
@@ -509,17 +599,17 @@ void releaseLargeStepArrays(WorldState& w) {
     releaseIfLarge(s.biasW);
     releaseIfLarge(s.constraints);
     releaseIfLarge(s.wideContacts);
+    releaseIfLarge(s.rowContacts);
     releaseIfLarge(s.contactColours);
     releaseIfLarge(s.colourBits);
     releaseIfLarge(s.deepContactCount);
     releaseIfLarge(w.activeContacts);
     releaseIfLarge(w.gatherScratch);
+    releaseIfLarge(w.collideUpdates);
+    releaseIfLarge(w.broadPhase.proxyLeaves);
     releaseIfLarge(w.impactChanged);
     releaseIfLarge(w.islands.unionParent);
 }
-
-using Clock = std::chrono::steady_clock;
-float msSince(Clock::time_point t0) { return std::chrono::duration<float, std::milli>(Clock::now() - t0).count(); }
 
 }  // namespace
 
@@ -541,6 +631,18 @@ void stepWorld(WorldState& w, float dt) {
     updatePairs(w);
     profile.pairs = msSince(t);
 
+    // The helpers of a large step start before the narrowphase and stay
+    // until the proxies are refreshed: one hand-over per step. Started for the solve
+    // alone, they woke too late to share a narrowphase of half a millisecond.
+    const int work = w.contacts.count + w.joints.count + static_cast<int>(w.islands.awakeBodies.size());
+    const bool parallel = w.tasks != nullptr && w.tasks->workerCount() > 1 && work >= kParallelWork;
+    w.runner.begin(parallel ? w.tasks : nullptr);
+    struct EndStages {
+        StageRunner& runner;
+        void end() { runner.end(); }
+        ~EndStages() { runner.end(); }
+    } stages{w.runner};
+
     t = Clock::now();
     collide(w);
     profile.collide = msSince(t);
@@ -556,7 +658,8 @@ void stepWorld(WorldState& w, float dt) {
     t = Clock::now();
     if (w.settings.enableContinuous) solveContinuous(w, dt);
     profile.sweeps = msSince(t);
-    for (int b : w.islands.awakeBodies) synchronizeProxies(w, b, dt);
+    refreshProxies(w, dt);
+    stages.end();
     profile.continuous = msSince(t);
 
     t = Clock::now();

@@ -45,6 +45,7 @@ struct SolverArrays {
     std::vector<std::uint32_t> bodyColours;  ///< per state: the joint colours its rows took (joint_solver.cpp)
     std::vector<int> deepContactCount;       ///< per state: contacts overlapping deeper than kDeepOverlap
     bool anyDeepOverlap = false;             ///< some row overlaps deeper than kDeepOverlap this step
+    bool anyRollingRow = false;              ///< some row gets a rolling-resistance row this step
     std::vector<int> deepRows;               ///< the rows that do, ascending (contact_solver.cpp)
     std::vector<int> wideLaneOfRow;          ///< per row of a wide block: block·4 + lane (wide_contact.cpp)
     std::vector<SidePush> sidePushes;        ///< deep rows pushed sideways, in row order (deep_overlap.cpp)
@@ -53,6 +54,9 @@ struct SolverArrays {
     std::vector<RollingConstraint> rolling;       ///< contacts with rolling resistance (contact_solver.cpp)
     ScratchArray<WideContactBlock> wideContacts;  ///< the coloured contact rows four at a time (wide_contact.cpp)
     bool wideContactsActive = false;              ///< this step solves them so
+    bool wideContactsOnly = false;                ///< ... prepared without scalar rows (solver.cpp)
+    ScratchArray<int> rowContacts;                ///< then: each active contact's row, −1 for none
+    std::vector<int> colourBegin;                 ///< then: each colour's first row
     std::vector<int> wideContactColourStart;      ///< per colour: its first block; then the block count
     std::vector<int> wideBlockRows;               ///< per block: its first row and its colour's end
     int contactOverflowStart = 0;                 ///< the first row of the scalar rest (the overflow group)

@@ -36,6 +36,7 @@ void relax(int& spins) {
 void StageRunner::begin(TaskSystem* tasks) {
     tasks_ = tasks;
     handleActive_ = false;
+    share_ = true;
     if (tasks == nullptr || tasks->workerCount() < 2) return;
     exit_.store(false, std::memory_order_relaxed);
     // Helpers start by waiting for an epoch after the current one.
@@ -70,7 +71,7 @@ void StageRunner::work(std::uint32_t epoch, StageFn fn, void* context, int count
 void StageRunner::run(StageFn fn, void* context, int count, int grain) {
     if (count <= 0) return;
     // One chunk's work is not worth a hand-over: the caller does it alone.
-    if (!handleActive_ || count <= grain) {
+    if (!handleActive_ || !share_ || count <= grain) {
         fn(context, 0, count);
         return;
     }

@@ -15,6 +15,14 @@
 
 namespace i2d::detail {
 
+/// Items (contact rows, joints and awake bodies for the solve; contacts for
+/// the narrowphase) from which a step shares a stage with the task system's
+/// workers: below, a colour's sweep takes a few microseconds and handing it
+/// out costs more than it saves (joint_grid, 2,600 items, and rain1000,
+/// 3,000, ran slower on two workers than on one); pyramid100 (15,000) gained
+/// a fifth.
+inline constexpr int kParallelWork = 4096;
+
 class StageRunner {
 public:
     using StageFn = void (*)(void* context, int begin, int end);
@@ -25,6 +33,10 @@ public:
     /// Releases the helpers and waits for them (TaskSystem::finish).
     void end();
     bool parallel() const { return handleActive_; }
+    /// Whether run() hands the next stages to the helpers (when begun with
+    /// them) or runs them on the caller: a stage too small to gain from
+    /// helpers that are already waiting.
+    void share(bool on) { share_ = on; }
 
     /// Runs fn over [0, count) in chunks of `grain` items; returns when all are done.
     void run(StageFn fn, void* context, int count, int grain);
@@ -56,6 +68,7 @@ private:
     TaskSystem* tasks_ = nullptr;
     void* handle_ = nullptr;
     bool handleActive_ = false;
+    bool share_ = true;
 };
 
 }  // namespace i2d::detail

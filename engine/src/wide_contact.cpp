@@ -1,54 +1,90 @@
-// Four contact manifolds at a time (see wide_contact.hpp): packing the rows
-// into blocks, the four-lane policy of the sweeps (wide_contact_kernel.hpp
-// holds the sweeps, wide_avx2.cpp the eight-lane policy), the choice
-// between four and eight lanes, and the write-back to the rows.
+// Four contact manifolds at a time (see wide_contact.hpp): packing rows into
+// blocks or preparing lanes straight from the contacts, the four-lane policy
+// of the sweeps (wide_contact_kernel.hpp holds the sweeps, wide_avx2.cpp the
+// eight-lane policy), the choice between four and eight lanes, and the
+// write-back and store of the impulses.
 #include "wide_contact.hpp"
 
 #include "solver.hpp"
 #include "wide_contact_kernel.hpp"
 #include "wide_lanes4.hpp"
+#include "world_state.hpp"
 
 namespace i2d::detail {
 
+namespace {
+
+/// Lane `lane` of block k from row cc (null: an empty lane), every field written.
+inline void packLane(WideContactBlock& k, int lane, const ContactConstraint* cc, int row, int zero) {
+    const bool used = cc != nullptr;
+    k.a[lane] = used ? cc->a : zero;
+    k.b[lane] = used ? cc->b : zero;
+    k.row[lane] = used ? row : -1;
+    k.contact[lane] = used ? cc->contact : -1;
+    k.nx[lane] = used ? cc->normal.x : 0.0f, k.ny[lane] = used ? cc->normal.y : 0.0f;
+    k.friction[lane] = used ? cc->friction : 0.0f;
+    k.tangentSpeed[lane] = used ? cc->tangentSpeed : 0.0f;
+    k.mA[lane] = used ? cc->invMassA : 0.0f, k.iA[lane] = used ? cc->invIA : 0.0f;
+    k.mB[lane] = used ? cc->invMassB : 0.0f, k.iB[lane] = used ? cc->invIB : 0.0f;
+    k.biasRate[lane] = used ? cc->biasRate : 0.0f;
+    k.massScale[lane] = used ? cc->massScale : 1.0f;
+    k.impulseScale[lane] = used ? cc->impulseScale : 0.0f;
+    k.maxPush[lane] = used ? cc->maxPush : 0.0f;
+    k.pairScale[lane] = used ? cc->pairScale : 1.0f;
+    k.together[lane] = used && cc->pointsTogether ? 1.0f : 0.0f;
+    k.roundA[lane] = used && cc->roundA ? 1.0f : 0.0f;
+    k.roundB[lane] = used && cc->roundB ? 1.0f : 0.0f;
+    k.deep[lane] = used && cc->deepOverlap ? 1.0f : 0.0f;
+    for (int j = 0; j < 2; ++j) {
+        WideContactPoint& p = k.points[j];
+        const bool present = used && j < cc->pointCount;
+        const ContactPointConstraint* cp = present ? &cc->points[j] : nullptr;
+        p.rAx[lane] = present ? cp->rA.x : 0.0f, p.rAy[lane] = present ? cp->rA.y : 0.0f;
+        p.rBx[lane] = present ? cp->rB.x : 0.0f, p.rBy[lane] = present ? cp->rB.y : 0.0f;
+        p.adjustedSeparation[lane] = present ? cp->adjustedSeparation : 0.0f;
+        p.normalMass[lane] = present ? cp->normalMass : 0.0f;
+        p.tangentMass[lane] = present ? cp->tangentMass : 0.0f;
+        p.normalImpulse[lane] = present ? cp->normalImpulse : 0.0f;
+        p.tangentImpulse[lane] = present ? cp->tangentImpulse : 0.0f;
+        p.maxNormalImpulse[lane] = present ? cp->maxNormalImpulse : 0.0f;
+        p.present[lane] = present ? 1.0f : 0.0f;
+    }
+}
+
+}  // namespace
+
 void packWideContactBlock(SolverArrays& s, int block, int start, int last) {
     const int zero = static_cast<int>(s.states.size()) - 1;
-    {
-        WideContactBlock& k = s.wideContacts[static_cast<std::size_t>(block)];
+    WideContactBlock& k = s.wideContacts[static_cast<std::size_t>(block)];
+    for (int lane = 0; lane < 4; ++lane) {
+        const int r = start + lane;
+        packLane(k, lane, r < last ? &s.constraints[static_cast<std::size_t>(r)] : nullptr, r, zero);
+        if (r < last && s.anyDeepOverlap) s.wideLaneOfRow[static_cast<std::size_t>(r)] = 4 * block + lane;
+    }
+}
+
+void prepareWideContactLane(const WorldState& w, const RowContext& x, int contact, WideContactBlock& k, int lane) {
+    // The scalar row's own preparation, on the stack: the lane holds exactly
+    // what packing that row would have given.
+    ContactConstraint cc;
+    prepareContactRow(w, x, contact, cc);
+    finishContactRow(x, w.settings.penetrationSlop, cc);
+    packLane(k, lane, &cc, -1, x.zeroState);
+}
+
+void packEmptyWideContactLane(WideContactBlock& k, int lane, int zeroState) {
+    packLane(k, lane, nullptr, -1, zeroState);
+}
+
+void storeWideContacts(SolverArrays& s, SlotArray<Contact>& contacts, int firstBlock, int lastBlock) {
+    for (int i = firstBlock; i < lastBlock; ++i) {
+        const WideContactBlock& k = s.wideContacts[static_cast<std::size_t>(i)];
         for (int lane = 0; lane < 4; ++lane) {
-            const int r = start + lane;
-            const bool used = r < last;
-            const ContactConstraint* cc = used ? &s.constraints[static_cast<std::size_t>(r)] : nullptr;
-            k.a[lane] = used ? cc->a : zero;
-            k.b[lane] = used ? cc->b : zero;
-            k.row[lane] = used ? r : -1;
-            if (used && s.anyDeepOverlap) s.wideLaneOfRow[static_cast<std::size_t>(r)] = 4 * block + lane;
-            k.nx[lane] = used ? cc->normal.x : 0.0f, k.ny[lane] = used ? cc->normal.y : 0.0f;
-            k.friction[lane] = used ? cc->friction : 0.0f;
-            k.tangentSpeed[lane] = used ? cc->tangentSpeed : 0.0f;
-            k.mA[lane] = used ? cc->invMassA : 0.0f, k.iA[lane] = used ? cc->invIA : 0.0f;
-            k.mB[lane] = used ? cc->invMassB : 0.0f, k.iB[lane] = used ? cc->invIB : 0.0f;
-            k.biasRate[lane] = used ? cc->biasRate : 0.0f;
-            k.massScale[lane] = used ? cc->massScale : 1.0f;
-            k.impulseScale[lane] = used ? cc->impulseScale : 0.0f;
-            k.maxPush[lane] = used ? cc->maxPush : 0.0f;
-            k.pairScale[lane] = used ? cc->pairScale : 1.0f;
-            k.together[lane] = used && cc->pointsTogether ? 1.0f : 0.0f;
-            k.roundA[lane] = used && cc->roundA ? 1.0f : 0.0f;
-            k.roundB[lane] = used && cc->roundB ? 1.0f : 0.0f;
-            k.deep[lane] = used && cc->deepOverlap ? 1.0f : 0.0f;
-            for (int j = 0; j < 2; ++j) {
-                WideContactPoint& p = k.points[j];
-                const bool present = used && j < cc->pointCount;
-                const ContactPointConstraint* cp = present ? &cc->points[j] : nullptr;
-                p.rAx[lane] = present ? cp->rA.x : 0.0f, p.rAy[lane] = present ? cp->rA.y : 0.0f;
-                p.rBx[lane] = present ? cp->rB.x : 0.0f, p.rBy[lane] = present ? cp->rB.y : 0.0f;
-                p.adjustedSeparation[lane] = present ? cp->adjustedSeparation : 0.0f;
-                p.normalMass[lane] = present ? cp->normalMass : 0.0f;
-                p.tangentMass[lane] = present ? cp->tangentMass : 0.0f;
-                p.normalImpulse[lane] = present ? cp->normalImpulse : 0.0f;
-                p.tangentImpulse[lane] = present ? cp->tangentImpulse : 0.0f;
-                p.maxNormalImpulse[lane] = present ? cp->maxNormalImpulse : 0.0f;
-                p.present[lane] = present ? 1.0f : 0.0f;
+            if (k.contact[lane] < 0) continue;
+            Contact& ct = contacts[k.contact[lane]];
+            for (int j = 0; j < ct.manifold.pointCount; ++j) {
+                ct.normalImpulse[j] = k.points[j].normalImpulse[lane];
+                ct.tangentImpulse[j] = k.points[j].tangentImpulse[lane];
             }
         }
     }
@@ -98,8 +134,8 @@ void warmStartWideContacts(SolverArrays& s, int firstBlock, int lastBlock) {
 }
 
 void solveWideContacts(SolverArrays& s, SolvePass pass, float h, bool leaveImpacts, float impactSpeed, int firstBlock,
-                       int lastBlock) {
-    const SweepParams sp{1.0f / h, -impactSpeed, pass == SolvePass::soft_bias, leaveImpacts};
+                       int lastBlock, bool trackMax) {
+    const SweepParams sp{1.0f / h, -impactSpeed, pass == SolvePass::soft_bias, leaveImpacts, trackMax};
 #if defined(I2D_AVX2_KERNEL)
     if (wideLanes() == 8 && lastBlock > firstBlock)
         firstBlock = solveWideContactsAvx2(&s.wideContacts[0], s.states.data(), sp, firstBlock, lastBlock);

@@ -19,6 +19,7 @@
 namespace i2d::detail {
 
 struct SolverArrays;
+struct WorldState;
 
 /// One of the two points of four manifolds.
 struct WideContactPoint {
@@ -32,7 +33,8 @@ struct WideContactPoint {
 /// both sides with zero masses and no points.
 struct WideContactBlock {
     int a[4], b[4];  ///< solver state indices
-    int row[4];      ///< the row in SolverArrays::constraints, −1 for an empty lane
+    int row[4];      ///< the row in SolverArrays::constraints, −1 for an empty lane or one prepared without a row
+    int contact[4];  ///< the contact slot, −1 for an empty lane
     float nx[4], ny[4];
     float friction[4], tangentSpeed[4];
     float mA[4], iA[4], mB[4], iB[4];
@@ -47,12 +49,24 @@ struct WideContactBlock {
 /// (of one colour, which ends at `last`) into block `block` of
 /// s.wideContacts (sized by the caller), every field written.
 void packWideContactBlock(SolverArrays& s, int block, int start, int last);
+/// Prepares lane `lane` of block k straight from contact slot `contact`,
+/// with no scalar row (row −1): the lane holds what packWideContactBlock
+/// makes of the row prepareContacts writes. Writes that lane only, so the
+/// lanes may be prepared on any worker.
+void prepareWideContactLane(const WorldState& w, const RowContext& x, int contact, WideContactBlock& k, int lane);
+/// Lane `lane` of block k empty: the zero state on both sides, no points.
+void packEmptyWideContactLane(WideContactBlock& k, int lane, int zeroState);
+/// The accumulated impulses of blocks [firstBlock, lastBlock) into their
+/// contacts for the next step's warm start (the store of blocks without rows).
+void storeWideContacts(SolverArrays& s, SlotArray<Contact>& contacts, int firstBlock, int lastBlock);
 void warmStartWideContacts(SolverArrays& s, int firstBlock, int lastBlock);
 /// One sweep of blocks [firstBlock, lastBlock) in a soft_step pass: soft_bias,
 /// soft_relax or soft_relax_last (`leaveImpacts`: the last relax with the
 /// closed-form impact law, see contact_solver.cpp).
+/// `trackMax` false leaves maxNormalImpulse alone: only the velocity-bias
+/// restitution pass reads it, through the rows (writeBackWideContacts).
 void solveWideContacts(SolverArrays& s, SolvePass pass, float h, bool leaveImpacts, float impactSpeed, int firstBlock,
-                       int lastBlock);
+                       int lastBlock, bool trackMax = true);
 /// The accumulated impulses of blocks [firstBlock, lastBlock) back into their
 /// rows (for restitution and the store, which read the rows).
 void writeBackWideContacts(SolverArrays& s, int firstBlock, int lastBlock);

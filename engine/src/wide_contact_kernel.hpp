@@ -88,6 +88,7 @@ struct SweepParams {
     float minusImpactSpeed;
     bool softBias;
     bool leaveImpacts;
+    bool trackMax;  ///< keep maxNormalImpulse (only the velocity-bias restitution reads it, through the rows)
 };
 
 template <class L>
@@ -144,6 +145,7 @@ I2D_KERNEL void solveBlock(const L& k, BodyState* states, const SweepParams& sp)
     V increment[2];
     M acts[2];
     auto raiseMax = [&](int j, M m) {
+        if (!sp.trackMax) return;
         const V old = k.load(j, &WideContactPoint::maxNormalImpulse);
         k.store(j, &WideContactPoint::maxNormalImpulse, select(m, maxv<V, M>(old, increment[j]), old));
     };

@@ -45,6 +45,7 @@ struct WorldState {
     // Per-step lists of the narrowphase and the impact stage.
     std::vector<int> activeContacts;  ///< contacts with an awake body, updated this step, slot order
     std::vector<int> gatherScratch;
+    std::vector<std::uint8_t> collideUpdates;  ///< per gathered contact: what its manifold update found (contact.cpp)
     std::vector<std::uint32_t> impactChanged;
 
     // Callbacks (World::setCustomFilter, setPreSolve); empty when not set.

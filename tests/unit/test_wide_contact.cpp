@@ -9,6 +9,7 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <cstring>
 #include <random>
 
 #include "contact_solver.hpp"
@@ -137,6 +138,89 @@ TEST(WideContact, AgreesBitForBitWithTheScalarRowsInEightLanes) {
     limitWideLanes(8);
     if (wideLanes() != 8) GTEST_SKIP() << "no AVX2 on this CPU (or a portable build)";
     expectAgreement(8);
+}
+
+// The soft step with closed-form impacts prepares each lane straight from its
+// contact (prepareWideContactLane), without a scalar row: every lane must hold
+// the same bits as the row prepareContacts writes, packed.
+TEST(WideContact, LanesPreparedFromContactsMatchThePackedRows) {
+    for (unsigned seed = 1; seed <= 20; ++seed) {
+        WorldState w({}, 1);
+        std::mt19937 rng(seed);
+        std::uniform_real_distribution<float> u(-1.0f, 1.0f), m(0.05f, 3.0f), unit(0.0f, 1.0f);
+        const int bodyCount = 16;
+        int awake = 0;
+        for (int i = 0; i < bodyCount; ++i) {
+            Body& b = w.bodies[w.bodies.allocate()];
+            const bool moves = i % 5 != 0;  // every fifth is static: the zero state
+            b.type = moves ? BodyType::dynamic_body : BodyType::static_body;
+            b.invMass = moves ? m(rng) : 0.0f;
+            b.invInertia = moves ? m(rng) : 0.0f;
+            b.center = {5.0f * u(rng), 5.0f * u(rng)};
+            b.localCenter = {0.1f * u(rng), 0.1f * u(rng)};
+            b.v = {3.0f * u(rng), 3.0f * u(rng)};
+            b.w = 3.0f * u(rng);
+            b.solverIndex = moves ? awake++ : kNullIndex;
+        }
+        SolverArrays& s = w.solver;
+        s.states.assign(static_cast<std::size_t>(awake) + 1, BodyState{});
+        const int n = 37;  // not a multiple of four: the last block has empty lanes
+        for (int k = 0; k < n; ++k) {
+            const int c = w.contacts.allocate();
+            Contact& ct = w.contacts[c];
+            ct.bodyA = 1 + (k % (bodyCount - 1));  // never two static sides
+            ct.bodyB = (ct.bodyA + 1 + k % 3) % bodyCount;
+            if (ct.bodyB % 5 == 0 && ct.bodyA % 5 == 0) ct.bodyB = 1;
+            ct.touching = true;
+            const float angle = 6.2831853f * unit(rng);
+            ct.manifold.normal = {std::cos(angle), std::sin(angle)};
+            ct.manifold.pointCount = unit(rng) < 0.3f ? 1 : 2;
+            for (int j = 0; j < ct.manifold.pointCount; ++j) {
+                ct.manifold.points[j].point = {5.0f * u(rng), 5.0f * u(rng)};
+                ct.manifold.points[j].separation = 0.03f * u(rng);
+                ct.normalImpulse[j] = unit(rng);
+                ct.tangentImpulse[j] = 0.5f * u(rng);
+            }
+            ct.friction = unit(rng);
+            ct.restitution = unit(rng) < 0.5f ? unit(rng) : 0.0f;
+            ct.roundA = unit(rng) < 0.3f;
+            ct.roundB = unit(rng) < 0.3f;
+            ct.framed = unit(rng) < 0.5f;  // a kept manifold's arms come from its frame
+            if (ct.framed) {
+                const float a = u(rng), r = u(rng);
+                ct.frame.rotationA = {std::cos(a), std::sin(a)};
+                ct.frame.relative = {{u(rng), u(rng)}, {std::cos(r), std::sin(r)}};
+                ct.frame.anchorA[0] = {u(rng), u(rng)};
+                ct.frame.anchorA[1] = {u(rng), u(rng)};
+            }
+            w.activeContacts.push_back(c);
+        }
+        // One colour holding every row, in contact order.
+        s.rowCount = n;
+        s.contactColours.assign(static_cast<std::size_t>(n), 0);
+        s.colourOffsets.assign(25, n);
+        s.colourOffsets[0] = 0;
+        const float h = 1.0f / 240.0f;
+        prepareContacts(w, h, true);
+        const int blocks = (n + 3) / 4;
+        s.wideContacts.resizeForOverwrite(static_cast<std::size_t>(blocks));
+        const RowContext x = makeRowContext(w, h, true);
+        for (int block = 0; block < blocks; ++block) {
+            packWideContactBlock(s, block, 4 * block, n);
+            WideContactBlock direct;
+            for (int lane = 0; lane < 4; ++lane) {
+                const int r = 4 * block + lane;
+                if (r < n)
+                    prepareWideContactLane(w, x, w.activeContacts[static_cast<std::size_t>(r)], direct, lane);
+                else
+                    packEmptyWideContactLane(direct, lane, x.zeroState);
+            }
+            WideContactBlock packed = s.wideContacts[static_cast<std::size_t>(block)];
+            for (int lane = 0; lane < 4; ++lane) packed.row[lane] = direct.row[lane] = 0;  // a row only when packed
+            ASSERT_EQ(std::memcmp(&packed, &direct, sizeof(WideContactBlock)), 0)
+                << "seed " << seed << " block " << block;
+        }
+    }
 }
 
 }  // namespace

@@ -341,6 +341,7 @@ struct Profile {
     float collide = 0.0f;
     float impacts = 0.0f;
     float solve = 0.0f;
+    float prepare = 0.0f;     ///< colouring and preparing the solver rows (part of `solve`)
     float continuous = 0.0f;  ///< continuous collision and bounding-box refresh
     float sweeps = 0.0f;      ///< continuous collision alone (part of `continuous`)
     float sleep = 0.0f;
