@@ -142,8 +142,9 @@ I2D_KERNEL void solveBlock(const L& k, BodyState* states, const SweepParams& sp)
         const M speculative = sep > zero;
         skip[j] = sp.leaveImpacts ? speculative & (relativeSpeed(v, r, nx, ny) < minusImpactSpeed) : M{};
         if (sp.softBias) {
-            bias[j] = select(speculative, sep * invH,
-                             maxv<V, M>(k.load(&WideContactBlock::biasRate) * sep, -k.load(&WideContactBlock::maxPush)));
+            bias[j] = select(
+                speculative, sep * invH,
+                maxv<V, M>(k.load(&WideContactBlock::biasRate) * sep, -k.load(&WideContactBlock::maxPush)));
             ms[j] = select(speculative, one, k.load(&WideContactBlock::massScale));
             is[j] = select(speculative, zero, k.load(&WideContactBlock::impulseScale));
         } else {
@@ -193,8 +194,8 @@ I2D_KERNEL void solveBlock(const L& k, BodyState* states, const SweepParams& sp)
         const V vt = relativeSpeed(v, arms[j], tx, ty) - tangentSpeed;
         const V lambda = k.load(j, &WideContactPoint::tangentImpulse);
         const V maxFriction = friction * k.load(j, &WideContactPoint::normalImpulse);
-        const V next =
-            clampv<V, M>(lambda + (-k.load(j, &WideContactPoint::tangentMass)) * vt, -maxFriction, maxFriction);
+        const V next = clampv<V, M>(lambda + (-k.load(j, &WideContactPoint::tangentMass)) * vt, -maxFriction,
+                                    maxFriction);
         const V impulse = next - lambda;
         k.store(j, &WideContactPoint::tangentImpulse, select(present[j], next, lambda));
         applyMasked<V, M>(present[j], arms[j], impulse * tx, impulse * ty, mA, iA, mB, iB, v);
@@ -204,6 +205,5 @@ I2D_KERNEL void solveBlock(const L& k, BodyState* states, const SweepParams& sp)
     k.scatter(states, true, A);
     k.scatter(states, false, B);
 }
-
 
 }  // namespace i2d::detail
