@@ -169,8 +169,9 @@ PileFigures groundPile(Kind kind, int count, unsigned seed) {
 // do not show (a body knocked within the step by a third, a turn bringing
 // another corner in) stays within the soft contacts' usual sag. No tolerance
 // is added to the bound: over 36 layouts not used to develop this
-// (12 boxes, circles and capsules at one point 5 and 10 m up, seeds 201 to
-// 701) the deepest at 2 s was at most 1.4 cm; here 0.6 cm.
+// (12 boxes, circles and capsules at one point 5 and 10 m up, seeds 1009,
+// 2003, 3001, 4007, 5003, 6007) the deepest at 2 s was at most 1.3 cm; here
+// 0.6 cm.
 TEST(OverlapPiles, InTheAirAtOnePoint) {
     for (Kind kind : {Kind::box, Kind::circle, Kind::capsule})
         for (unsigned seed : {11u, 23u}) {
