@@ -86,6 +86,23 @@ void resolveImpacts(WorldState& w, float dt) {
     // changed[b] == the sweep in which body b's velocity last changed.
     std::vector<std::uint32_t>& changed = w.impactChanged;
     changed.assign(static_cast<std::size_t>(w.bodies.capacity()), 0u);
+    // hitTime[c] == when contact c was struck in this step, −1 while it was
+    // not; bodyTime[b] the same for body b's first impact.
+    std::vector<float>& hitTime = w.impactTime;
+    hitTime.assign(static_cast<std::size_t>(w.contacts.capacity()), -1.0f);
+    std::vector<float>& bodyTime = w.impactBodyTime;
+    bodyTime.assign(static_cast<std::size_t>(w.bodies.capacity()), -1.0f);
+    // Moves body b's start so that the step ends as flight until its first
+    // impact and the changed velocity after it (timing above).
+    auto shiftStart = [&](Body& body, int b, float tHit, Vec2 dv, float dw) {
+        float& first = bodyTime[static_cast<std::size_t>(b)];
+        if (first < 0.0f) first = tHit;
+        if (first <= 0.0f) return;
+        keepStepStart(body, w.stepStamp);
+        body.center += first * dv;
+        body.xf.q = integrateRotation(body.xf.q, first * dw);
+        body.xf.p = body.center - rotate(body.xf.q, body.localCenter);
+    };
 
     for (int sweep = 1; sweep <= kMaxSweeps; ++sweep) {
         bool any = false;
@@ -129,7 +146,15 @@ void resolveImpacts(WorldState& w, float dt) {
             approach *= inv;
 
             // Time of impact within the step and the velocities then (timing above).
-            const float tHit = closingTime(gap, approach + an * halfSubstep, an, dt);
+            // A pair struck again in a later sweep (a body of it was struck by
+            // a third meanwhile) is struck at the moment it first met: its gap
+            // closed then. Timed again from the start's gap at the new, slower
+            // approach, each repeat moved the pair's start positions by about
+            // the gap again, into each other, where its rows (keeping the
+            // start's gap) could not see it.
+            float& firstHit = hitTime[static_cast<std::size_t>(c)];
+            const float tHit = firstHit >= 0.0f ? firstHit : closingTime(gap, approach + an * halfSubstep, an, dt);
+            firstHit = tHit;
             const Vec2 vA0 = A.v + (halfSubstep + tHit) * accA;
             const Vec2 vB0 = B.v + (halfSubstep + tHit) * accB;
             const float wB0 = B.w, wA0 = A.w;
@@ -161,20 +186,10 @@ void resolveImpacts(WorldState& w, float dt) {
                 A.v = vAAfter - (tHit + halfSubstep) * accA;
                 A.w = static_cast<float>(r.wB);
             }
-            if (tHit > 0.0f) {
-                if (bMoves) {
-                    keepStepStart(B, w.stepStamp);
-                    B.center += tHit * (vB0 - vBAfter);
-                    B.xf.q = integrateRotation(B.xf.q, tHit * (wB0 - B.w));
-                    B.xf.p = B.center - rotate(B.xf.q, B.localCenter);
-                }
-                if (aMoves) {
-                    keepStepStart(A, w.stepStamp);
-                    A.center += tHit * (vA0 - vAAfter);
-                    A.xf.q = integrateRotation(A.xf.q, tHit * (wA0 - A.w));
-                    A.xf.p = A.center - rotate(A.xf.q, A.localCenter);
-                }
-            }
+            // Each body's velocity changes at its first impact of the step
+            // (below, "Cascades").
+            if (bMoves) shiftStart(B, ct.bodyB, tHit, vB0 - vBAfter, wB0 - B.w);
+            if (aMoves) shiftStart(A, ct.bodyA, tHit, vA0 - vAAfter, wA0 - A.w);
             // The solver must not undo the bounce with stale warm-start impulses.
             ct.normalImpulse[0] = ct.normalImpulse[1] = 0.0f;
             ct.tangentImpulse[0] = ct.tangentImpulse[1] = 0.0f;

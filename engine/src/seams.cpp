@@ -198,7 +198,11 @@ void applyChainRule(const WorldState& w, const Shape& chain, const Shape& moving
     }
     if (dot(n, front) >= kFaceAlignment) return;  // the face normal
     const Vec2 g1 = transformPoint(xf, chain.ghost1), g2 = transformPoint(xf, chain.ghost2);
-    int kept = 0;
+    // The manifold has one normal: a ghost at one end is a ghost for the
+    // whole segment. A body's face reaching over the segment (the box's
+    // front face sliding along a flat chain) clips both of its ends; the far
+    // one, kept by a fast body's speculative margin, carried the ghost normal
+    // past the near end's rule and stopped the box.
     for (int i = 0; i < m.pointCount; ++i) {
         const ManifoldPoint& pt = m.points[i];
         const Vec2 p = pt.point - 0.5f * pt.separation * n;
@@ -207,9 +211,11 @@ void applyChainRule(const WorldState& w, const Shape& chain, const Shape& moving
             ghost = dot(n, normalize(g1 - p1)) > kLean;
         else if (distance(p, p2) <= kShareTolerance && distance(g2, p2) > 0.0f)
             ghost = dot(n, normalize(g2 - p2)) > kLean;
-        if (!ghost) m.points[kept++] = pt;
+        if (ghost) {
+            m.pointCount = 0;
+            return;
+        }
     }
-    m.pointCount = kept;
 }
 
 }  // namespace

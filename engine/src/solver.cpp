@@ -608,6 +608,8 @@ void releaseLargeStepArrays(WorldState& w) {
     releaseIfLarge(w.collideUpdates);
     releaseIfLarge(w.broadPhase.proxyLeaves);
     releaseIfLarge(w.impactChanged);
+    releaseIfLarge(w.impactTime);
+    releaseIfLarge(w.impactBodyTime);
     releaseIfLarge(w.islands.unionParent);
 }
 
@@ -625,6 +627,7 @@ void stepWorld(WorldState& w, float dt) {
     // The last step's events go; end events caused since arrive (events.hpp).
     w.events.beginStep();
 
+    w.stepDt = dt;
     Profile& profile = w.profile;
     auto t0 = Clock::now();
     auto t = t0;

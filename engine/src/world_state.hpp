@@ -47,6 +47,7 @@ struct WorldState {
     std::vector<int> gatherScratch;
     std::vector<std::uint8_t> collideUpdates;  ///< per gathered contact: what its manifold update found (contact.cpp)
     std::vector<std::uint32_t> impactChanged;
+    std::vector<float> impactTime, impactBodyTime;
 
     // Callbacks (World::setCustomFilter, setPreSolve); empty when not set.
     /// The game's task system (World::setTaskSystem), not owned; null: one thread.
@@ -62,6 +63,7 @@ struct WorldState {
 
     Profile profile{};
     std::uint32_t stepStamp = 0;
+    float stepDt = 0.0f;    ///< the step's Δt, set as it begins (the narrowphase's speculative margins)
     bool locked = false;    ///< true while stepping or drawing (see checkUnlocked)
     bool stepping = false;  ///< true inside step(): end events go to this step's lists, not the pending ones
 

@@ -13,9 +13,8 @@
 //    over its start plus the potential energy that lifting the bodies just
 //    out of the ground needs (at most 1.02; for piles in the air that is the
 //    start).
-// The piles deep in the ground meet every bound, the piles in the air every
-// one but the deepest contact at 2 s, which a fast hit between two moving
-// bodies can exceed (InTheAirAtOnePoint says why); the piles on the ground
+// The piles deep in the ground and the 12-body piles in the air meet every
+// bound (InTheAirAtOnePoint says how fast hits stay shallow); the piles on the ground
 // meet the separation and speed bounds and are held near the others
 // (OnTheGround says why). The ground piles' seeds were drawn after the
 // sideways push was written and were not used to develop it.
@@ -161,12 +160,18 @@ PileFigures groundPile(Kind kind, int count, unsigned seed) {
 }
 
 // Nothing is thrown and no energy is made; the overlaps the pile was created
-// with are gone before 2 s. At 2 s itself bodies may still be sliding off
-// the heap and hitting others at 5-7 m/s, which a step carries 8-12 cm,
-// beyond the 2 cm speculative distance between two moving bodies: such a
-// hit is 2 to 7 cm deep for a step or two (capsules, seed 11: 0.5 cm deep at
-// 1.9 s, 2.6 cm at 1.98 s, 2.0 cm at 2 s). The deepest contact at 2 s is
-// held at 5 cm for that; the 2 cm is met by the separation time.
+// with are gone before 2 s, and the deepest contact at 2 s is within the
+// issue's 2 cm. Bodies sliding off the heap hit others at 5-7 m/s, which a
+// step carries 8-12 cm: with a fixed 2 cm speculative distance such hits were
+// 2 to 7 cm deep for a step or two. A contact's margin now follows how far its
+// bodies can close in the step (contact.cpp), so the hit is met at the
+// surfaces, as far as the velocities at the step's start show it; what they
+// do not show (a body knocked within the step by a third, a turn bringing
+// another corner in) stays within the soft contacts' usual sag. No tolerance
+// is added to the bound: over 36 layouts not used to develop this
+// (12 boxes, circles and capsules at one point 5 and 10 m up, seeds 1009,
+// 2003, 3001, 4007, 5003, 6007) the deepest at 2 s was at most 1.3 cm; here
+// 0.6 cm.
 TEST(OverlapPiles, InTheAirAtOnePoint) {
     for (Kind kind : {Kind::box, Kind::circle, Kind::capsule})
         for (unsigned seed : {11u, 23u}) {
@@ -176,7 +181,7 @@ TEST(OverlapPiles, InTheAirAtOnePoint) {
             print(f, what);
             EXPECT_GE(f.separatedAt, 0.0f) << what;
             EXPECT_LE(f.separatedAt, 2.0f) << what;
-            EXPECT_LE(f.deepestAt2s, 0.05f) << what;
+            EXPECT_LE(f.deepestAt2s, 0.02f) << what;
             EXPECT_LE(f.rise, 0.5f) << what;
             EXPECT_LE(f.speedExcess, 0.0f) << what;
             EXPECT_LE(f.energyRatio, 1.02f) << what;

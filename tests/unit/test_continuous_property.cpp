@@ -203,8 +203,13 @@ TEST(ContinuousProperty, WithoutItShotsEndBehindTheWall) {
         const Result r = run(randomCase(rng, seed), false);
         failures += r.crossed || r.passed;
     }
-    // Most shots move several times the wall's thickness per step.
-    EXPECT_GT(failures, 50);
+    // Most shots move several times the wall's thickness per step. Without
+    // the sweep, speculative contacts, whose margin follows how far the body
+    // can close in the step (contact.cpp), stop the shots whose nearest
+    // feature at the step's start is the one that hits; spinning shapes that
+    // turn another feature into the wall within the step still cross it: 24
+    // of these 200 (more than 50 with the fixed 0.02 m margin).
+    EXPECT_GT(failures, 10);
 }
 
 // Two shots of a run over seeds 1-40000 that ended behind a segment: thin
