@@ -115,10 +115,12 @@ void reportHit(WorldState& w, const Contact& ct) {
 // step up to 19 cm inside. The fixed distance covers what the step's start
 // does not show: gravity's Δv·Δt, a turn's departure from the point's straight
 // path. A point that no body moves towards keeps the fixed distance, so a
-// body sliding fast past another's corner gets no row there. A pair with a
-// static body keeps the fixed distance: continuous collision sweeps moving
-// bodies against static shapes (continuous.cpp), and the seam rules for
-// static floors (seams.cpp) are written for that distance.
+// body sliding fast past another's corner gets no row there. Pairs with a
+// static body get the margin too: continuous collision (continuous.cpp) stops
+// a fast body at a static surface only after the solve, so the bodies resting
+// on it would otherwise keep going into it. A chain segment whose end judges
+// the manifold's normal a ghost drops the whole manifold (seams.cpp), so the
+// wider margin does not snag a body on the next segment's far end.
 Manifold computeManifold(const WorldState& w, const Contact& c) {
     const Shape& sa = w.shapes[c.shapeA];
     const Shape& sb = w.shapes[c.shapeB];
