@@ -143,10 +143,9 @@ void prepareDeepOverlaps(WorldState& w) {
     // body back height it had, never new height; (3) the upper body clears the
     // lower one sideways by moving no more than the narrower one's width.
     const Vec2 side = leftPerp(up);
-    const int rows = static_cast<int>(s.constraints.size());
-    for (int r = 0; r < rows; ++r) {
-        const ContactConstraint& cc = s.constraints[r];
-        if (!cc.deepOverlap || cc.invMassA == 0.0f || cc.invMassB == 0.0f) continue;
+    for (int r : s.deepRows) {  // ascending: sidePushes stay in row order
+        const ContactConstraint& cc = s.constraints[static_cast<std::size_t>(r)];
+        if (cc.invMassA == 0.0f || cc.invMassB == 0.0f) continue;
         const float nu = dot(cc.normal, up);
         if (nu == 0.0f || !supported[below(cc, nu)]) continue;
         const Contact& ct = w.contacts[cc.contact];

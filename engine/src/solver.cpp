@@ -173,8 +173,6 @@ void prepareContactRows(WorldState& w, float h, bool soft) {
             return;
         }
         const int blocks = layoutWideBlocks(s, s.colourOffsets.data());
-        // Only the deep overlaps' push asks where a row went.
-        if (s.anyDeepOverlap) s.wideLaneOfRow.resize(static_cast<std::size_t>(s.contactOverflowStart));
         const std::vector<int>& blockRows = s.wideBlockRows;
         auto pack = [&](int b, int e) {
             for (int k = b; k < e; ++k)

@@ -47,7 +47,6 @@ struct SolverArrays {
     bool anyDeepOverlap = false;             ///< some row overlaps deeper than kDeepOverlap this step
     bool anyRollingRow = false;              ///< some row gets a rolling-resistance row this step
     std::vector<int> deepRows;               ///< the rows that do, ascending (contact_solver.cpp)
-    std::vector<int> wideLaneOfRow;          ///< per row of a wide block: block·4 + lane (wide_contact.cpp)
     std::vector<SidePush> sidePushes;        ///< deep rows pushed sideways, in row order (deep_overlap.cpp)
     std::vector<std::uint8_t> supported;     ///< per state: rests on something immovable (deep_overlap.cpp)
     std::vector<int> supportStart, supportAbove, supportQueue;  ///< deep_overlap.cpp's lists of what rests on what

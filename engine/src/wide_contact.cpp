@@ -59,7 +59,6 @@ void packWideContactBlock(SolverArrays& s, int block, int start, int last) {
     for (int lane = 0; lane < 4; ++lane) {
         const int r = start + lane;
         packLane(k, lane, r < last ? &s.constraints[static_cast<std::size_t>(r)] : nullptr, r, zero);
-        if (r < last && s.anyDeepOverlap) s.wideLaneOfRow[static_cast<std::size_t>(r)] = 4 * block + lane;
     }
 }
 
@@ -161,12 +160,18 @@ void writeBackWideContacts(SolverArrays& s, int firstBlock, int lastBlock) {
 }
 
 void readWideNormalImpulses(SolverArrays& s, const std::vector<int>& rows) {
+    // The blocks hold the coloured rows in ascending order, each from its
+    // first row (wideBlockRows); the rows asked for ascend too.
+    const std::vector<int>& blockRows = s.wideBlockRows;
+    const std::size_t blocks = blockRows.size() / 2;
+    std::size_t block = 0;
     for (int r : rows) {
-        if (r >= s.contactOverflowStart) break;  // ascending: the rest are scalar rows
-        const int slot = s.wideLaneOfRow[static_cast<std::size_t>(r)];
-        const WideContactBlock& k = s.wideContacts[static_cast<std::size_t>(slot / 4)];
+        if (r >= s.contactOverflowStart) break;  // the rest are scalar rows
+        while (block + 1 < blocks && blockRows[2 * (block + 1)] <= r) ++block;
+        const int lane = r - blockRows[2 * block];
+        const WideContactBlock& k = s.wideContacts[block];
         ContactConstraint& cc = s.constraints[static_cast<std::size_t>(r)];
-        for (int j = 0; j < cc.pointCount; ++j) cc.points[j].normalImpulse = k.points[j].normalImpulse[slot % 4];
+        for (int j = 0; j < cc.pointCount; ++j) cc.points[j].normalImpulse = k.points[j].normalImpulse[lane];
     }
 }
 
