@@ -235,16 +235,22 @@ void prepareContacts(WorldState& w, float h, bool soft) {
 namespace {
 
 /// The wide blocks colour by colour, each colour's blocks shared among the
-/// workers (WorldState::runner): they touch no movable body twice.
+/// workers (WorldState::runner): they touch no movable body twice. A colour's
+/// blocks are its two row groups (kWideGroupsPerColour) one after the other;
+/// `blocks(b, e, points)` gets each chunk split where the one-point group starts.
 template <class F>
 void forEachWideColour(WorldState& w, F&& blocks) {
     constexpr int kBlockGrain =
         64;  // blocks per chunk a worker claims: large, so that few bodies' cache lines are written by two workers
     const std::vector<int>& start = w.solver.wideContactColourStart;
-    for (std::size_t c = 0; c + 1 < start.size(); ++c) {
-        const int first = start[c], count = start[c + 1] - start[c];
+    for (std::size_t g = 0; g + kWideGroupsPerColour < start.size(); g += kWideGroupsPerColour) {
+        const int first = start[g], single = start[g + 1], count = start[g + 2] - first;
         if (count == 0) continue;
-        auto range = [&](int b, int e) { blocks(first + b, first + e); };
+        auto range = [&](int b, int e) {
+            const int lo = first + b, hi = first + e;
+            if (lo < single) blocks(lo, std::min(hi, single), 2);
+            if (hi > single) blocks(std::max(lo, single), hi, 1);
+        };
         w.runner.run(count, kBlockGrain, range);
     }
 }
@@ -258,7 +264,7 @@ void warmStartContacts(WorldState& w) {
     // left to the scalar sweep.
     int first = 0;
     if (s.wideContactsActive) {
-        forEachWideColour(w, [&](int b, int e) { warmStartWideContacts(s, b, e); });
+        forEachWideColour(w, [&](int b, int e, int points) { warmStartWideContacts(s, b, e, points); });
         first = s.contactOverflowStart;
     }
     BodyState* states = s.states.data();
@@ -485,8 +491,9 @@ void solveContacts(WorldState& w, float h, SolvePass target) {
                                   w.settings.impactModel == ImpactModel::closed_form;
         const float impactSpeed = w.settings.impactThreshold;
         const bool trackMax = !s.wideContactsOnly;
-        forEachWideColour(
-            w, [&](int b, int e) { solveWideContacts(s, target, h, leaveImpacts, impactSpeed, b, e, trackMax); });
+        forEachWideColour(w, [&](int b, int e, int points) {
+            solveWideContacts(s, target, h, leaveImpacts, impactSpeed, b, e, trackMax, points);
+        });
         first = static_cast<std::size_t>(s.contactOverflowStart);
     }
     switch (target) {

@@ -57,6 +57,12 @@ namespace {
 // 0.09 m coloured (docs/performance.md).
 
 constexpr int kColourCount = 24;  ///< colours tried before the overflow group
+/// Each colour's rows in two groups, its manifolds of two points (group 2c)
+/// and then those of one (group 2c + 1), so that the wide sweeps solve a
+/// block of circles' or capsules' single points without the arithmetic of an
+/// absent second point (wide_contact_kernel.hpp). A colour's rows share no
+/// movable body, so their order within it changes no result.
+constexpr int kRowGroupCount = kWideGroupsPerColour * kColourCount;  ///< the overflow group's index
 
 /// The bodies per chunk of an integration stage, and the contact blocks per
 /// chunk when they are packed, prepared or written back: large, so that few
@@ -68,8 +74,9 @@ constexpr int kPrepareGrain = 128;  ///< contacts per chunk when rows are prepar
 
 /// Colours the rows of this step's active contacts (greedy, in activeContacts
 /// order, overflow group last) and leaves in colourOffsets the first row of
-/// each colour: a stable counting sort, so within a colour the rows keep the
-/// contacts' order. prepareContacts then writes each row at its place.
+/// each row group (kRowGroupCount): a stable counting sort, so within a group
+/// the rows keep the contacts' order. prepareContacts then writes each row at
+/// its place.
 void colourContacts(WorldState& w) {
     SolverArrays& s = w.solver;
     const std::size_t count = w.activeContacts.size();
@@ -77,7 +84,7 @@ void colourContacts(WorldState& w) {
     const int zeroState = static_cast<int>(s.states.size()) - 1;
     const std::size_t words = (bodyCount + 63) / 64;
     s.colourBits.assign(words * kColourCount, 0u);
-    s.colourOffsets.assign(kColourCount + 1, 0);
+    s.colourOffsets.assign(kRowGroupCount + 1, 0);
     s.contactColours.resize(count);
     int rows = 0;
     bool anyDeep = false, anyRolling = false;
@@ -101,17 +108,17 @@ void colourContacts(WorldState& w) {
         const std::size_t wa = static_cast<std::size_t>(rb.a) / 64, wb = static_cast<std::size_t>(rb.b) / 64;
         const std::uint64_t ma = moveA ? std::uint64_t{1} << (rb.a % 64) : 0u;
         const std::uint64_t mb = moveB ? std::uint64_t{1} << (rb.b % 64) : 0u;
-        int colour = kColourCount;
+        int group = kRowGroupCount;
         for (int c = 0; c < kColourCount; ++c) {
             std::uint64_t* bits = s.colourBits.data() + static_cast<std::size_t>(c) * words;
             if ((moveA && (bits[wa] & ma)) || (moveB && (bits[wb] & mb))) continue;
             if (moveA) bits[wa] |= ma;
             if (moveB) bits[wb] |= mb;
-            colour = c;
+            group = kWideGroupsPerColour * c + (ct.manifold.pointCount == 1 ? 1 : 0);
             break;
         }
-        s.contactColours[i] = static_cast<std::uint8_t>(colour);
-        ++s.colourOffsets[static_cast<std::size_t>(colour)];
+        s.contactColours[i] = static_cast<std::uint8_t>(group);
+        ++s.colourOffsets[static_cast<std::size_t>(group)];
     }
     // Counts to first rows.
     int offset = 0;
@@ -125,15 +132,15 @@ void colourContacts(WorldState& w) {
     s.anyRollingRow = anyRolling;
 }
 
-/// The wide blocks of the coloured rows, colour c's rows ending at ends[c]:
-/// each block's first row and its colour's end in wideBlockRows, each
-/// colour's first block; returns the block count.
+/// The wide blocks of the coloured rows, row group c's rows ending at
+/// ends[c]: each block's first row and its group's end in wideBlockRows, each
+/// group's first block; returns the block count.
 int layoutWideBlocks(SolverArrays& s, const int* ends) {
     std::vector<int>& blockRows = s.wideBlockRows;
     blockRows.clear();
-    s.wideContactColourStart.resize(kColourCount + 1);
+    s.wideContactColourStart.resize(kRowGroupCount + 1);
     int start = 0;
-    for (int c = 0; c < kColourCount; ++c) {
+    for (int c = 0; c < kRowGroupCount; ++c) {
         s.wideContactColourStart[static_cast<std::size_t>(c)] = static_cast<int>(blockRows.size() / 2);
         const int end = ends[c];
         for (int row = start; row < end; row += 4) {
@@ -143,7 +150,7 @@ int layoutWideBlocks(SolverArrays& s, const int* ends) {
         start = end;
     }
     const int blocks = static_cast<int>(blockRows.size() / 2);
-    s.wideContactColourStart[kColourCount] = blocks;
+    s.wideContactColourStart[kRowGroupCount] = blocks;
     s.contactOverflowStart = start;
     // One allocation, sized first: growing block by block made a fresh
     // allocation, page faults and a copy per doubling, every step.
@@ -215,16 +222,16 @@ void prepareContactRows(WorldState& w, float h, bool soft) {
                 finishContactRow(x, slop, cc);
                 continue;
             }
-            const std::size_t colour = s.contactColours[static_cast<std::size_t>(k)];
-            const int inColour = row - begin[colour];
+            const std::size_t group = s.contactColours[static_cast<std::size_t>(k)];
+            const int inGroup = row - begin[group];
             WideContactBlock& block =
-                s.wideContacts[static_cast<std::size_t>(s.wideContactColourStart[colour] + inColour / 4)];
-            prepareWideContactLane(w, x, contact, block, inColour % 4);
+                s.wideContacts[static_cast<std::size_t>(s.wideContactColourStart[group] + inGroup / 4)];
+            prepareWideContactLane(w, x, contact, block, inGroup % 4);
         }
     };
     w.runner.run(static_cast<int>(activeCount), kPrepareGrain, prepare);
-    // The lanes past each colour's last row stay empty.
-    for (int c = 0; c < kColourCount; ++c) {
+    // The lanes past each group's last row stay empty.
+    for (int c = 0; c < kRowGroupCount; ++c) {
         const int count = begin[static_cast<std::size_t>(c) + 1] - begin[static_cast<std::size_t>(c)];
         if (count % 4 == 0) continue;
         WideContactBlock& block =

@@ -26,8 +26,8 @@ struct SolverArrays {
     std::vector<Vec2> biasV;                   ///< split mode pseudo-velocities (zero entry last)
     std::vector<float> biasW;
     ScratchArray<ContactConstraint> constraints;  ///< in colour order (solver.cpp)
-    std::vector<std::uint8_t> contactColours;     ///< per active contact: its row's colour, or kNoRow
-    std::vector<int> colourOffsets;               ///< per colour: its first row (advanced as rows are placed)
+    std::vector<std::uint8_t> contactColours;     ///< per active contact: its row's group (solver.cpp), or kNoRow
+    std::vector<int> colourOffsets;               ///< per row group: its first row (advanced as rows are placed)
     std::vector<std::uint64_t> colourBits;        ///< per colour, one bit per state
     int rowCount = 0;                             ///< contact rows this step
     std::vector<JointSlot> jointSlots;            ///< every joint with an awake body, in the world's order
@@ -55,9 +55,9 @@ struct SolverArrays {
     bool wideContactsActive = false;              ///< this step solves them so
     bool wideContactsOnly = false;                ///< ... prepared without scalar rows (solver.cpp)
     ScratchArray<int> rowContacts;                ///< then: each active contact's row, −1 for none
-    std::vector<int> colourBegin;                 ///< then: each colour's first row
-    std::vector<int> wideContactColourStart;      ///< per colour: its first block; then the block count
-    std::vector<int> wideBlockRows;               ///< per block: its first row and its colour's end
+    std::vector<int> colourBegin;                 ///< then: each row group's first row
+    std::vector<int> wideContactColourStart;      ///< per row group: its first block; then the block count
+    std::vector<int> wideBlockRows;               ///< per block: its first row and its group's end
     int contactOverflowStart = 0;                 ///< the first row of the scalar rest (the overflow group)
 };
 

@@ -108,8 +108,9 @@ bool cpuHasAvx2() {
 #if defined(I2D_AVX2_KERNEL)
 // wide_avx2.cpp: pairs of blocks from `first`; each returns the first
 // block it left (the odd one at the end, if any).
-int warmStartWideContactsAvx2(WideContactBlock* blocks, BodyState* states, int first, int last);
-int solveWideContactsAvx2(WideContactBlock* blocks, BodyState* states, const SweepParams& sp, int first, int last);
+int warmStartWideContactsAvx2(WideContactBlock* blocks, BodyState* states, int first, int last, int points);
+int solveWideContactsAvx2(WideContactBlock* blocks, BodyState* states, const SweepParams& sp, int first, int last,
+                          int points);
 #endif
 
 int wideLanes() {
@@ -123,24 +124,34 @@ int wideLanes() {
 
 void limitWideLanes(int lanes) { laneLimit() = lanes; }
 
-void warmStartWideContacts(SolverArrays& s, int firstBlock, int lastBlock) {
+void warmStartWideContacts(SolverArrays& s, int firstBlock, int lastBlock, int points) {
 #if defined(I2D_AVX2_KERNEL)
     if (wideLanes() == 8 && lastBlock > firstBlock)
-        firstBlock = warmStartWideContactsAvx2(&s.wideContacts[0], s.states.data(), firstBlock, lastBlock);
+        firstBlock = warmStartWideContactsAvx2(&s.wideContacts[0], s.states.data(), firstBlock, lastBlock, points);
 #endif
-    for (int i = firstBlock; i < lastBlock; ++i)
-        warmStartBlock(Lanes4<WideContactBlock>{&s.wideContacts[static_cast<std::size_t>(i)]}, s.states.data());
+    for (int i = firstBlock; i < lastBlock; ++i) {
+        const Lanes4<WideContactBlock> k{&s.wideContacts[static_cast<std::size_t>(i)]};
+        if (points == 1)
+            warmStartBlock<1>(k, s.states.data());
+        else
+            warmStartBlock<2>(k, s.states.data());
+    }
 }
 
 void solveWideContacts(SolverArrays& s, SolvePass pass, float h, bool leaveImpacts, float impactSpeed, int firstBlock,
-                       int lastBlock, bool trackMax) {
+                       int lastBlock, bool trackMax, int points) {
     const SweepParams sp{1.0f / h, -impactSpeed, pass == SolvePass::soft_bias, leaveImpacts, trackMax};
 #if defined(I2D_AVX2_KERNEL)
     if (wideLanes() == 8 && lastBlock > firstBlock)
-        firstBlock = solveWideContactsAvx2(&s.wideContacts[0], s.states.data(), sp, firstBlock, lastBlock);
+        firstBlock = solveWideContactsAvx2(&s.wideContacts[0], s.states.data(), sp, firstBlock, lastBlock, points);
 #endif
-    for (int i = firstBlock; i < lastBlock; ++i)
-        solveBlock(Lanes4<WideContactBlock>{&s.wideContacts[static_cast<std::size_t>(i)]}, s.states.data(), sp);
+    for (int i = firstBlock; i < lastBlock; ++i) {
+        const Lanes4<WideContactBlock> k{&s.wideContacts[static_cast<std::size_t>(i)]};
+        if (points == 1)
+            solveBlock<1>(k, s.states.data(), sp);
+        else
+            solveBlock<2>(k, s.states.data(), sp);
+    }
 }
 
 void writeBackWideContacts(SolverArrays& s, int firstBlock, int lastBlock) {

@@ -21,6 +21,10 @@ namespace i2d::detail {
 struct SolverArrays;
 struct WorldState;
 
+/// The blocks of a colour come in two groups (solver.cpp): manifolds of two
+/// points, then manifolds of one, whose sweeps skip the second point.
+inline constexpr int kWideGroupsPerColour = 2;
+
 /// One of the two points of four manifolds.
 struct WideContactPoint {
     float rAx[4], rAy[4], rBx[4], rBy[4];
@@ -59,14 +63,17 @@ void packEmptyWideContactLane(WideContactBlock& k, int lane, int zeroState);
 /// The accumulated impulses of blocks [firstBlock, lastBlock) into their
 /// contacts for the next step's warm start (the store of blocks without rows).
 void storeWideContacts(SolverArrays& s, SlotArray<Contact>& contacts, int firstBlock, int lastBlock);
-void warmStartWideContacts(SolverArrays& s, int firstBlock, int lastBlock);
+/// `points` (1 or 2) is the most points a lane of blocks [firstBlock,
+/// lastBlock) has: with 1, the second point's arithmetic is skipped, which
+/// changes nothing where it is absent.
+void warmStartWideContacts(SolverArrays& s, int firstBlock, int lastBlock, int points = 2);
 /// One sweep of blocks [firstBlock, lastBlock) in a soft_step pass: soft_bias,
 /// soft_relax or soft_relax_last (`leaveImpacts`: the last relax with the
 /// closed-form impact law, see contact_solver.cpp).
 /// `trackMax` false leaves maxNormalImpulse alone: only the velocity-bias
 /// restitution pass reads it, through the rows (writeBackWideContacts).
 void solveWideContacts(SolverArrays& s, SolvePass pass, float h, bool leaveImpacts, float impactSpeed, int firstBlock,
-                       int lastBlock, bool trackMax = true);
+                       int lastBlock, bool trackMax = true, int points = 2);
 /// The accumulated impulses of blocks [firstBlock, lastBlock) back into their
 /// rows (for restitution and the store, which read the rows).
 void writeBackWideContacts(SolverArrays& s, int firstBlock, int lastBlock);

@@ -15,6 +15,11 @@
 // other, then Coulomb friction per point. What the scalar row skips with a
 // branch, a lane keeps with a select.
 //
+// Points (1 or 2) is the most points a lane of the block has: a block of
+// one-point manifolds (circles, capsules across each other) skips the second
+// point's loads and arithmetic, which in a lane without that point change
+// nothing (its masks are all false), so both give the same bits.
+//
 // This header defines templates only: the eight-lane instantiations use a
 // vector type private to the AVX2 file and so stay private to it, and no
 // function compiled for AVX2 can be picked by the linker for code that runs
@@ -60,8 +65,9 @@ I2D_KERNEL void applyMasked(M m, const WideArmsT<V>& r, V px, V py, V mA, V iA, 
 using BlockField = float (WideContactBlock::*)[4];
 using PointField = float (WideContactPoint::*)[4];
 
-template <class L>
+template <int Points, class L>
 I2D_KERNEL void warmStartBlock(const L& k, BodyState* states) {
+    static_assert(Points == 1 || Points == 2);
     using V = typename L::V;
     using M = typename L::M;
     WideBodyT<V> A = k.gather(states, true), B = k.gather(states, false);
@@ -70,7 +76,7 @@ I2D_KERNEL void warmStartBlock(const L& k, BodyState* states) {
     const V tx = ny, ty = -nx;  // rightPerp(n)
     const V mA = k.load(&WideContactBlock::mA), iA = k.load(&WideContactBlock::iA);
     const V mB = k.load(&WideContactBlock::mB), iB = k.load(&WideContactBlock::iB);
-    for (int j = 0; j < 2; ++j) {
+    for (int j = 0; j < Points; ++j) {
         const V ln = k.load(j, &WideContactPoint::normalImpulse), lt = k.load(j, &WideContactPoint::tangentImpulse);
         const WideArmsT<V> r{k.load(j, &WideContactPoint::rAx), k.load(j, &WideContactPoint::rAy),
                              k.load(j, &WideContactPoint::rBx), k.load(j, &WideContactPoint::rBy)};
@@ -91,8 +97,9 @@ struct SweepParams {
     bool trackMax;  ///< keep maxNormalImpulse (only the velocity-bias restitution reads it, through the rows)
 };
 
-template <class L>
+template <int Points, class L>
 I2D_KERNEL void solveBlock(const L& k, BodyState* states, const SweepParams& sp) {
+    static_assert(Points == 1 || Points == 2);
     using V = typename L::V;
     using M = typename L::M;
     const V invH = L::splat(sp.invH), zero = L::splat(0.0f), one = L::splat(1.0f);
@@ -110,10 +117,10 @@ I2D_KERNEL void solveBlock(const L& k, BodyState* states, const SweepParams& sp)
 
     // Each point's target: Δλ = −m·ms·(vn + bias) − is·λ, and whether the
     // last relax leaves it to the impact law.
-    WideArmsT<V> arms[2];
-    V bias[2], ms[2], is[2];
-    M skip[2], present[2];
-    for (int j = 0; j < 2; ++j) {
+    WideArmsT<V> arms[Points];
+    V bias[Points], ms[Points], is[Points];
+    M skip[Points], present[Points];
+    for (int j = 0; j < Points; ++j) {
         const WideArmsT<V>& r = arms[j] = {k.load(j, &WideContactPoint::rAx), k.load(j, &WideContactPoint::rAy),
                                            k.load(j, &WideContactPoint::rBx), k.load(j, &WideContactPoint::rBy)};
         present[j] = nonZero(k.load(j, &WideContactPoint::present));
@@ -140,16 +147,20 @@ I2D_KERNEL void solveBlock(const L& k, BodyState* states, const SweepParams& sp)
 
     // Normal rows: both points against the same velocities where the
     // manifold's points go together, one after the other elsewhere.
-    const M pair = andNot(andNot(nonZero(k.load(&WideContactBlock::together)), skip[0]), skip[1]);
-    const V scale = select(pair, k.load(&WideContactBlock::pairScale), one);
-    V increment[2];
-    M acts[2];
+    M pair{};  // a lane of one point goes alone, at scale 1
+    V scale = one;
+    if constexpr (Points == 2) {
+        pair = andNot(andNot(nonZero(k.load(&WideContactBlock::together)), skip[0]), skip[1]);
+        scale = select(pair, k.load(&WideContactBlock::pairScale), one);
+    }
+    V increment[Points];
+    M acts[Points];
     auto raiseMax = [&](int j, M m) {
         if (!sp.trackMax) return;
         const V old = k.load(j, &WideContactPoint::maxNormalImpulse);
         k.store(j, &WideContactPoint::maxNormalImpulse, select(m, maxv<V, M>(old, increment[j]), old));
     };
-    for (int j = 0; j < 2; ++j) {
+    for (int j = 0; j < Points; ++j) {
         const V lambda = k.load(j, &WideContactPoint::normalImpulse);
         const V vn = relativeSpeed(v, arms[j], nx, ny);
         const V alone = (-k.load(j, &WideContactPoint::normalMass)) * ms[j] * (vn + bias[j]) - is[j] * lambda;
@@ -159,12 +170,12 @@ I2D_KERNEL void solveBlock(const L& k, BodyState* states, const SweepParams& sp)
         k.store(j, &WideContactPoint::normalImpulse, select(acts[j], next, lambda));
         if (j == 0) {
             // One after the other: the first point acts before the second is solved.
-            const M now = andNot(acts[0], pair);
+            const M now = Points == 2 ? andNot(acts[0], pair) : acts[0];
             raiseMax(0, now);
             applyMasked<V, M>(now, arms[0], increment[0] * nx, increment[0] * ny, mA, iA, mB, iB, v);
         }
     }
-    {
+    if constexpr (Points == 2) {
         const M later = acts[0] & pair;
         raiseMax(0, later);
         applyMasked<V, M>(later, arms[0], increment[0] * nx, increment[0] * ny, mA, iA, mB, iB, v);
@@ -175,7 +186,7 @@ I2D_KERNEL void solveBlock(const L& k, BodyState* states, const SweepParams& sp)
     // Coulomb friction, bounded by μ times the point's own normal impulse.
     const V tx = ny, ty = -nx;  // rightPerp(n)
     const V friction = k.load(&WideContactBlock::friction), tangentSpeed = k.load(&WideContactBlock::tangentSpeed);
-    for (int j = 0; j < 2; ++j) {
+    for (int j = 0; j < Points; ++j) {
         const V vt = relativeSpeed(v, arms[j], tx, ty) - tangentSpeed;
         const V lambda = k.load(j, &WideContactPoint::tangentImpulse);
         const V maxFriction = friction * k.load(j, &WideContactPoint::normalImpulse);

@@ -8,6 +8,7 @@
 // portable path; on CPUs with AVX2 the eight-lane path is checked as well).
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
 #include <cstring>
 #include <random>
@@ -83,6 +84,15 @@ void fill(WorldState& w, unsigned seed, int n) {
     }
 }
 
+/// Reorders the rows (independent of each other, so the order changes no
+/// result) so that those of one point come last; returns how many have two.
+int onePointRowsLast(SolverArrays& s) {
+    ContactConstraint* rows = &s.constraints[0];
+    ContactConstraint* end = rows + s.rowCount;
+    return static_cast<int>(
+        std::stable_partition(rows, end, [](const ContactConstraint& cc) { return cc.pointCount == 2; }) - rows);
+}
+
 /// Restores the widest lanes the CPU offers when a test ends.
 struct LaneLimit {
     explicit LaneLimit(int lanes) { limitWideLanes(lanes); }
@@ -97,10 +107,19 @@ void expectAgreement(int lanes) {
         fill(scalar, seed, n);
         fill(wide, seed, n);
         SolverArrays& s = wide.solver;
-        s.wideContacts.resizeForOverwrite(static_cast<std::size_t>((n + 3) / 4));
-        for (int block = 0; 4 * block < n; ++block) packWideContactBlock(s, block, 4 * block, n);
+        // One colour in its two row groups, as solver.cpp lays them out: the
+        // rows of two points, then those of one (each group's last block
+        // partly empty), the second group swept by the one-point kernel.
+        const int twoPoints = onePointRowsLast(scalar.solver);
+        onePointRowsLast(s);
+        const int twoBlocks = (twoPoints + 3) / 4, oneBlocks = (n - twoPoints + 3) / 4;
+        s.wideContacts.resizeForOverwrite(static_cast<std::size_t>(twoBlocks + oneBlocks));
+        for (int block = 0; block < twoBlocks; ++block) packWideContactBlock(s, block, 4 * block, twoPoints);
+        for (int block = 0; block < oneBlocks; ++block)
+            packWideContactBlock(s, twoBlocks + block, twoPoints + 4 * block, n);
         s.wideContactsActive = true;
-        s.wideContactColourStart = {0, (n + 3) / 4};  // one colour
+        s.wideContactColourStart = {0, twoBlocks, twoBlocks + oneBlocks};
+        static_assert(kWideGroupsPerColour == 2);
         s.contactOverflowStart = n;
         warmStartContacts(scalar);
         warmStartContacts(wide);
