@@ -72,11 +72,32 @@ constexpr int kBodyGrain = 512;
 constexpr int kPackGrain = 32;
 constexpr int kPrepareGrain = 128;  ///< contacts per chunk when rows are prepared
 
+constexpr std::uint8_t kKeyRow = 1, kKeyMoveA = 2, kKeyMoveB = 4, kKeyOnePoint = 8, kKeyDeep = 16, kKeyRolling = 32;
+
+ColourKey colourKey(const WorldState& w, int contact, int zeroState, std::size_t bodyCount) {
+    RowBodies rb;
+    const Contact& ct = w.contacts[contact];
+    if (!contactRowBodies(w, ct, zeroState, rb)) return {0, 0, 0};
+    std::uint8_t flags = kKeyRow;
+    // What decides the rows' path before any is prepared: the same tests as
+    // prepareContacts' and prepareRollingResistance's.
+    for (int j = 0; j < ct.manifold.pointCount; ++j)
+        if (ct.manifold.points[j].separation < -kDeepOverlap) flags |= kKeyDeep;
+    const ContactSurface* surface = contactSurface(w, contact);
+    if (surface && surface->rollingResistance > 0.0f && !(rb.invIA + rb.invIB <= 0.0f)) flags |= kKeyRolling;
+    if (static_cast<std::size_t>(rb.a) < bodyCount && (rb.invMassA != 0.0f || rb.invIA != 0.0f)) flags |= kKeyMoveA;
+    if (static_cast<std::size_t>(rb.b) < bodyCount && (rb.invMassB != 0.0f || rb.invIB != 0.0f)) flags |= kKeyMoveB;
+    if (ct.manifold.pointCount == 1) flags |= kKeyOnePoint;
+    return {rb.a, rb.b, flags};
+}
+
 /// Colours the rows of this step's active contacts (greedy, in activeContacts
 /// order, overflow group last) and leaves in colourOffsets the first row of
 /// each row group (kRowGroupCount): a stable counting sort, so within a group
 /// the rows keep the contacts' order. prepareContacts then writes each row at
-/// its place.
+/// its place. What each contact's row is (the reading of the contact and its
+/// bodies) is found on every worker; the greedy pass over those keys, which
+/// depends on the order, runs on the stepping thread.
 void colourContacts(WorldState& w) {
     SolverArrays& s = w.solver;
     const std::size_t count = w.activeContacts.size();
@@ -86,35 +107,40 @@ void colourContacts(WorldState& w) {
     s.colourBits.assign(words * kColourCount, 0u);
     s.colourOffsets.assign(kRowGroupCount + 1, 0);
     s.contactColours.resize(count);
+    // On one worker the keys are found as the greedy pass goes (no array to
+    // write and read back); the result is the same.
+    const bool shared = w.runner.sharing();
+    std::vector<ColourKey>& keys = s.colourKeys;
+    if (shared) {
+        keys.resize(count);
+        auto findKeys = [&](int first, int last) {
+            for (int k = first; k < last; ++k)
+                keys[static_cast<std::size_t>(k)] = colourKey(w, w.activeContacts[static_cast<std::size_t>(k)],
+                                                              zeroState, bodyCount);
+        };
+        w.runner.run(static_cast<int>(count), kPrepareGrain, findKeys);
+    }
     int rows = 0;
-    bool anyDeep = false, anyRolling = false;
+    std::uint8_t any = 0;
     for (std::size_t i = 0; i < count; ++i) {
-        RowBodies rb;
-        const int contact = w.activeContacts[i];
-        const Contact& ct = w.contacts[contact];
-        if (!contactRowBodies(w, ct, zeroState, rb)) {
+        const ColourKey key = shared ? keys[i] : colourKey(w, w.activeContacts[i], zeroState, bodyCount);
+        if (!(key.flags & kKeyRow)) {
             s.contactColours[i] = kNoRow;
             continue;
         }
         ++rows;
-        // What decides the rows' path before any is prepared: the same tests
-        // as prepareContacts' and prepareRollingResistance's.
-        for (int j = 0; j < ct.manifold.pointCount; ++j)
-            anyDeep = anyDeep || ct.manifold.points[j].separation < -kDeepOverlap;
-        const ContactSurface* surface = contactSurface(w, contact);
-        if (surface && surface->rollingResistance > 0.0f && !(rb.invIA + rb.invIB <= 0.0f)) anyRolling = true;
-        const bool moveA = static_cast<std::size_t>(rb.a) < bodyCount && (rb.invMassA != 0.0f || rb.invIA != 0.0f);
-        const bool moveB = static_cast<std::size_t>(rb.b) < bodyCount && (rb.invMassB != 0.0f || rb.invIB != 0.0f);
-        const std::size_t wa = static_cast<std::size_t>(rb.a) / 64, wb = static_cast<std::size_t>(rb.b) / 64;
-        const std::uint64_t ma = moveA ? std::uint64_t{1} << (rb.a % 64) : 0u;
-        const std::uint64_t mb = moveB ? std::uint64_t{1} << (rb.b % 64) : 0u;
+        any |= key.flags;
+        const bool moveA = key.flags & kKeyMoveA, moveB = key.flags & kKeyMoveB;
+        const std::size_t wa = static_cast<std::size_t>(key.a) / 64, wb = static_cast<std::size_t>(key.b) / 64;
+        const std::uint64_t ma = moveA ? std::uint64_t{1} << (key.a % 64) : 0u;
+        const std::uint64_t mb = moveB ? std::uint64_t{1} << (key.b % 64) : 0u;
         int group = kRowGroupCount;
         for (int c = 0; c < kColourCount; ++c) {
             std::uint64_t* bits = s.colourBits.data() + static_cast<std::size_t>(c) * words;
             if ((moveA && (bits[wa] & ma)) || (moveB && (bits[wb] & mb))) continue;
             if (moveA) bits[wa] |= ma;
             if (moveB) bits[wb] |= mb;
-            group = kWideGroupsPerColour * c + (ct.manifold.pointCount == 1 ? 1 : 0);
+            group = kWideGroupsPerColour * c + ((key.flags & kKeyOnePoint) ? 1 : 0);
             break;
         }
         s.contactColours[i] = static_cast<std::uint8_t>(group);
@@ -128,8 +154,8 @@ void colourContacts(WorldState& w) {
         offset += c;
     }
     s.rowCount = rows;
-    s.anyDeepOverlap = anyDeep;
-    s.anyRollingRow = anyRolling;
+    s.anyDeepOverlap = any & kKeyDeep;
+    s.anyRollingRow = any & kKeyRolling;
 }
 
 /// The wide blocks of the coloured rows, row group c's rows ending at
@@ -606,6 +632,7 @@ void releaseLargeStepArrays(WorldState& w) {
     releaseIfLarge(s.wideContacts);
     releaseIfLarge(s.rowContacts);
     releaseIfLarge(s.contactColours);
+    releaseIfLarge(s.colourKeys);
     releaseIfLarge(s.colourBits);
     releaseIfLarge(s.deepContactCount);
     releaseIfLarge(w.activeContacts);

@@ -17,6 +17,13 @@ namespace i2d::detail {
 
 struct WorldState;
 
+/// What the greedy colouring needs of one active contact, found on every
+/// worker (solver.cpp, colourContacts): its row's state indices, and flags.
+struct ColourKey {
+    int a, b;  ///< state indices
+    std::uint8_t flags;
+};
+
 /// Arrays rebuilt by every step. Each is sized for this step's awake bodies,
 /// contacts or joints.
 struct SolverArrays {
@@ -29,6 +36,7 @@ struct SolverArrays {
     std::vector<std::uint8_t> contactColours;     ///< per active contact: its row's group (solver.cpp), or kNoRow
     std::vector<int> colourOffsets;               ///< per row group: its first row (advanced as rows are placed)
     std::vector<std::uint64_t> colourBits;        ///< per colour, one bit per state
+    std::vector<ColourKey> colourKeys;            ///< per active contact (solver.cpp)
     int rowCount = 0;                             ///< contact rows this step
     std::vector<JointSlot> jointSlots;            ///< every joint with an awake body, in the world's order
     std::vector<JointConstraint> joints;  ///< rows of the slots not solved wide, in slot order (joint_solver.cpp)

@@ -37,6 +37,8 @@ public:
     /// them) or runs them on the caller: a stage too small to gain from
     /// helpers that are already waiting.
     void share(bool on) { share_ = on; }
+    /// Whether run() hands stages to helpers now.
+    bool sharing() const { return handleActive_ && share_; }
 
     /// Runs fn over [0, count) in chunks of `grain` items; returns when all are done.
     void run(StageFn fn, void* context, int count, int grain);
