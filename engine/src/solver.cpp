@@ -642,6 +642,7 @@ void releaseLargeStepArrays(WorldState& w) {
     releaseIfLarge(w.impactChanged);
     releaseIfLarge(w.impactTime);
     releaseIfLarge(w.impactBodyTime);
+    releaseIfLarge(w.impactMotion);
     releaseIfLarge(w.islands.unionParent);
 }
 

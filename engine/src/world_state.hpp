@@ -15,6 +15,7 @@
 #include "broad_phase.hpp"
 #include "contact.hpp"
 #include "events.hpp"
+#include "impact_stage.hpp"
 #include "impulse2d/types.hpp"
 #include "island.hpp"
 #include "joint.hpp"
@@ -48,6 +49,7 @@ struct WorldState {
     std::vector<std::uint8_t> collideUpdates;  ///< per gathered contact: what its manifold update found (contact.cpp)
     std::vector<std::uint32_t> impactChanged;
     std::vector<float> impactTime, impactBodyTime;
+    std::vector<BodyMotion> impactMotion;  ///< impact_stage.cpp: per body slot
 
     // Callbacks (World::setCustomFilter, setPreSolve); empty when not set.
     /// The game's task system (World::setTaskSystem), not owned; null: one thread.
