@@ -1,9 +1,10 @@
 // Stages shared among workers (see stage_runner.hpp). Memory order: the
-// caller writes a stage's description (in the slot of its epoch's parity),
-// then publishes its epoch in claim_ (release); a helper that reads that epoch
-// (acquire) sees the description. A helper claims a chunk only by
-// compare-and-swap on claim_ with the epoch it read the description under, so
-// a description overwritten by a later stage is never acted on. done_ counts finished items; the caller starts the next
+// caller writes a stage's description (in the slot of its epoch's parity) and
+// each share's cursor, then publishes its epoch (release); a helper that reads
+// that epoch (acquire) sees the description and the cursors. A worker claims
+// a chunk only by compare-and-swap on a share's cursor with the epoch it read
+// the description under, so a description overwritten by a later stage is
+// never acted on. done_ counts finished items; the caller starts the next
 // stage only when it reaches the count, so no late addition reaches it.
 #include "stage_runner.hpp"
 
@@ -38,9 +39,11 @@ void StageRunner::begin(TaskSystem* tasks) {
     handleActive_ = false;
     share_ = true;
     if (tasks == nullptr || tasks->workerCount() < 2) return;
+    shares_ = std::min(tasks->workerCount(), kMaxShares);
     exit_.store(false, std::memory_order_relaxed);
     // Helpers start by waiting for an epoch after the current one.
-    claim_.store(std::uint64_t{epoch_} << 32, std::memory_order_release);
+    published_.store(epoch_, std::memory_order_release);
+    // Helper i (of workerCount − 1, one item each) is worker i + 1.
     handle_ = tasks->enqueue(&StageRunner::helper, tasks->workerCount() - 1, 1, this);
     handleActive_ = true;
 }
@@ -53,19 +56,31 @@ void StageRunner::end() {
     handle_ = nullptr;
 }
 
-void StageRunner::work(std::uint32_t epoch, StageFn fn, void* context, int count, int grain) {
-    std::uint64_t c = claim_.load(std::memory_order_acquire);
+int StageRunner::shareBegin(int share, int count, int grain) const {
+    const int chunks = (count + grain - 1) / grain;
+    const long long first = static_cast<long long>(chunks) * share / shares_;
+    return static_cast<int>(std::min<long long>(first * grain, count));
+}
+
+void StageRunner::workShare(int share, std::uint32_t epoch, StageFn fn, void* context, int count, int grain) {
+    std::atomic<std::uint64_t>& claim = cursors_[share].claim;
+    const int last = shareBegin(share + 1, count, grain);
+    std::uint64_t c = claim.load(std::memory_order_acquire);
     while (static_cast<std::uint32_t>(c >> 32) == epoch) {
         const int next = static_cast<int>(c & 0xFFFFFFFFu);
-        if (next >= count) return;
-        if (!claim_.compare_exchange_weak(c, c + static_cast<std::uint64_t>(grain), std::memory_order_acq_rel,
-                                          std::memory_order_acquire))
+        if (next >= last) return;
+        if (!claim.compare_exchange_weak(c, c + static_cast<std::uint64_t>(grain), std::memory_order_acq_rel,
+                                         std::memory_order_acquire))
             continue;  // c now holds the current value
-        const int end = std::min(next + grain, count);
+        const int end = std::min(next + grain, last);
         fn(context, next, end);
         done_.fetch_add(end - next, std::memory_order_release);
-        c = claim_.load(std::memory_order_acquire);
+        c = claim.load(std::memory_order_acquire);
     }
+}
+
+void StageRunner::work(int self, std::uint32_t epoch, StageFn fn, void* context, int count, int grain) {
+    for (int i = 0; i < shares_; ++i) workShare((self + i) % shares_, epoch, fn, context, count, grain);
 }
 
 void StageRunner::run(StageFn fn, void* context, int count, int grain) {
@@ -82,18 +97,22 @@ void StageRunner::run(StageFn fn, void* context, int count, int grain) {
     stage.count.store(count, std::memory_order_relaxed);
     stage.grain.store(grain, std::memory_order_relaxed);
     done_.store(0, std::memory_order_relaxed);
-    claim_.store(std::uint64_t{epoch_} << 32, std::memory_order_release);
-    work(epoch_, fn, context, count, grain);
+    for (int i = 0; i < shares_; ++i)
+        cursors_[i].claim.store(std::uint64_t{epoch_} << 32 | static_cast<std::uint32_t>(shareBegin(i, count, grain)),
+                                std::memory_order_release);
+    published_.store(epoch_, std::memory_order_release);
+    work(0, epoch_, fn, context, count, grain);
     int spins = 0;
     while (done_.load(std::memory_order_acquire) < count) relax(spins);
 }
 
-void StageRunner::helper(int, int, int, void* context) {
+void StageRunner::helper(int begin, int, int, void* context) {
     StageRunner& r = *static_cast<StageRunner*>(context);
-    std::uint32_t seen = static_cast<std::uint32_t>(r.claim_.load(std::memory_order_acquire) >> 32);
+    const int self = (begin + 1) % r.shares_;
+    std::uint32_t seen = r.published_.load(std::memory_order_acquire);
     int spins = 0;
     while (!r.exit_.load(std::memory_order_acquire)) {
-        const std::uint32_t epoch = static_cast<std::uint32_t>(r.claim_.load(std::memory_order_acquire) >> 32);
+        const std::uint32_t epoch = r.published_.load(std::memory_order_acquire);
         if (epoch == seen) {
             relax(spins);
             continue;
@@ -101,10 +120,10 @@ void StageRunner::helper(int, int, int, void* context) {
         spins = 0;
         seen = epoch;
         // Stage epoch's description stays in its slot until stage epoch + 2 is
-        // written, which needs epoch + 1 finished: by then work() finds the
-        // epoch moved on and claims nothing under a stale description.
+        // written, which needs epoch + 1 finished: by then every cursor holds
+        // a later epoch and workShare claims nothing under a stale description.
         const Stage& stage = r.stages_[epoch & 1u];
-        r.work(epoch, stage.fn.load(std::memory_order_relaxed), stage.context.load(std::memory_order_relaxed),
+        r.work(self, epoch, stage.fn.load(std::memory_order_relaxed), stage.context.load(std::memory_order_relaxed),
                stage.count.load(std::memory_order_relaxed), stage.grain.load(std::memory_order_relaxed));
     }
 }

@@ -6,6 +6,15 @@
 // colour, the bodies of an integration), so who runs which chunk changes
 // nothing: a step is bit-identical on any number of workers. The caller never
 // waits for a helper to start, so a helper that starts late only helps less.
+//
+// Each worker first claims chunks of its own share of a stage, the same part
+// of [0, count) in every stage, and only then helps with the others' shares
+// (as Box2D v3's solver stages do). Items are in slot order, which follows the
+// bodies' order, so a worker meets mostly the same bodies in one colour after
+// another and in the integration: their states stay in its core's cache.
+// Claimed in turn from one counter, consecutive chunks went to alternating
+// workers and every colour moved half the bodies' cache lines from one core
+// to the other (pyramid100's sweeps ran 1.2 times faster on two workers).
 #pragma once
 
 #include <atomic>
@@ -49,13 +58,25 @@ public:
 
 private:
     static void helper(int begin, int end, int worker, void* context);
-    /// Claims and runs chunks of the stage of `epoch` until none is left.
-    void work(std::uint32_t epoch, StageFn fn, void* context, int count, int grain);
+    /// Claims and runs chunks of the stage of `epoch` until none is left:
+    /// worker `self`'s share first, then the others' in turn.
+    void work(int self, std::uint32_t epoch, StageFn fn, void* context, int count, int grain);
+    /// Claims and runs chunks of share `share` of the stage of `epoch`.
+    void workShare(int share, std::uint32_t epoch, StageFn fn, void* context, int count, int grain);
+    /// The first item of share `share` of a stage of `count` items (a
+    /// multiple of `grain`, so that chunks never cross shares).
+    int shareBegin(int share, int count, int grain) const;
 
-    // claim_: the current stage's epoch (high 32 bits) and its next unclaimed
-    // item. It and done_ live on cache lines of their own: the workers write
-    // them all the time, and the caller polls done_.
-    alignas(64) std::atomic<std::uint64_t> claim_{0};
+    static constexpr int kMaxShares = 16;  ///< workers beyond these share shares
+    /// Per share: the current stage's epoch (high 32 bits) and the share's
+    /// next unclaimed item, each on a cache line of its own.
+    struct alignas(64) Cursor {
+        std::atomic<std::uint64_t> claim{0};
+    };
+    Cursor cursors_[kMaxShares];
+    int shares_ = 1;
+    /// The current stage's epoch, published after its cursors are set.
+    alignas(64) std::atomic<std::uint32_t> published_{0};
     alignas(64) std::atomic<int> done_{0};
     /// Stage descriptions by epoch parity: the caller writes stage E + 1's
     /// while a late helper may still read stage E's.
