@@ -31,6 +31,7 @@
 // substep loops read BodyState, BodyIntegration and the constraint rows: all
 // contiguous arrays.
 #include <algorithm>
+#include <bit>
 #include <chrono>
 #include <cmath>
 
@@ -63,6 +64,8 @@ constexpr int kColourCount = 24;  ///< colours tried before the overflow group
 /// absent second point (wide_contact_kernel.hpp). A colour's rows share no
 /// movable body, so their order within it changes no result.
 constexpr int kRowGroupCount = kWideGroupsPerColour * kColourCount;  ///< the overflow group's index
+constexpr std::uint32_t kAllColours = (std::uint32_t{1} << kColourCount) - 1u;
+static_assert(kColourCount < 32, "a body's colours are the bits of a 32-bit mask");
 
 /// The bodies per chunk of an integration stage, and the contact blocks per
 /// chunk when they are packed, prepared or written back: large, so that few
@@ -103,8 +106,9 @@ void colourContacts(WorldState& w) {
     const std::size_t count = w.activeContacts.size();
     const std::size_t bodyCount = s.stateBodies.size();
     const int zeroState = static_cast<int>(s.states.size()) - 1;
-    const std::size_t words = (bodyCount + 63) / 64;
-    s.colourBits.assign(words * kColourCount, 0u);
+    // Per state: bit c set once the body has a row of colour c.
+    std::vector<std::uint32_t>& masks = s.contactColourMasks;
+    masks.assign(bodyCount, 0u);
     s.colourOffsets.assign(kRowGroupCount + 1, 0);
     s.contactColours.resize(count);
     // On one worker the keys are found as the greedy pass goes (no array to
@@ -130,18 +134,19 @@ void colourContacts(WorldState& w) {
         }
         ++rows;
         any |= key.flags;
+        // The first colour neither movable body has a row in yet: the lowest
+        // bit clear in both bodies' colour masks.
         const bool moveA = key.flags & kKeyMoveA, moveB = key.flags & kKeyMoveB;
-        const std::size_t wa = static_cast<std::size_t>(key.a) / 64, wb = static_cast<std::size_t>(key.b) / 64;
-        const std::uint64_t ma = moveA ? std::uint64_t{1} << (key.a % 64) : 0u;
-        const std::uint64_t mb = moveB ? std::uint64_t{1} << (key.b % 64) : 0u;
+        std::uint32_t* maskA = moveA ? &masks[static_cast<std::size_t>(key.a)] : nullptr;
+        std::uint32_t* maskB = moveB ? &masks[static_cast<std::size_t>(key.b)] : nullptr;
+        const std::uint32_t taken = (maskA ? *maskA : 0u) | (maskB ? *maskB : 0u) | ~kAllColours;
         int group = kRowGroupCount;
-        for (int c = 0; c < kColourCount; ++c) {
-            std::uint64_t* bits = s.colourBits.data() + static_cast<std::size_t>(c) * words;
-            if ((moveA && (bits[wa] & ma)) || (moveB && (bits[wb] & mb))) continue;
-            if (moveA) bits[wa] |= ma;
-            if (moveB) bits[wb] |= mb;
+        if (taken != ~std::uint32_t{0}) {
+            const int c = std::countr_one(taken);
+            const std::uint32_t bit = std::uint32_t{1} << c;
+            if (maskA) *maskA |= bit;
+            if (maskB) *maskB |= bit;
             group = kWideGroupsPerColour * c + ((key.flags & kKeyOnePoint) ? 1 : 0);
-            break;
         }
         s.contactColours[i] = static_cast<std::uint8_t>(group);
         ++s.colourOffsets[static_cast<std::size_t>(group)];
@@ -633,7 +638,7 @@ void releaseLargeStepArrays(WorldState& w) {
     releaseIfLarge(s.rowContacts);
     releaseIfLarge(s.contactColours);
     releaseIfLarge(s.colourKeys);
-    releaseIfLarge(s.colourBits);
+    releaseIfLarge(s.contactColourMasks);
     releaseIfLarge(s.deepContactCount);
     releaseIfLarge(w.activeContacts);
     releaseIfLarge(w.gatherScratch);

@@ -32,13 +32,13 @@ struct SolverArrays {
     std::vector<int> stateBodies;              ///< body slot of each state (awake bodies only)
     std::vector<Vec2> biasV;                   ///< split mode pseudo-velocities (zero entry last)
     std::vector<float> biasW;
-    ScratchArray<ContactConstraint> constraints;  ///< in colour order (solver.cpp)
-    std::vector<std::uint8_t> contactColours;     ///< per active contact: its row's group (solver.cpp), or kNoRow
-    std::vector<int> colourOffsets;               ///< per row group: its first row (advanced as rows are placed)
-    std::vector<std::uint64_t> colourBits;        ///< per colour, one bit per state
-    std::vector<ColourKey> colourKeys;            ///< per active contact (solver.cpp)
-    int rowCount = 0;                             ///< contact rows this step
-    std::vector<JointSlot> jointSlots;            ///< every joint with an awake body, in the world's order
+    ScratchArray<ContactConstraint> constraints;    ///< in colour order (solver.cpp)
+    std::vector<std::uint8_t> contactColours;       ///< per active contact: its row's group (solver.cpp), or kNoRow
+    std::vector<int> colourOffsets;                 ///< per row group: its first row (advanced as rows are placed)
+    std::vector<std::uint32_t> contactColourMasks;  ///< per state: the colours of its contact rows (solver.cpp)
+    std::vector<ColourKey> colourKeys;              ///< per active contact (solver.cpp)
+    int rowCount = 0;                               ///< contact rows this step
+    std::vector<JointSlot> jointSlots;              ///< every joint with an awake body, in the world's order
     std::vector<JointConstraint> joints;  ///< rows of the slots not solved wide, in slot order (joint_solver.cpp)
     std::vector<int> jointScratch;        ///< the row of each slot while the order is built
     std::vector<int> jointOrder;          ///< by colour: rows, then each colour's wide slots
