@@ -73,7 +73,7 @@ TEST(DeepCarry, AStrikeIsNotCarriedASteadyLoadIs) {
     oneDeepRow(w, 0.1f, 0.5f);
     const ContactConstraint& cc = w.solver.constraints[0];
     ASSERT_GT(cc.biasRate * 0.1f, loadPush(cc, cc.points[0], 0.5f)) << "the point must be pushed apart";
-    EXPECT_EQ(carry(w, 0.5f), 0.5f);  // steady
+    EXPECT_EQ(carry(w, 0.5f), 0.5f);   // steady
     EXPECT_EQ(carry(w, 50.0f), 0.5f);  // the strike: the load before it
     // Its friction stays within the cone of the impulse carried.
     EXPECT_LE(std::abs(cc.points[0].tangentImpulse), 0.6f * 0.5f);
