@@ -23,6 +23,7 @@
 namespace i2d::detail {
 
 struct WorldState;
+struct SolverArrays;
 
 /// Solver row data of one contact point. Rows are plain data without
 /// default values: prepareContacts writes every field a pass reads.
@@ -87,10 +88,22 @@ bool contactRowBodies(const WorldState& w, const Contact& ct, int zeroState, Row
 /// λ steady: its update Δλ = −m·ms·(vn + bias) − is·λ is zero at vn = 0 for
 /// bias = −is·λ/(m·ms). The push that carries the load the point bears, the
 /// depth biasRate⁻¹ times it being the sag that load explains.
-inline float loadPush(const ContactConstraint& cc, const ContactPointConstraint& cp) {
+inline float loadPush(const ContactConstraint& cc, const ContactPointConstraint& cp, float impulse) {
     const float k = cp.normalMass * cc.massScale;
-    return k > 0.0f ? cc.impulseScale * cp.normalImpulse / k : 0.0f;
+    return k > 0.0f ? cc.impulseScale * impulse / k : 0.0f;
 }
+inline float loadPush(const ContactConstraint& cc, const ContactPointConstraint& cp) {
+    return loadPush(cc, cp, cp.normalImpulse);
+}
+
+/// What the warm start of a deep row carries from substep to substep
+/// (carryDeepLoads): where its impulses live this step, and the normal
+/// impulses it ended the substep before the last with.
+struct DeepCarry {
+    int block;  ///< its wide block, −1 for a scalar row
+    int lane;
+    float previous[2];
+};
 
 /// Marks an active contact without a row in SolverArrays::contactColours.
 inline constexpr std::uint8_t kNoRow = 0xFF;
@@ -120,6 +133,16 @@ void finishContactRow(const RowContext& x, float penetrationSlop, ContactConstra
 /// written at its place in colour order: the colouring (solver.cpp) comes first.
 void prepareContacts(WorldState& w, float h, bool soft);
 void warmStartContacts(WorldState& w);
+/// soft_step with deep rows, once the rows are prepared (and packed): each
+/// deep row's DeepCarry, the impulses the step starts it with as its previous.
+void beginDeepCarry(SolverArrays& s);
+/// soft_step with deep rows, before the warm start of every substep but the
+/// first, and before the store: each deep point being pushed apart (its
+/// depth more than its load explains) keeps the smaller of its accumulated
+/// normal impulse and the one it had a substep earlier, its friction within
+/// μ times that (contact_solver.cpp says why). `inRows`: read and write the
+/// rows, not the blocks (after writeBackWideContacts).
+void carryDeepLoads(SolverArrays& s, bool inRows = false);
 /// One Gauss-Seidel sweep over the contacts, with the velocity target of `pass`.
 void solveContacts(WorldState& w, float h, SolvePass pass);
 /// Split mode (Tamis and Maggiore (2015) §8.1): the push alone, on the pseudo-velocities.

@@ -17,11 +17,13 @@
 // Constraint based physics solver, §8.1: within each substep the push moves
 // the positions and is then dropped, so no push velocity is ever left in a
 // body. The velocity rows of a deep contact are rigid: they keep the bodies
-// from approaching and carry the load (contact_solver.cpp). Each point asks
-// for a separating pseudo-speed of biasRate·d (d its depth: the soft row's
-// own push, so the push is continuous where a contact becomes shallow) less
-// the push its load needs (loadPush: the push at which a soft row would hold
-// the point's accumulated impulse), up to maxPushSpeed. A contact sunk deep
+// from approaching and carry the load (contact_solver.cpp; what their warm
+// start carries from substep to substep is a load, not a strike:
+// carryDeepLoads). Each point asks for a separating pseudo-speed of
+// biasRate·d (d its depth: the soft row's own push, so the push is
+// continuous where a contact becomes shallow) less the push its load needs
+// (loadPush: the push at which a soft row would hold the point's
+// accumulated impulse), up to maxPushSpeed. A contact sunk deep
 // under a heavy load is thus held where a soft row would hold it, not pushed
 // out: pushed by its full depth, the contact under a box 100 times heavier
 // than the 5-box stack below it (7 cm deep) went out of and back into the

@@ -481,7 +481,10 @@ void solve(WorldState& w, float dt) {
     w.runner.share(s.rowCount + w.joints.count + static_cast<int>(n) >= kParallelWork);
     s.positionUpdates = 0;
     prepareContactRows(w, h, soft);
-    if (soft && s.anyDeepOverlap) prepareDeepOverlaps(w);
+    if (soft && s.anyDeepOverlap) {
+        prepareDeepOverlaps(w);
+        beginDeepCarry(s);
+    }
     prepareJoints(w, dt);
     w.profile.prepare = msSince(prepareStart);
     // Joint stiffness capped at 1/4 of the substep rate, so jointHertz 60 holds
@@ -529,6 +532,7 @@ void solve(WorldState& w, float dt) {
     if (soft) {
         for (int i = 0; i < substeps; ++i) {
             velocities(h);
+            if (i > 0 && s.anyDeepOverlap) carryDeepLoads(s);
             warmStart();
             for (int pass = 0; pass < kJointSolvePasses; ++pass) joints(SolvePass::soft_bias);
             contacts(SolvePass::soft_bias, h);
@@ -556,6 +560,7 @@ void solve(WorldState& w, float dt) {
             applyRestitution(w);
             stopNonFiniteBodies(s);
         }
+        if (s.anyDeepOverlap) carryDeepLoads(s, true);  // what the next step's first substep starts with
     } else {
         const bool baumgarte = set.positionCorrection == PositionCorrection::baumgarte;
         const SolvePass pass = baumgarte ? SolvePass::baumgarte : SolvePass::no_push;

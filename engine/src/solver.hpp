@@ -56,6 +56,7 @@ struct SolverArrays {
     bool anyRollingRow = false;              ///< some row gets a rolling-resistance row this step
     std::vector<int> deepRows;               ///< the rows that do, ascending (contact_solver.cpp)
     std::vector<SidePush> sidePushes;        ///< deep rows pushed sideways, in row order (deep_overlap.cpp)
+    std::vector<DeepCarry> deepCarry;        ///< per deep row, in deepRows' order (contact_solver.cpp)
     std::vector<std::uint8_t> supported;     ///< per state: rests on something immovable (deep_overlap.cpp)
     std::vector<int> supportStart, supportAbove, supportQueue;  ///< deep_overlap.cpp's lists of what rests on what
     std::vector<RollingConstraint> rolling;       ///< contacts with rolling resistance (contact_solver.cpp)

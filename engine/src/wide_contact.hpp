@@ -8,7 +8,8 @@
 // baumgarte modes, and steps with rolling resistance keep the scalar rows. A
 // row overlapping deeper than kDeepOverlap is rigid in its block's push pass,
 // as in the scalar row; the push that moves it apart (deep_overlap.cpp) reads
-// its load from the block (readWideNormalImpulses).
+// its load from the block (readWideNormalImpulses), and what its warm start
+// carries is set in the block (carryDeepLoads, contact_solver.cpp).
 #pragma once
 
 #include <vector>

@@ -1,8 +1,9 @@
 // Contact rows solved four manifolds at a time (wide_contact.cpp) against the
 // scalar rows (contact_solver.cpp) on the same random rows: every regime a
 // row can be in — one or two points, points together or one after the other,
-// speculative, pushed at the cap, deep (rigid in the push pass), left to the
-// impact law in the last relax,
+// speculative, pushed at the cap, deep (rigid in the push pass, its impulses
+// carried to the next substep by carryDeepLoads, in its block or its row),
+// left to the impact law in the last relax,
 // round sides, a side that does not move — must give the same velocities and
 // impulses bit for bit, in every soft_step pass (the sanitizer build runs the
 // portable path; on CPUs with AVX2 the eight-lane path is checked as well).
@@ -12,6 +13,7 @@
 #include <cmath>
 #include <cstring>
 #include <random>
+#include <vector>
 
 #include "contact_solver.hpp"
 #include "wide_contact.hpp"
@@ -101,6 +103,9 @@ struct LaneLimit {
 
 void expectAgreement(int lanes) {
     const LaneLimit limit(lanes);
+    // Deep points whose rising impulse the carry cut (pushed apart) and kept
+    // (a sag its load explains): both must occur for the test to cover them.
+    int cut = 0, keptRising = 0;
     for (unsigned seed = 1; seed <= 30; ++seed) {
         const int n = 41;  // not a multiple of four: the last block has empty lanes
         WorldState scalar({}, 1), wide({}, 2);
@@ -121,14 +126,50 @@ void expectAgreement(int lanes) {
         s.wideContactColourStart = {0, twoBlocks, twoBlocks + oneBlocks};
         static_assert(kWideGroupsPerColour == 2);
         s.contactOverflowStart = n;
-        warmStartContacts(scalar);
-        warmStartContacts(wide);
+        // Each block's first row and its group's end, as solver.cpp lists
+        // them: the deep rows' carry finds their lanes from these.
+        s.wideBlockRows.clear();
+        for (int block = 0; block < twoBlocks; ++block)
+            s.wideBlockRows.insert(s.wideBlockRows.end(), {4 * block, twoPoints});
+        for (int block = 0; block < oneBlocks; ++block)
+            s.wideBlockRows.insert(s.wideBlockRows.end(), {twoPoints + 4 * block, n});
+        for (WorldState* w : {&scalar, &wide}) {
+            w->solver.deepRows.clear();
+            for (int r = 0; r < n; ++r)
+                if (w->solver.constraints[static_cast<std::size_t>(r)].deepOverlap) w->solver.deepRows.push_back(r);
+            beginDeepCarry(w->solver);
+        }
         // Impact speed 0.5 m/s: a fair share of the random speculative points
         // approach faster and are left to the impact law in the last relax.
         scalar.settings.impactThreshold = wide.settings.impactThreshold = 0.5f;
-        for (SolvePass pass : {SolvePass::soft_bias, SolvePass::soft_relax, SolvePass::soft_relax_last}) {
-            solveContacts(scalar, 1.0f / 240.0f, pass);
-            solveContacts(wide, 1.0f / 240.0f, pass);
+        // Two substeps' sweeps, the deep rows' impulses carried between them
+        // (carryDeepLoads) from the blocks in one world, the rows in the other.
+        for (int substep = 0; substep < 2; ++substep) {
+            if (substep > 0) {
+                const SolverArrays& r = scalar.solver;
+                std::vector<float> before, previous;
+                for (std::size_t d = 0; d < r.deepRows.size(); ++d)
+                    for (int j = 0; j < r.constraints[static_cast<std::size_t>(r.deepRows[d])].pointCount; ++j) {
+                        before.push_back(
+                            r.constraints[static_cast<std::size_t>(r.deepRows[d])].points[j].normalImpulse);
+                        previous.push_back(r.deepCarry[d].previous[j]);
+                    }
+                carryDeepLoads(scalar.solver);
+                carryDeepLoads(s);
+                std::size_t k = 0;
+                for (int row : r.deepRows)
+                    for (int j = 0; j < r.constraints[static_cast<std::size_t>(row)].pointCount; ++j, ++k) {
+                        const float after = r.constraints[static_cast<std::size_t>(row)].points[j].normalImpulse;
+                        cut += after < before[k];
+                        keptRising += after == before[k] && before[k] > previous[k];
+                    }
+            }
+            warmStartContacts(scalar);
+            warmStartContacts(wide);
+            for (SolvePass pass : {SolvePass::soft_bias, SolvePass::soft_relax, SolvePass::soft_relax_last}) {
+                solveContacts(scalar, 1.0f / 240.0f, pass);
+                solveContacts(wide, 1.0f / 240.0f, pass);
+            }
         }
         writeBackWideContacts(s, 0, static_cast<int>(s.wideContacts.size()));
         for (std::size_t i = 0; i + 1 < s.states.size(); ++i) {
@@ -147,6 +188,8 @@ void expectAgreement(int lanes) {
             }
         }
     }
+    EXPECT_GT(cut, 0);
+    EXPECT_GT(keptRising, 0);
 }
 
 TEST(WideContact, AgreesBitForBitWithTheScalarRowsInFourLanes) { expectAgreement(4); }
