@@ -32,6 +32,8 @@ namespace i2d::detail {
 
 namespace {
 constexpr int kMaxSweeps = 8;
+constexpr int kMotionGrain = 512;  ///< awake bodies per chunk when their motion is read on the workers
+constexpr int kLookGrain = 256;    ///< contacts per chunk of the first look on the workers
 
 // Timing within the step. The solver integrates by semi-implicit Euler over
 // N substeps of h = Δt/N: v_k = v_(k−1) + a·h, x_k = x_(k−1) + h·v_k, with a
@@ -112,10 +114,15 @@ void resolveImpacts(WorldState& w, float dt) {
     // contacts are looked at in full.
     std::vector<BodyMotion>& motion = w.impactMotion;
     motion.assign(static_cast<std::size_t>(w.bodies.capacity()), BodyMotion{});
-    for (int b : w.islands.awakeBodies) {
-        const Body& body = w.bodies[b];
-        motion[static_cast<std::size_t>(b)] = {body.v, body.center, body.w, 1.0f};
-    }
+    const std::vector<int>& awake = w.islands.awakeBodies;
+    auto readMotion = [&](int first, int last) {
+        for (int i = first; i < last; ++i) {
+            const int b = awake[static_cast<std::size_t>(i)];
+            const Body& body = w.bodies[b];
+            motion[static_cast<std::size_t>(b)] = {body.v, body.center, body.w, 1.0f};
+        }
+    };
+    w.runner.run(static_cast<int>(awake.size()), kMotionGrain, readMotion);
     auto approachesAtNoPoint = [&](const Contact& ct) {
         const BodyMotion& a = motion[static_cast<std::size_t>(ct.bodyA)];
         const BodyMotion& b = motion[static_cast<std::size_t>(ct.bodyB)];
@@ -128,13 +135,36 @@ void resolveImpacts(WorldState& w, float dt) {
         return true;  // NaN compares false: such a contact goes on to the full test, as before
     };
 
+    auto passedOver = [&](const Contact& ct) {
+        return !ct.touching || ct.isSensor || ct.manifold.pointCount == 0 || approachesAtNoPoint(ct);
+    };
+    // When the step is shared with workers, the first sweep's look at each
+    // contact is taken on all of them beforehand, from the bodies' motion at
+    // the stage's start. That is the look the sweep itself would take until
+    // the first strike changes a body; from then on the sweep looks again.
+    const std::size_t activeCount = w.activeContacts.size();
+    std::vector<std::uint8_t>& pass = w.impactPassOver;
+    const bool looked = w.runner.sharing();
+    if (looked) {
+        pass.resize(activeCount);
+        auto look = [&](int first, int last) {
+            for (int i = first; i < last; ++i)
+                pass[static_cast<std::size_t>(i)] = passedOver(
+                                                        w.contacts[w.activeContacts[static_cast<std::size_t>(i)]])
+                                                        ? 1
+                                                        : 0;
+        };
+        w.runner.run(static_cast<int>(activeCount), kLookGrain, look);
+    }
+
     for (int sweep = 1; sweep <= kMaxSweeps; ++sweep) {
         bool any = false;
         sweepStamp = static_cast<std::uint32_t>(sweep);
-        for (int c : w.activeContacts) {
+        for (std::size_t i = 0; i < activeCount; ++i) {
+            if (looked && sweep == 1 && !any && pass[i]) continue;
+            const int c = w.activeContacts[i];
             Contact& ct = w.contacts[c];
-            if (!ct.touching || ct.isSensor || ct.manifold.pointCount == 0) continue;
-            if (approachesAtNoPoint(ct)) continue;
+            if (passedOver(ct)) continue;
             Body& A = w.bodies[ct.bodyA];
             Body& B = w.bodies[ct.bodyB];
             if (A.type != BodyType::dynamic_body && B.type != BodyType::dynamic_body) continue;

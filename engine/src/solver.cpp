@@ -653,6 +653,7 @@ void releaseLargeStepArrays(WorldState& w) {
     releaseIfLarge(w.impactTime);
     releaseIfLarge(w.impactBodyTime);
     releaseIfLarge(w.impactMotion);
+    releaseIfLarge(w.impactPassOver);
     releaseIfLarge(w.islands.unionParent);
 }
 
