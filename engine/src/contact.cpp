@@ -382,30 +382,44 @@ void collide(WorldState& w) {
     // A narrowphase with enough contacts is shared with the task system's
     // workers, when the step has them (stage_runner.hpp); the result is the same.
     w.runner.share(w.contacts.count >= kParallelWork);
-    while (bodyCursor < awakeBodies.size()) {
-        std::size_t roundBegin = scratch.size();
-        for (; bodyCursor < awakeBodies.size(); ++bodyCursor) {
-            for (int c : w.bodies[awakeBodies[bodyCursor]].contacts) {
-                Contact& ct = w.contacts[c];
-                if (ct.stamp == w.stepStamp) continue;
-                ct.stamp = w.stepStamp;
-                scratch.push_back(c);
+    // With no island asleep every contact has an awake body (a contact needs
+    // a body that can move, and a disabled body keeps none): the round is
+    // every live contact, in slot order, read off the slots without walking
+    // the bodies' lists, and no touch can wake anything, so it is the only one.
+    const bool noneAsleep = w.islands.sleepingIslands.size() == w.islands.freeIslands.size();
+    bool firstRound = true;
+    while (firstRound ? !awakeBodies.empty() : bodyCursor < awakeBodies.size()) {
+        const std::size_t roundBegin = scratch.size();
+        const int slots = w.contacts.capacity();
+        if (firstRound && noneAsleep) {
+            for (int c = 0; c < slots; ++c)
+                if (w.contacts[c].alive) scratch.push_back(c);
+            bodyCursor = awakeBodies.size();
+        } else {
+            for (; bodyCursor < awakeBodies.size(); ++bodyCursor) {
+                for (int c : w.bodies[awakeBodies[bodyCursor]].contacts) {
+                    Contact& ct = w.contacts[c];
+                    if (ct.stamp == w.stepStamp) continue;
+                    ct.stamp = w.stepStamp;
+                    scratch.push_back(c);
+                }
+            }
+            // Contact-slot order, so results do not depend on the awake list's
+            // order. When the first round gathered a good part of all the slots
+            // (a world mostly awake), reading the slots' stamps in order gives
+            // that order for less than sorting: many_pyramids' 44,000 contacts
+            // took a millisecond and a half to sort. Later rounds (islands a
+            // touch woke) sort.
+            const std::size_t gathered = scratch.size() - roundBegin;
+            if (roundBegin == 0 && gathered * kDenseGather >= static_cast<std::size_t>(slots)) {
+                scratch.clear();
+                for (int c = 0; c < slots; ++c)
+                    if (w.contacts[c].stamp == w.stepStamp) scratch.push_back(c);
+            } else {
+                std::sort(scratch.begin() + static_cast<std::ptrdiff_t>(roundBegin), scratch.end());
             }
         }
-        // Contact-slot order, so results do not depend on the awake list's
-        // order. When the first round gathered a good part of all the slots
-        // (a world mostly awake), reading the slots' stamps in order gives that
-        // order for less than sorting: many_pyramids' 44,000 contacts took a
-        // millisecond and a half to sort. Later rounds (islands a touch woke) sort.
-        const std::size_t gathered = scratch.size() - roundBegin;
-        const int slots = w.contacts.capacity();
-        if (roundBegin == 0 && gathered * kDenseGather >= static_cast<std::size_t>(slots)) {
-            scratch.clear();
-            for (int c = 0; c < slots; ++c)
-                if (w.contacts[c].stamp == w.stepStamp) scratch.push_back(c);
-        } else {
-            std::sort(scratch.begin() + static_cast<std::ptrdiff_t>(roundBegin), scratch.end());
-        }
+        firstRound = false;
         if (w.preSolve) {
             // The game's callback runs on the stepping thread, contact by
             // contact in slot order, each seeing the updates before it.
