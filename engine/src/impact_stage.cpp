@@ -123,10 +123,20 @@ void resolveImpacts(WorldState& w, float dt) {
         }
     };
     w.runner.run(static_cast<int>(awake.size()), kMotionGrain, readMotion);
+    // A static body is read where it is (the ground under a thousand boxes
+    // stays in the cache); it is never struck, and listing the static bodies
+    // every step would make a world pay for those it does not touch.
+    auto motionOf = [&](int b, BodyMotion& out) {
+        out = motion[static_cast<std::size_t>(b)];
+        if (out.known != 0.0f) return true;
+        const Body& body = w.bodies[b];
+        if (body.type != BodyType::static_body) return false;
+        out = {body.v, body.center, body.w, 1.0f};
+        return true;
+    };
     auto approachesAtNoPoint = [&](const Contact& ct) {
-        const BodyMotion& a = motion[static_cast<std::size_t>(ct.bodyA)];
-        const BodyMotion& b = motion[static_cast<std::size_t>(ct.bodyB)];
-        if (a.known == 0.0f || b.known == 0.0f) return false;
+        BodyMotion a, b;
+        if (!motionOf(ct.bodyA, a) || !motionOf(ct.bodyB, b)) return false;
         for (int j = 0; j < ct.manifold.pointCount; ++j) {
             const Vec2 p = ct.manifold.points[j].point;
             const Vec2 dv = (b.v + cross(b.w, p - b.center)) - (a.v + cross(a.w, p - a.center));
@@ -140,28 +150,38 @@ void resolveImpacts(WorldState& w, float dt) {
     };
     // When the step is shared with workers, the first sweep's look at each
     // contact is taken on all of them beforehand, from the bodies' motion at
-    // the stage's start. That is the look the sweep itself would take until
-    // the first strike changes a body; from then on the sweep looks again.
+    // the stage's start, with the contact's bodies. That is the look the
+    // sweep itself would take while neither body has been struck (a strike
+    // marks a body's motion unknown); for a contact with a struck body the
+    // sweep looks again.
     const std::size_t activeCount = w.activeContacts.size();
-    std::vector<std::uint8_t>& pass = w.impactPassOver;
+    std::vector<ImpactLook>& looks = w.impactLooks;
     const bool looked = w.runner.sharing();
     if (looked) {
-        pass.resize(activeCount);
+        looks.resize(activeCount);
         auto look = [&](int first, int last) {
-            for (int i = first; i < last; ++i)
-                pass[static_cast<std::size_t>(i)] = passedOver(
-                                                        w.contacts[w.activeContacts[static_cast<std::size_t>(i)]])
-                                                        ? 1
-                                                        : 0;
+            for (int i = first; i < last; ++i) {
+                const Contact& ct = w.contacts[w.activeContacts[static_cast<std::size_t>(i)]];
+                looks[static_cast<std::size_t>(i)] = {ct.bodyA, ct.bodyB, passedOver(ct)};
+            }
         };
         w.runner.run(static_cast<int>(activeCount), kLookGrain, look);
     }
+    // A struck dynamic body's motion is no longer known; a static body's
+    // never changes.
+    auto unchanged = [&](int b) {
+        return motion[static_cast<std::size_t>(b)].known != 0.0f || w.bodies[b].type == BodyType::static_body;
+    };
+    auto stillPassedOver = [&](std::size_t i) {
+        const ImpactLook& l = looks[i];
+        return l.passOver && unchanged(l.bodyA) && unchanged(l.bodyB);
+    };
 
     for (int sweep = 1; sweep <= kMaxSweeps; ++sweep) {
         bool any = false;
         sweepStamp = static_cast<std::uint32_t>(sweep);
         for (std::size_t i = 0; i < activeCount; ++i) {
-            if (looked && sweep == 1 && !any && pass[i]) continue;
+            if (looked && sweep == 1 && stillPassedOver(i)) continue;
             const int c = w.activeContacts[i];
             Contact& ct = w.contacts[c];
             if (passedOver(ct)) continue;

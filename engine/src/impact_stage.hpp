@@ -17,6 +17,12 @@ struct BodyMotion {
     float known = 0.0f;
 };
 
+/// The impact stage's first look at an active contact, taken on the workers.
+struct ImpactLook {
+    int bodyA, bodyB;
+    bool passOver;  ///< approaches at none of its points (or has none)
+};
+
 /// Resolves the impacts among this step's active contacts (closed_form
 /// impact model only; nothing otherwise).
 void resolveImpacts(WorldState& w, float dt);

@@ -653,7 +653,7 @@ void releaseLargeStepArrays(WorldState& w) {
     releaseIfLarge(w.impactTime);
     releaseIfLarge(w.impactBodyTime);
     releaseIfLarge(w.impactMotion);
-    releaseIfLarge(w.impactPassOver);
+    releaseIfLarge(w.impactLooks);
     releaseIfLarge(w.islands.unionParent);
 }
 
