@@ -32,15 +32,11 @@ struct ManifoldFrame {
 };
 
 struct Contact {
-    Manifold manifold{};
-    ManifoldFrame frame{};     ///< valid when `framed`
-    float normalImpulse[2]{};  ///< accumulated at each manifold point (N·s)
-    float tangentImpulse[2]{};
-    float friction = 0.0f, restitution = 0.0f;  ///< mixed from the two shapes
+    // What every pass over the active contacts reads first (the impact
+    // stage's look, the colouring, the narrowphase) lies together, next to
+    // the manifold.
     int shapeA = kNullIndex, shapeB = kNullIndex;
     int bodyA = kNullIndex, bodyB = kNullIndex;
-    std::uint32_t generation = 1;
-    std::uint32_t stamp = 0;  ///< step stamp, to gather each active contact once
     bool alive = false;
     bool touching = false;  ///< the manifold has points (sensors: an overlap)
     bool isSensor = false;
@@ -50,6 +46,13 @@ struct Contact {
     /// Shape A, B is a circle, whose contact point does not turn with it
     /// (contact_solver.hpp): kept here so that preparing the rows reads no shape.
     bool roundA = false, roundB = false;
+    Manifold manifold{};
+    float normalImpulse[2]{};  ///< accumulated at each manifold point (N·s)
+    float tangentImpulse[2]{};
+    float friction = 0.0f, restitution = 0.0f;  ///< mixed from the two shapes
+    ManifoldFrame frame{};                      ///< valid when `framed`
+    std::uint32_t generation = 1;
+    std::uint32_t stamp = 0;  ///< step stamp, to gather each active contact once
 };
 
 /// A contact's rolling resistance and tangent speed, and its rolling row's
