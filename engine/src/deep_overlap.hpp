@@ -23,7 +23,9 @@ void prepareDeepOverlaps(WorldState& w);
 
 /// The push of every deep contact, solved by a few Gauss-Seidel sweeps on
 /// the pseudo-velocities SolverArrays::biasV/biasW (zeroed here first); each
-/// body's pseudo-velocity is then limited to WorldSettings::maxPushSpeed.
-void pushDeepOverlaps(WorldState& w);
+/// body's pseudo-velocity is then limited to WorldSettings::maxPushSpeed, and
+/// a supported body lifted by it while falling loses the fall the lift pays
+/// for over the substep h.
+void pushDeepOverlaps(WorldState& w, float h);
 
 }  // namespace i2d::detail

@@ -539,7 +539,7 @@ void solve(WorldState& w, float dt) {
             if (s.anyDeepOverlap) {
                 // The push reads the load its rows carry (deep_overlap.cpp).
                 if (s.wideContactsActive) readWideNormalImpulses(s, s.deepRows);
-                pushDeepOverlaps(w);
+                pushDeepOverlaps(w, h);
                 dropNonFinitePush(s);
                 integratePositionsPushed(s, h, maxSpeed);
             } else {
