@@ -32,8 +32,7 @@ namespace i2d::detail {
 
 namespace {
 constexpr int kMaxSweeps = 8;
-constexpr int kMotionGrain = 512;  ///< awake bodies per chunk when their motion is read on the workers
-constexpr int kLookGrain = 256;    ///< contacts per chunk of the first look on the workers
+constexpr int kLookGrain = 256;  ///< contacts per chunk of the first look on the workers
 
 // Timing within the step. The solver integrates by semi-implicit Euler over
 // N substeps of h = Δt/N: v_k = v_(k−1) + a·h, x_k = x_(k−1) + h·v_k, with a
@@ -78,6 +77,29 @@ float closingTime(float s, float vn, float an, float dt) {
 }  // namespace
 
 void resolveImpacts(WorldState& w, float dt) {
+    // changed[b] == the sweep in which body b's velocity last changed (0:
+    // none this step). hitTime[c] == when contact c was struck in this step,
+    // −1 while it was not; bodyTime[b] the same for body b's first impact.
+    // Kept between steps and only grown: the entries the last stage wrote
+    // (its struck bodies and contacts) go back to their defaults here, so a
+    // step pays for what was struck, not for every slot (filled anew every
+    // step, they charged 10,000 idle bodies to the 100 awake beside them).
+    std::vector<std::uint32_t>& changed = w.impactChanged;
+    std::vector<float>& hitTime = w.impactTime;
+    std::vector<float>& bodyTime = w.impactBodyTime;
+    for (int b : w.impactStruckBodies) {
+        changed[static_cast<std::size_t>(b)] = 0u;
+        bodyTime[static_cast<std::size_t>(b)] = -1.0f;
+    }
+    for (int c : w.impactStruckContacts) hitTime[static_cast<std::size_t>(c)] = -1.0f;
+    w.impactStruckBodies.clear();
+    w.impactStruckContacts.clear();
+    const auto bodySlots = static_cast<std::size_t>(w.bodies.capacity());
+    const auto contactSlots = static_cast<std::size_t>(w.contacts.capacity());
+    if (changed.size() < bodySlots) changed.resize(bodySlots, 0u);
+    if (bodyTime.size() < bodySlots) bodyTime.resize(bodySlots, -1.0f);
+    if (hitTime.size() < contactSlots) hitTime.resize(contactSlots, -1.0f);
+
     const WorldSettings& settings = w.settings;
     if (settings.impactModel != ImpactModel::closed_form) return;
     const float threshold = settings.impactThreshold;
@@ -85,15 +107,6 @@ void resolveImpacts(WorldState& w, float dt) {
     const float halfSubstep = 0.5f * dt / static_cast<float>(substeps);
 
     std::uint32_t sweepStamp = 0;
-    // changed[b] == the sweep in which body b's velocity last changed.
-    std::vector<std::uint32_t>& changed = w.impactChanged;
-    changed.assign(static_cast<std::size_t>(w.bodies.capacity()), 0u);
-    // hitTime[c] == when contact c was struck in this step, −1 while it was
-    // not; bodyTime[b] the same for body b's first impact.
-    std::vector<float>& hitTime = w.impactTime;
-    hitTime.assign(static_cast<std::size_t>(w.contacts.capacity()), -1.0f);
-    std::vector<float>& bodyTime = w.impactBodyTime;
-    bodyTime.assign(static_cast<std::size_t>(w.bodies.capacity()), -1.0f);
     // Moves body b's start so that the step ends as flight until its first
     // impact and the changed velocity after it (timing above).
     auto shiftStart = [&](Body& body, int b, float tHit, Vec2 dv, float dw) {
@@ -106,37 +119,11 @@ void resolveImpacts(WorldState& w, float dt) {
         body.xf.p = body.center - rotate(body.xf.q, body.localCenter);
     };
 
-    // The velocities and centres of the awake bodies, by body slot, compact:
-    // most contacts of a resting pile approach at none of their points, and
-    // that is found from these (the same expression as below, so the same
-    // bits) without reading the bodies. A body that is not awake, or that an
-    // impact of this stage changed, is not in it (`known` 0) and its
-    // contacts are looked at in full.
-    std::vector<BodyMotion>& motion = w.impactMotion;
-    motion.assign(static_cast<std::size_t>(w.bodies.capacity()), BodyMotion{});
-    const std::vector<int>& awake = w.islands.awakeBodies;
-    auto readMotion = [&](int first, int last) {
-        for (int i = first; i < last; ++i) {
-            const int b = awake[static_cast<std::size_t>(i)];
-            const Body& body = w.bodies[b];
-            motion[static_cast<std::size_t>(b)] = {body.v, body.center, body.w, 1.0f};
-        }
-    };
-    w.runner.run(static_cast<int>(awake.size()), kMotionGrain, readMotion);
-    // A static body is read where it is (the ground under a thousand boxes
-    // stays in the cache); it is never struck, and listing the static bodies
-    // every step would make a world pay for those it does not touch.
-    auto motionOf = [&](int b, BodyMotion& out) {
-        out = motion[static_cast<std::size_t>(b)];
-        if (out.known != 0.0f) return true;
-        const Body& body = w.bodies[b];
-        if (body.type != BodyType::static_body) return false;
-        out = {body.v, body.center, body.w, 1.0f};
-        return true;
-    };
+    // A contact approaching at none of its points is passed over (the test
+    // below, before anything else is read or computed for it).
     auto approachesAtNoPoint = [&](const Contact& ct) {
-        BodyMotion a, b;
-        if (!motionOf(ct.bodyA, a) || !motionOf(ct.bodyB, b)) return false;
+        const Body& a = w.bodies[ct.bodyA];
+        const Body& b = w.bodies[ct.bodyB];
         for (int j = 0; j < ct.manifold.pointCount; ++j) {
             const Vec2 p = ct.manifold.points[j].point;
             const Vec2 dv = (b.v + cross(b.w, p - b.center)) - (a.v + cross(a.w, p - a.center));
@@ -144,7 +131,6 @@ void resolveImpacts(WorldState& w, float dt) {
         }
         return true;  // NaN compares false: such a contact goes on to the full test, as before
     };
-
     auto passedOver = [&](const Contact& ct) {
         return !ct.touching || ct.isSensor || ct.manifold.pointCount == 0 || approachesAtNoPoint(ct);
     };
@@ -152,8 +138,10 @@ void resolveImpacts(WorldState& w, float dt) {
     // contact is taken on all of them beforehand, from the bodies' motion at
     // the stage's start, with the contact's bodies. That is the look the
     // sweep itself would take while neither body has been struck (a strike
-    // marks a body's motion unknown); for a contact with a struck body the
-    // sweep looks again.
+    // marks both in `changed`); for a contact with a struck body the sweep
+    // looks again. (The bodies' motion was once copied into an array by body
+    // slot for this look: filled every step, it made 10,000 idle bodies cost
+    // the 100 awake beside them a fifth more.)
     const std::size_t activeCount = w.activeContacts.size();
     std::vector<ImpactLook>& looks = w.impactLooks;
     const bool looked = w.runner.sharing();
@@ -167,14 +155,10 @@ void resolveImpacts(WorldState& w, float dt) {
         };
         w.runner.run(static_cast<int>(activeCount), kLookGrain, look);
     }
-    // A struck dynamic body's motion is no longer known; a static body's
-    // never changes.
-    auto unchanged = [&](int b) {
-        return motion[static_cast<std::size_t>(b)].known != 0.0f || w.bodies[b].type == BodyType::static_body;
-    };
-    auto stillPassedOver = [&](std::size_t i) {
+    auto stillPassedOver = [&](std::size_t i) {  // in the first sweep
         const ImpactLook& l = looks[i];
-        return l.passOver && unchanged(l.bodyA) && unchanged(l.bodyB);
+        return l.passOver && changed[static_cast<std::size_t>(l.bodyA)] != 1u &&
+               changed[static_cast<std::size_t>(l.bodyB)] != 1u;
     };
 
     for (int sweep = 1; sweep <= kMaxSweeps; ++sweep) {
@@ -228,6 +212,7 @@ void resolveImpacts(WorldState& w, float dt) {
             // the gap again, into each other, where its rows (keeping the
             // start's gap) could not see it.
             float& firstHit = hitTime[static_cast<std::size_t>(c)];
+            if (firstHit < 0.0f) w.impactStruckContacts.push_back(c);
             const float tHit = firstHit >= 0.0f ? firstHit : closingTime(gap, approach + an * halfSubstep, an, dt);
             firstHit = tHit;
             const Vec2 vA0 = A.v + (halfSubstep + tHit) * accA;
@@ -272,10 +257,11 @@ void resolveImpacts(WorldState& w, float dt) {
             // above puts the bodies where the exact flight-and-rebound would be
             // at the step's end, and an updated (now negative) separation would
             // make the solver push them apart and add energy.
-            changed[static_cast<std::size_t>(ct.bodyA)] = sweepStamp;
-            changed[static_cast<std::size_t>(ct.bodyB)] = sweepStamp;
-            motion[static_cast<std::size_t>(ct.bodyA)].known = 0.0f;  // changed: read from the body again
-            motion[static_cast<std::size_t>(ct.bodyB)].known = 0.0f;
+            for (int b : {ct.bodyA, ct.bodyB}) {
+                std::uint32_t& when = changed[static_cast<std::size_t>(b)];
+                if (when == 0u) w.impactStruckBodies.push_back(b);
+                when = sweepStamp;
+            }
             any = true;
         }
         if (!any) break;

@@ -649,10 +649,8 @@ void releaseLargeStepArrays(WorldState& w) {
     releaseIfLarge(w.gatherScratch);
     releaseIfLarge(w.collideUpdates);
     releaseIfLarge(w.broadPhase.proxyLeaves);
-    releaseIfLarge(w.impactChanged);
-    releaseIfLarge(w.impactTime);
-    releaseIfLarge(w.impactBodyTime);
-    releaseIfLarge(w.impactMotion);
+    // impactChanged, impactTime and impactBodyTime are kept: the impact stage
+    // resets only what it wrote (impact_stage.cpp).
     releaseIfLarge(w.impactLooks);
     releaseIfLarge(w.islands.unionParent);
 }

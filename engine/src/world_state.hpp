@@ -49,8 +49,8 @@ struct WorldState {
     std::vector<std::uint8_t> collideUpdates;  ///< per gathered contact: what its manifold update found (contact.cpp)
     std::vector<std::uint32_t> impactChanged;
     std::vector<float> impactTime, impactBodyTime;
-    std::vector<BodyMotion> impactMotion;  ///< impact_stage.cpp: per body slot
-    std::vector<ImpactLook> impactLooks;   ///< impact_stage.cpp: per active contact
+    std::vector<int> impactStruckBodies, impactStruckContacts;  ///< what the last impact stage wrote
+    std::vector<ImpactLook> impactLooks;                        ///< impact_stage.cpp: per active contact
 
     // Callbacks (World::setCustomFilter, setPreSolve); empty when not set.
     /// The game's task system (World::setTaskSystem), not owned; null: one thread.
