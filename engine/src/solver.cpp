@@ -43,6 +43,25 @@
 
 namespace i2d::detail {
 
+// v limited to maxSpeed (solver.hpp). A velocity whose square overflows (a
+// body of tiny mass pushed by a force: F/m beyond single precision) keeps its
+// direction and is limited too, where scaling by maxSpeed/∞ would give
+// ∞·0 = NaN (found by fuzz_world).
+Vec2 limitSpeed(Vec2 v, float maxSpeed) {
+    float speed2 = lengthSquared(v);
+    if (!(speed2 > maxSpeed * maxSpeed)) return v;
+    if (!isFinite(speed2)) {
+        const float largest = std::max(std::abs(v.x), std::abs(v.y));
+        if (largest == INFINITY)
+            v = {std::isinf(v.x) ? std::copysign(1.0f, v.x) : 0.0f, std::isinf(v.y) ? std::copysign(1.0f, v.y) : 0.0f};
+        else
+            v *= 1.0f / largest;
+        speed2 = lengthSquared(v);
+    }
+    v *= maxSpeed / std::sqrt(speed2);
+    return v;
+}
+
 namespace {
 
 // ---------------------------------------------------------------------------
@@ -273,25 +292,6 @@ void prepareContactRows(WorldState& w, float h, bool soft) {
 
 // ---------------------------------------------------------------------------
 // Integration (Tamis and Maggiore (2015) §3.2, semi-implicit Euler)
-
-/// v limited to maxSpeed. A velocity whose square overflows (a body of tiny
-/// mass pushed by a force: F/m beyond single precision) keeps its direction
-/// and is limited too, where scaling by maxSpeed/∞ would give ∞·0 = NaN
-/// (found by fuzz_world).
-Vec2 limitSpeed(Vec2 v, float maxSpeed) {
-    float speed2 = lengthSquared(v);
-    if (!(speed2 > maxSpeed * maxSpeed)) return v;
-    if (!isFinite(speed2)) {
-        const float largest = std::max(std::abs(v.x), std::abs(v.y));
-        if (largest == INFINITY)
-            v = {std::isinf(v.x) ? std::copysign(1.0f, v.x) : 0.0f, std::isinf(v.y) ? std::copysign(1.0f, v.y) : 0.0f};
-        else
-            v *= 1.0f / largest;
-        speed2 = lengthSquared(v);
-    }
-    v *= maxSpeed / std::sqrt(speed2);
-    return v;
-}
 
 /// Bodies [begin, end) of the solver arrays (each body on its own: a stage
 /// the workers may share).

@@ -70,6 +70,10 @@ struct SolverArrays {
     int contactOverflowStart = 0;                 ///< the first row of the scalar rest (the overflow group)
 };
 
+/// v limited to maxSpeed, its direction kept (also for a velocity whose
+/// square overflows single precision).
+Vec2 limitSpeed(Vec2 v, float maxSpeed);
+
 /// Advances the world by dt: pairs → narrowphase → impacts → solve →
 /// continuous collision → proxies → sleep.
 void stepWorld(WorldState& w, float dt);
