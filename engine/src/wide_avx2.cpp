@@ -121,26 +121,18 @@ struct Lanes8 {
 
 int warmStartWideContactsAvx2(WideContactBlock* blocks, BodyState* states, int first, int last, int points) {
     int i = first;
-    for (; i + 1 < last; i += 2) {
-        const Lanes8<WideContactBlock> k{blocks + i, blocks + i + 1};
-        if (points == 1)
-            warmStartBlock<1>(k, states);
-        else
-            warmStartBlock<2>(k, states);
-    }
+    withPointCount(points, [&](auto n) {
+        for (; i + 1 < last; i += 2) warmStartBlock<n()>(Lanes8<WideContactBlock>{blocks + i, blocks + i + 1}, states);
+    });
     return i;
 }
 
 int solveWideContactsAvx2(WideContactBlock* blocks, BodyState* states, const SweepParams& sp, int first, int last,
                           int points) {
     int i = first;
-    for (; i + 1 < last; i += 2) {
-        const Lanes8<WideContactBlock> k{blocks + i, blocks + i + 1};
-        if (points == 1)
-            solveBlock<1>(k, states, sp);
-        else
-            solveBlock<2>(k, states, sp);
-    }
+    withPointCount(points, [&](auto n) {
+        for (; i + 1 < last; i += 2) solveBlock<n()>(Lanes8<WideContactBlock>{blocks + i, blocks + i + 1}, states, sp);
+    });
     return i;
 }
 

@@ -129,13 +129,11 @@ void warmStartWideContacts(SolverArrays& s, int firstBlock, int lastBlock, int p
     if (wideLanes() == 8 && lastBlock > firstBlock)
         firstBlock = warmStartWideContactsAvx2(&s.wideContacts[0], s.states.data(), firstBlock, lastBlock, points);
 #endif
-    for (int i = firstBlock; i < lastBlock; ++i) {
-        const Lanes4<WideContactBlock> k{&s.wideContacts[static_cast<std::size_t>(i)]};
-        if (points == 1)
-            warmStartBlock<1>(k, s.states.data());
-        else
-            warmStartBlock<2>(k, s.states.data());
-    }
+    withPointCount(points, [&](auto n) {
+        for (int i = firstBlock; i < lastBlock; ++i)
+            warmStartBlock<n()>(Lanes4<WideContactBlock>{&s.wideContacts[static_cast<std::size_t>(i)]},
+                                s.states.data());
+    });
 }
 
 void solveWideContacts(SolverArrays& s, SolvePass pass, float h, bool leaveImpacts, float impactSpeed, int firstBlock,
@@ -145,13 +143,11 @@ void solveWideContacts(SolverArrays& s, SolvePass pass, float h, bool leaveImpac
     if (wideLanes() == 8 && lastBlock > firstBlock)
         firstBlock = solveWideContactsAvx2(&s.wideContacts[0], s.states.data(), sp, firstBlock, lastBlock, points);
 #endif
-    for (int i = firstBlock; i < lastBlock; ++i) {
-        const Lanes4<WideContactBlock> k{&s.wideContacts[static_cast<std::size_t>(i)]};
-        if (points == 1)
-            solveBlock<1>(k, s.states.data(), sp);
-        else
-            solveBlock<2>(k, s.states.data(), sp);
-    }
+    withPointCount(points, [&](auto n) {
+        for (int i = firstBlock; i < lastBlock; ++i)
+            solveBlock<n()>(Lanes4<WideContactBlock>{&s.wideContacts[static_cast<std::size_t>(i)]}, s.states.data(),
+                            sp);
+    });
 }
 
 void writeBackWideContacts(SolverArrays& s, int firstBlock, int lastBlock) {

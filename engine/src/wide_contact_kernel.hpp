@@ -26,6 +26,8 @@
 // on a CPU without it.
 #pragma once
 
+#include <type_traits>
+
 #include "wide_contact.hpp"
 #include "wide_lanes.hpp"
 
@@ -60,6 +62,17 @@ I2D_KERNEL void applyMasked(M m, const WideArmsT<V>& r, V px, V py, V mA, V iA, 
     v.vBx = select(m, v.vBx + mB * px, v.vBx);
     v.vBy = select(m, v.vBy + mB * py, v.vBy);
     v.wB = select(m, v.wB + iB * (r.rBx * py - r.rBy * px), v.wB);
+}
+
+/// Calls f with std::integral_constant<int, 1> or <int, 2> as `points` says,
+/// so that a sweep's loop over blocks is compiled once per point count and
+/// the choice is made once, outside it.
+template <class F>
+I2D_KERNEL void withPointCount(int points, F&& f) {
+    if (points == 1)
+        f(std::integral_constant<int, 1>{});
+    else
+        f(std::integral_constant<int, 2>{});
 }
 
 using BlockField = float (WideContactBlock::*)[4];
