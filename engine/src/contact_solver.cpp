@@ -85,21 +85,6 @@ float impactShift(const WorldState& w, int c, const Body& a, const Body& b, Vec2
 
 }  // namespace
 
-bool contactRowBodies(const WorldState& w, const Contact& ct, int zeroState, RowBodies& out) {
-    if (!ct.touching || ct.isSensor || ct.manifold.pointCount == 0) return false;
-    const Body& bA = w.bodies[ct.bodyA];
-    const Body& bB = w.bodies[ct.bodyB];
-    // solverIndex is set for this step's awake bodies only (static and sleeping: none).
-    out.a = bA.solverIndex >= 0 ? bA.solverIndex : zeroState;
-    out.b = bB.solverIndex >= 0 ? bB.solverIndex : zeroState;
-    out.invMassA = out.a != zeroState ? bA.invMass : 0.0f;
-    out.invIA = out.a != zeroState ? bA.invInertia : 0.0f;
-    out.invMassB = out.b != zeroState ? bB.invMass : 0.0f;
-    out.invIB = out.b != zeroState ? bB.invInertia : 0.0f;
-    // Neither side moves (two sleeping or infinitely heavy bodies): no row.
-    return out.invMassA != 0.0f || out.invIA != 0.0f || out.invMassB != 0.0f || out.invIB != 0.0f;
-}
-
 RowContext makeRowContext(const WorldState& w, float h, bool soft) {
     const WorldSettings& set = w.settings;
     RowContext x;
@@ -129,7 +114,7 @@ bool prepareContactRow(const WorldState& w, const RowContext& x, int c, ContactC
     const Body& bA = w.bodies[ct.bodyA];
     const Body& bB = w.bodies[ct.bodyB];
     RowBodies rb;
-    contactRowBodies(w, ct, x.zeroState, rb);
+    contactRowBodies(ct, bA, bB, x.zeroState, rb);
     // Every field the passes read is written below (a row reads only its
     // first pointCount points), so the slot needs no clearing.
     cc.contact = c;

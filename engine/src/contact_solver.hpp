@@ -14,6 +14,7 @@
 #include <cstdint>
 #include <vector>
 
+#include "body.hpp"
 #include "contact.hpp"
 
 #include "impulse2d/math.hpp"
@@ -81,8 +82,20 @@ struct RowBodies {
     float invMassA = 0, invIA = 0, invMassB = 0, invIB = 0;
 };
 /// False when the contact gets no row: not touching, a sensor, or neither
-/// body moves.
-bool contactRowBodies(const WorldState& w, const Contact& ct, int zeroState, RowBodies& out);
+/// body moves. bA and bB are the contact's bodies. Inline: the colouring and
+/// the preparation read every active contact through it.
+inline bool contactRowBodies(const Contact& ct, const Body& bA, const Body& bB, int zeroState, RowBodies& out) {
+    if (!ct.touching || ct.isSensor || ct.manifold.pointCount == 0) return false;
+    // solverIndex is set for this step's awake bodies only (static and sleeping: none).
+    out.a = bA.solverIndex >= 0 ? bA.solverIndex : zeroState;
+    out.b = bB.solverIndex >= 0 ? bB.solverIndex : zeroState;
+    out.invMassA = out.a != zeroState ? bA.invMass : 0.0f;
+    out.invIA = out.a != zeroState ? bA.invInertia : 0.0f;
+    out.invMassB = out.b != zeroState ? bB.invMass : 0.0f;
+    out.invIB = out.b != zeroState ? bB.invInertia : 0.0f;
+    // Neither side moves (two sleeping or infinitely heavy bodies): no row.
+    return out.invMassA != 0.0f || out.invIA != 0.0f || out.invMassB != 0.0f || out.invIB != 0.0f;
+}
 
 /// The push speed (m/s) at which a soft row holds its accumulated impulse
 /// λ steady: its update Δλ = −m·ms·(vn + bias) − is·λ is zero at vn = 0 for

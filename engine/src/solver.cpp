@@ -47,9 +47,8 @@ namespace i2d::detail {
 // body of tiny mass pushed by a force: F/m beyond single precision) keeps its
 // direction and is limited too, where scaling by maxSpeed/∞ would give
 // ∞·0 = NaN (found by fuzz_world).
-Vec2 limitSpeed(Vec2 v, float maxSpeed) {
+Vec2 limitFastSpeed(Vec2 v, float maxSpeed) {
     float speed2 = lengthSquared(v);
-    if (!(speed2 > maxSpeed * maxSpeed)) return v;
     if (!isFinite(speed2)) {
         const float largest = std::max(std::abs(v.x), std::abs(v.y));
         if (largest == INFINITY)
@@ -99,7 +98,7 @@ constexpr std::uint8_t kKeyRow = 1, kKeyMoveA = 2, kKeyMoveB = 4, kKeyOnePoint =
 ColourKey colourKey(const WorldState& w, int contact, int zeroState, std::size_t bodyCount) {
     RowBodies rb;
     const Contact& ct = w.contacts[contact];
-    if (!contactRowBodies(w, ct, zeroState, rb)) return {0, 0, 0};
+    if (!contactRowBodies(ct, w.bodies[ct.bodyA], w.bodies[ct.bodyB], zeroState, rb)) return {0, 0, 0};
     std::uint8_t flags = kKeyRow;
     // What decides the rows' path before any is prepared: the same tests as
     // prepareContacts' and prepareRollingResistance's.
