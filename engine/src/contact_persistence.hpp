@@ -38,6 +38,7 @@
 // threw such a pile of 100 boxes at 23 m/s instead of 15.
 #pragma once
 
+#include "body.hpp"
 #include "contact.hpp"
 
 namespace i2d::detail {
@@ -62,6 +63,22 @@ bool reuseManifold(Contact& c, const Body& a, const Body& b, float reuseDistance
 /// reused manifold these are the two material points of the point, which have
 /// drifted apart by the bodies' relative motion; otherwise both arms end at
 /// the manifold point.
-void contactArms(const Contact& c, const Body& a, const Body& b, int j, Vec2& rA, Vec2& rB);
+inline void contactArms(const Contact& c, const Body& a, const Body& b, int j, Vec2& rA, Vec2& rB) {
+    if (!c.framed) {
+        const Vec2 p = c.manifold.points[j].point;
+        rA = p - a.center;
+        rB = p - b.center;
+        return;
+    }
+    // The arms as they were when the manifold was computed, in the world's
+    // orientation of that moment: they do not turn with the bodies. A box
+    // that tilts by θ under a load W would otherwise carry that load between
+    // two points offset sideways by θ·(its height), a moment W·θ that tilts
+    // it further: the same feedback as above, from the turn of the arms.
+    const ManifoldFrame& f = c.frame;
+    const Vec2 anchor = f.anchorA[j];
+    rA = rotate(f.rotationA, anchor - a.localCenter);
+    rB = rotate(mulRot(f.rotationA, f.relative.q), invTransformPoint(f.relative, anchor) - b.localCenter);
+}
 
 }  // namespace i2d::detail

@@ -131,15 +131,7 @@ struct RowContext {
 };
 RowContext makeRowContext(const WorldState& w, float h, bool soft);
 
-/// Writes every field of the row of contact slot `c` (which gets one:
-/// contactRowBodies) but pointsTogether and pairScale, which
-/// finishContactRow sets once the push caps are final. Reads the world
-/// only, so rows may be prepared on any worker. Returns whether a point
-/// overlaps deeper than kDeepOverlap.
-bool prepareContactRow(const WorldState& w, const RowContext& x, int c, ContactConstraint& cc);
-/// Whether the row's two points are solved together, from its deepest
-/// point's push against its cap, and their coupling scale.
-void finishContactRow(const RowContext& x, float penetrationSlop, ContactConstraint& cc);
+/// prepareContactRow and finishContactRow, the row of one contact: contact_row.hpp.
 
 /// Rows of every contact in WorldState::activeContacts that gets one (see
 /// contactRowBodies), for substeps of length h (`soft`: soft_step), each

@@ -35,6 +35,7 @@
 #include <chrono>
 #include <cmath>
 
+#include "contact_row.hpp"
 #include "continuous.hpp"
 #include "deep_overlap.hpp"
 #include "impact_stage.hpp"

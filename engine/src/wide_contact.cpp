@@ -5,6 +5,7 @@
 // write-back and store of the impulses.
 #include "wide_contact.hpp"
 
+#include "contact_row.hpp"
 #include "solver.hpp"
 #include "wide_contact_kernel.hpp"
 #include "wide_lanes4.hpp"

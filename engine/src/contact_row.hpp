@@ -1,0 +1,142 @@
+// The preparation of one contact row from its contact and bodies, inline:
+// every active contact passes through it each step, into a scalar row
+// (contact_solver.cpp, solver.cpp) or straight into a wide lane
+// (wide_contact.cpp), which then keeps the row's values in registers instead
+// of a row on the stack.
+#pragma once
+
+#include <cmath>
+
+#include "contact_persistence.hpp"
+#include "contact_solver.hpp"
+#include "world_state.hpp"
+
+namespace i2d::detail {
+
+/// The coupling scale of a two-point row (solvePointPair), from its anchors.
+inline float pairScale(const ContactConstraint& cc) {
+    const ContactPointConstraint& c1 = cc.points[0];
+    const ContactPointConstraint& c2 = cc.points[1];
+    const Vec2 n = cc.normal;
+    const float rn1A = cross(c1.rA, n), rn1B = cross(c1.rB, n);
+    const float rn2A = cross(c2.rA, n), rn2B = cross(c2.rB, n);
+    const float mAB = cc.invMassA + cc.invMassB;
+    const float k11 = mAB + cc.invIA * rn1A * rn1A + cc.invIB * rn1B * rn1B;
+    const float k22 = mAB + cc.invIA * rn2A * rn2A + cc.invIB * rn2B * rn2B;
+    const float k12 = mAB + cc.invIA * rn1A * rn2A + cc.invIB * rn1B * rn2B;
+    const float coupling = k11 > 0.0f && k22 > 0.0f ? k12 / std::sqrt(k11 * k22) : 0.0f;
+    return coupling > 0.0f ? 1.0f / (1.0f + coupling) : 1.0f;
+}
+
+/// How far the impact stage moved the material point of `b` that was at `p`
+/// when the step began (zero when it did not move the body).
+inline Vec2 startShift(const Body& b, std::uint32_t stepStamp, Vec2 p) {
+    if (b.startStamp != stepStamp) return {};
+    const Vec2 arm = p - b.startCenter;
+    return (b.center - b.startCenter) + rotate(invMulRot(b.startQ, b.xf.q), arm) - arm;
+}
+
+/// How much the impact stage's time-of-impact shifts (impact_stage.cpp) opened
+/// (+) or closed (−) contact c's gap at p along n. The manifold was computed
+/// before them; a row that kept its gap let two bodies shifted towards each
+/// other through (a column of boxes landing at 12 m/s: a pair 4 cm apart was
+/// shifted 13 cm together by the repeated strikes of a cascade and ended the
+/// step 17 cm deep). A struck contact's own shift also carries its rebound
+/// since its moment of impact t* (t* times its separating speed): that part is
+/// the flight after the hit, not an overlap, and is left to the rebound
+/// (pushed apart it would add energy).
+inline float impactShift(const WorldState& w, int c, const Body& a, const Body& b, Vec2 p, Vec2 n) {
+    float d = dot(startShift(b, w.stepStamp, p) - startShift(a, w.stepStamp, p), n);
+    if (d == 0.0f) return 0.0f;
+    const auto i = static_cast<std::size_t>(c);
+    if (i < w.impactTime.size() && w.impactTime[i] >= 0.0f) {
+        const Vec2 dv = (b.v + cross(b.w, p - b.center)) - (a.v + cross(a.w, p - a.center));
+        d += w.impactTime[i] * std::max(dot(dv, n), 0.0f);
+    }
+    return d;
+}
+
+/// Writes every field of the row of contact slot `c` (which gets one:
+/// contactRowBodies) but pointsTogether and pairScale, which
+/// finishContactRow sets once the push caps are final. Reads the world
+/// only, so rows may be prepared on any worker. Returns whether a point
+/// overlaps deeper than kDeepOverlap.
+inline bool prepareContactRow(const WorldState& w, const RowContext& x, int c, ContactConstraint& cc) {
+    const WorldSettings& set = w.settings;
+    const Contact& ct = w.contacts[c];
+    const Body& bA = w.bodies[ct.bodyA];
+    const Body& bB = w.bodies[ct.bodyB];
+    RowBodies rb;
+    contactRowBodies(ct, bA, bB, x.zeroState, rb);
+    // Every field the passes read is written below (a row reads only its
+    // first pointCount points), so the slot needs no clearing.
+    cc.contact = c;
+    cc.a = rb.a;
+    cc.b = rb.b;
+    cc.invMassA = rb.invMassA;
+    cc.invIA = rb.invIA;
+    cc.invMassB = rb.invMassB;
+    cc.invIB = rb.invIB;
+    cc.normal = ct.manifold.normal;
+    cc.friction = ct.friction;
+    cc.restitution = ct.restitution;
+    const Softness& sf = (cc.invMassA == 0.0f || cc.invMassB == 0.0f) ? x.staticSoft : x.dynamicSoft;
+    cc.biasRate = sf.biasRate;
+    cc.massScale = sf.massScale;
+    cc.impulseScale = sf.impulseScale;
+    cc.pointCount = static_cast<std::uint8_t>(ct.manifold.pointCount);
+    cc.maxPush = set.maxPushSpeed;
+    const ContactSurface* surface = contactSurface(w, c);
+    cc.tangentSpeed = surface ? surface->tangentSpeed : 0.0f;
+    cc.deepOverlap = false;
+    cc.roundA = ct.roundA;
+    cc.roundB = ct.roundB;
+    for (int j = 0; j < cc.pointCount; ++j)
+        cc.deepOverlap = cc.deepOverlap || ct.manifold.points[j].separation < -kDeepOverlap;
+    const Vec2 n = cc.normal;
+    const Vec2 t = rightPerp(n);
+    const Vec2 vA = bA.v, vB = bB.v;
+    const float wA = bA.w, wB = bB.w;
+    for (int j = 0; j < cc.pointCount; ++j) {
+        const ManifoldPoint& mp = ct.manifold.points[j];
+        ContactPointConstraint& cp = cc.points[j];
+        contactArms(ct, bA, bB, j, cp.rA, cp.rB);
+        cp.adjustedSeparation = mp.separation + impactShift(w, c, bA, bB, mp.point, n) - dot(cp.rB - cp.rA, n);
+        // Effective mass of the normal row: 1 / (J M⁻¹ Jᵀ) with J of Tamis and Maggiore (2015) §5.3.
+        float rnA = cross(cp.rA, n), rnB = cross(cp.rB, n);
+        float kn = cc.invMassA + cc.invMassB + cc.invIA * rnA * rnA + cc.invIB * rnB * rnB;
+        cp.normalMass = kn > 0.0f ? 1.0f / kn : 0.0f;
+        float rtA = cross(cp.rA, t), rtB = cross(cp.rB, t);
+        float kt = cc.invMassA + cc.invMassB + cc.invIA * rtA * rtA + cc.invIB * rtB * rtB;
+        cp.tangentMass = kt > 0.0f ? 1.0f / kt : 0.0f;
+        cp.normalImpulse = x.warm * ct.normalImpulse[j];
+        cp.tangentImpulse = x.warm * ct.tangentImpulse[j];
+        cp.maxNormalImpulse = 0.0f;
+        cp.biasImpulse = 0.0f;
+        Vec2 dv = (vB + cross(wB, cp.rB)) - (vA + cross(wA, cp.rA));
+        cp.relativeVelocity = dot(n, dv);
+        // Tamis and Maggiore (2015) eq. 8.2.1: bounce target −e·v_n for an approach faster than
+        // the threshold that closes the gap within this step.
+        cp.restitutionBias = 0.0f;
+        if (x.biasRestitution && cc.restitution > 0.0f && cp.relativeVelocity < -set.restitutionThreshold &&
+            mp.separation + cp.relativeVelocity * x.fullDt < 0.0f) {
+            cp.restitutionBias = -cc.restitution * cp.relativeVelocity;
+        }
+    }
+    return cc.deepOverlap;
+}
+
+/// Whether the row's two points are solved together, from its deepest
+/// point's push against its cap, and their coupling scale.
+inline void finishContactRow(const RowContext& x, float penetrationSlop, ContactConstraint& cc) {
+    float deepest = 0.0f;
+    for (int j = 0; j < cc.pointCount; ++j) {
+        const ContactPointConstraint& cp = cc.points[j];
+        deepest = std::min(deepest, cp.adjustedSeparation + dot(cp.rB - cp.rA, cc.normal));
+    }
+    const float push = x.soft ? -cc.biasRate * deepest : -x.pushRate * std::min(deepest + penetrationSlop, 0.0f);
+    cc.pointsTogether = cc.pointCount == 2 && push < cc.maxPush;
+    cc.pairScale = cc.pointsTogether ? pairScale(cc) : 1.0f;
+}
+
+}  // namespace i2d::detail
