@@ -46,6 +46,7 @@ inline Vec2 startShift(const Body& b, std::uint32_t stepStamp, Vec2 p) {
 /// the flight after the hit, not an overlap, and is left to the rebound
 /// (pushed apart it would add energy).
 inline float impactShift(const WorldState& w, int c, const Body& a, const Body& b, Vec2 p, Vec2 n) {
+    if (w.startsShiftedAt != w.stepStamp) return 0.0f;  // no body's start moved in this step
     float d = dot(startShift(b, w.stepStamp, p) - startShift(a, w.stepStamp, p), n);
     if (d == 0.0f) return 0.0f;
     const auto i = static_cast<std::size_t>(c);

@@ -114,6 +114,7 @@ void resolveImpacts(WorldState& w, float dt) {
         if (first < 0.0f) first = tHit;
         if (first <= 0.0f) return;
         keepStepStart(body, w.stepStamp);
+        w.startsShiftedAt = w.stepStamp;
         body.center += first * dv;
         body.xf.q = integrateRotation(body.xf.q, first * dw);
         body.xf.p = body.center - rotate(body.xf.q, body.localCenter);

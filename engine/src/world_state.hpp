@@ -66,6 +66,10 @@ struct WorldState {
 
     Profile profile{};
     std::uint32_t stepStamp = 0;
+    /// The step stamp of the last step in which the impact stage moved a
+    /// body's start (Body::startStamp): the row preparation reads no body's
+    /// start in a step without any.
+    std::uint32_t startsShiftedAt = 0;
     float stepDt = 0.0f;    ///< the step's Δt, set as it begins (the narrowphase's speculative margins)
     bool locked = false;    ///< true while stepping or drawing (see checkUnlocked)
     bool stepping = false;  ///< true inside step(): end events go to this step's lists, not the pending ones
