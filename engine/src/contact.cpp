@@ -144,9 +144,13 @@ Manifold computeManifold(const WorldState& w, const Contact& c) {
             const float closing = std::max(dot(vA, n), 0.0f) + std::max(-dot(vB, n), 0.0f);
             if (mp.separation > spec + dt * closing) continue;
         }
-        m.points[kept++] = mp;
+        // Moved only when a point before it was dropped: copying every point
+        // onto itself wrote it in pieces that the copy of the whole manifold
+        // then read back at once, a store-forwarding stall per contact.
+        if (kept != i) m.points[kept] = mp;
+        ++kept;
     }
-    m.pointCount = kept;
+    if (kept != m.pointCount) m.pointCount = kept;  // (as above: no write when nothing moved)
     return m;
 }
 
