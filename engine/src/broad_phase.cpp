@@ -87,32 +87,18 @@ void synchronizeProxies(WorldState& w, int b, float dt) {
     }
 }
 
+bool leftFatBox(const WorldState& w, const Body& body) {
+    if (!body.enabled) return false;
+    for (int s : bodyShapes(w.shapes, body))
+        if (!contains(w.shapes[s].fatAABB, speculativeBox(w, w.shapes[s], body))) return true;
+    return false;
+}
+
 void refreshProxies(WorldState& w, float dt) {
     const std::vector<int>& awake = w.islands.awakeBodies;
-    const int n = static_cast<int>(awake.size());
-    if (!w.runner.parallel() || n < kParallelWork) {
-        for (int b : awake) synchronizeProxies(w, b, dt);
-        return;
-    }
-    // Which bodies have a shape that left its fat box, on every worker (each
-    // body read alone); then those bodies' proxies moved on this thread in
-    // the awake list's order, as one body after the other would.
-    std::vector<std::uint8_t>& leaves = w.broadPhase.proxyLeaves;
-    leaves.resize(awake.size());
-    auto check = [&](int first, int last) {
-        for (int i = first; i < last; ++i) {
-            const Body& body = w.bodies[awake[static_cast<std::size_t>(i)]];
-            bool left = false;
-            if (body.enabled)
-                for (int s : bodyShapes(w.shapes, body))
-                    left = left || !contains(w.shapes[s].fatAABB, speculativeBox(w, w.shapes[s], body));
-            leaves[static_cast<std::size_t>(i)] = left ? 1 : 0;
-        }
-    };
-    w.runner.share(true);
-    w.runner.run(n, 512, check);
-    for (int i = 0; i < n; ++i)
-        if (leaves[static_cast<std::size_t>(i)]) synchronizeProxies(w, awake[static_cast<std::size_t>(i)], dt);
+    const std::vector<std::uint8_t>& leaves = w.broadPhase.proxyLeaves;
+    for (std::size_t i = 0; i < awake.size(); ++i)
+        if (leaves[i]) synchronizeProxies(w, awake[i], dt);
 }
 
 void wakeShapesAround(WorldState& w, int b) {

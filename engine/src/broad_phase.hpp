@@ -23,7 +23,7 @@ struct BroadPhase {
     DynamicTree staticTree;                 ///< shapes of static bodies
     DynamicTree movingTree;                 ///< shapes of kinematic and dynamic bodies
     std::vector<int> moveBuffer;            ///< shapes whose proxies moved or were created
-    std::vector<std::uint8_t> proxyLeaves;  ///< per awake body: a shape left its fat box (refreshProxies)
+    std::vector<std::uint8_t> proxyLeaves;  ///< per awake body: a shape left its fat box this step (refreshProxies)
     PairSet pairs;                          ///< shape pairs that have a contact
 
     /// Puts a moving shape into the move buffer (once).
@@ -70,8 +70,13 @@ void destroyProxy(WorldState& w, int shape);
 /// Refreshes the proxies of a body's shapes after it moved; after a step of
 /// dt, a box that must move is stretched ahead along the body's velocity.
 void synchronizeProxies(WorldState& w, int body, float dt = 0.0f);
-/// synchronizeProxies for every awake body; in a large step with workers,
-/// the bodies whose boxes must move are found on all of them first.
+/// Whether a shape of the body left its fat box (synchronizeProxies then
+/// moves it). Reads the world only: the solve's write-back asks it of every
+/// awake body on the workers, where the body is in the cache (proxyLeaves).
+bool leftFatBox(const WorldState& w, const Body& body);
+/// synchronizeProxies for the awake bodies the step's write-back found
+/// outside their fat boxes (BroadPhase::proxyLeaves) or continuous collision
+/// moved since, in the awake list's order.
 void refreshProxies(WorldState& w, float dt);
 
 /// A static body was moved: its proxies never query, so the moving shapes

@@ -317,6 +317,8 @@ void sweepBody(WorldState& w, Body& body, const Mover& m, Vec2 rewind) {
     const Transform xf = m.sweep.at(stop.t);
     body.xf = xf;
     body.center = transformPoint(xf, body.localCenter);
+    // Its proxies are checked again (the write-back checked the step's end).
+    w.broadPhase.proxyLeaves[static_cast<std::size_t>(body.awakeIndex)] = 1;
     // The velocity it had at the time of impact: the step's end less the
     // acceleration since, within the speed limit the solver holds (a body of
     // tiny mass under a force accelerates beyond any: fuzz_world found one of

@@ -593,6 +593,10 @@ void solve(WorldState& w, float dt) {
     const Vec2 gravity = w.settings.gravity;
     const float gravityLength = length(gravity);
     const Vec2 up = gravityLength > 0.0f ? (-1.0f / gravityLength) * gravity : Vec2{0.0f, 1.0f};
+    // Whether each body's shapes left their fat boxes, found here where the
+    // body is in the cache and on every worker (refreshProxies moves those).
+    std::vector<std::uint8_t>& leaves = w.broadPhase.proxyLeaves;
+    leaves.resize(n);
     auto writeBack = [&](int first, int last) {
         for (std::size_t i = static_cast<std::size_t>(first); i < static_cast<std::size_t>(last); ++i) {
             Body& body = w.bodies[s.stateBodies[i]];
@@ -610,6 +614,7 @@ void solve(WorldState& w, float dt) {
             body.force = {};
             body.torque = 0.0f;
             body.solverIndex = kNullIndex;
+            leaves[i] = leftFatBox(w, body) ? 1 : 0;
         }
     };
     w.runner.run(static_cast<int>(n), kBodyGrain, writeBack);
