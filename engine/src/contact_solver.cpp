@@ -201,8 +201,7 @@ void carryDeepLoads(SolverArrays& s, bool inRows) {
             float& tangent = k ? k->points[j].tangentImpulse[dc.lane] : cc.points[j].tangentImpulse;
             const float steady = std::min(normal, dc.previous[j]);
             dc.previous[j] = normal;
-            // The current separation, as the velocity rows and the push read it.
-            const float sep = dot(dp + (rotate(qB, cp.rB) - rotate(qA, cp.rA)), cc.normal) + cp.adjustedSeparation;
+            const float sep = currentSeparation(cp, cc.normal, dp, qA, qB);
             if (-cc.biasRate * sep <= loadPush(cc, cp, steady)) continue;  // a sag its load explains
             normal = steady;
             const float maxFriction = cc.friction * steady;
@@ -358,10 +357,7 @@ void solveContactsFor(WorldState& w, float h, std::size_t first) {
         bool skip[2] = {false, false};
         for (int j = 0; j < cc.pointCount; ++j) {
             ContactPointConstraint& cp = cc.points[j];
-            // Current separation from the bodies' motion since the step began
-            // (anchors fixed in the bodies, rotated by their delta rotation).
-            Vec2 d = dp + (rotate(qB, cp.rB) - rotate(qA, cp.rA));
-            float s = dot(d, n) + cp.adjustedSeparation;
+            float s = currentSeparation(cp, n, dp, qA, qB);
             PointTarget& t = target[j];
             if (leaveImpacts && s > 0.0f) {
                 Vec2 dv = (vB + cross(wB, cp.rB)) - (vA + cross(wA, cp.rA));

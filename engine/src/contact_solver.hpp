@@ -109,6 +109,16 @@ inline float loadPush(const ContactConstraint& cc, const ContactPointConstraint&
     return loadPush(cc, cp, cp.normalImpulse);
 }
 
+/// The point's separation now, from its bodies' motion since the step began:
+/// dp their centres' relative displacement, qA and qB their rotations (the
+/// identity for a round side, whose contact point does not turn with it).
+/// What the velocity rows, the push of deep overlaps and the carry of their
+/// loads all read.
+inline float currentSeparation(const ContactPointConstraint& cp, Vec2 n, Vec2 dp, Rot qA, Rot qB) {
+    const Vec2 d = dp + (rotate(qB, cp.rB) - rotate(qA, cp.rA));
+    return dot(d, n) + cp.adjustedSeparation;
+}
+
 /// What the warm start of a deep row carries from substep to substep
 /// (carryDeepLoads): where its impulses live this step, and the normal
 /// impulses it ended the substep before the last with.

@@ -236,7 +236,7 @@ void pushDeepOverlaps(WorldState& w, float h) {
                 // The current separation, as the velocity rows read it, and the
                 // separating pseudo-speed asked for beyond what the load
                 // explains (none once it is closed).
-                const float sep = dot(dp + (rotate(qB, cp.rB) - rotate(qA, cp.rA)), n) + cp.adjustedSeparation;
+                const float sep = currentSeparation(cp, n, dp, qA, qB);
                 const float target = std::max(std::min(-cc.biasRate * sep - loadPush(cc, cp), cap), 0.0f);
                 const Vec2 dv = (vB + cross(wB, cp.rB)) - (vA + cross(wA, cp.rA));
                 // Projected Gauss-Seidel on the accumulated push impulse (≥ 0).
