@@ -249,6 +249,9 @@ void pushDistanceJoint(const JointConstraint& jc, const JointContext& ctx, const
 
 void prepareRevoluteJoint(const WorldState& w, const Joint& joint, JointConstraint& jc);
 void warmStartRevoluteJoint(const JointConstraint& jc, BodyState& sA, BodyState& sB);
+/// The point impulse a revolute joint's limits apply with their angular one
+/// (revolute_joint.cpp): part of the force the anchor carries.
+Vec2 revoluteLimitPointImpulse(const JointConstraint& jc, const BodyState& sA, const BodyState& sB);
 void solveRevoluteJoint(JointConstraint& jc, const JointContext& ctx, BodyState& sA, BodyState& sB);
 
 void preparePrismaticJoint(const WorldState& w, const Joint& joint, JointConstraint& jc);

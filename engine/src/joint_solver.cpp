@@ -381,7 +381,7 @@ void storeJoints(WorldState& w, float h) {
                 break;
             }
             case JointType::revolute:
-                force = invDt * acc.linear;
+                force = invDt * (acc.linear + revoluteLimitPointImpulse(jc, sA, sB));
                 torque = (acc.spring + acc.motor + acc.lower - acc.upper) * invDt;
                 effort = acc.motor * invDt;
                 break;
