@@ -76,11 +76,15 @@ struct Body {
 /// separations it computes free of the round-off of large coordinates, and
 /// the transform is updated once at the end of the step.
 struct BodyState {
-    Vec2 v{};                    ///< linear velocity (m/s)
-    float w = 0.0f;              ///< angular velocity (rad/s)
-    std::uint32_t reserved = 0;  ///< keeps the record at 32 bytes
-    Vec2 dp{};                   ///< change of the centre of mass since the step began
-    Rot dq{};                    ///< rotation since the step began
+    Vec2 v{};        ///< linear velocity (m/s)
+    float w = 0.0f;  ///< angular velocity (rad/s)
+    /// soft_step, in a step with a deep overlap: the speed along up (against
+    /// gravity) the positions last moved with, before the relax pass
+    /// (payPushLift, solver.cpp); it also keeps the record at 32 bytes. The
+    /// wide passes carry it unchanged.
+    float upBeforeRelax = 0.0f;
+    Vec2 dp{};  ///< change of the centre of mass since the step began
+    Rot dq{};   ///< rotation since the step began
 };
 static_assert(sizeof(BodyState) == 32, "BodyState is streamed by every solver pass: keep it at 32 bytes");
 

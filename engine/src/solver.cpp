@@ -293,13 +293,45 @@ void prepareContactRows(WorldState& w, float h, bool soft) {
 // ---------------------------------------------------------------------------
 // Integration (Tamis and Maggiore (2015) §3.2, semi-implicit Euler)
 
+/// The soft rows' push lifts a body without paying for it: within a
+/// substep the positions move with the velocity the biased pass left, v_b,
+/// and the relax pass then takes the push out of the velocity, not out of the
+/// height. A body pushed up by h·(v_b − v)·u (u up, against gravity) while it
+/// falls (v·u < 0) gains m·g·lift of potential energy, and a pile created
+/// overlapping on the ground gained energy so while its bodies fell onto
+/// each other (8 circles: 1.059 times the start plus the lift out of the
+/// ground). That lift is paid from the fall, as the push of deep overlaps
+/// pays its own (deep_overlap.cpp): the falling speed f becomes
+/// √(max(f² − 2·g·lift, 0)), g the body's acceleration down. A body pushed up
+/// while it rises or rests keeps its velocity (nothing to pay from). Only
+/// bodies with contact rows pay (contactColourMasks): a joint's push takes
+/// back the drift of a turning body's anchors (docs/joints.md), which is not
+/// a lift to pay for, and paid for it a free pendulum lost energy and swung
+/// slower (Joints.RevolutePendulumPeriod). Paid only in steps with an
+/// overlap deeper than kDeepOverlap, while a pile created overlapping is
+/// being separated: in a resting pile every contact's push of its few
+/// centimetres of sag lifts its body by micrometres a substep, and paying for
+/// those cost a pile of 1,000 circles 2 to 5 % of its step.
+inline void payPushLift(const SolverArrays& s, std::size_t i, BodyState& st, Vec2 a, Vec2 up, float h) {
+    const float v = dot(st.v, up);
+    if (!(v < 0.0f) || !(st.upBeforeRelax > v)) return;  // not falling, or not pushed up
+    const float lift = h * (st.upBeforeRelax - v);
+    const float gravity = -dot(a, up);
+    if (!(gravity > 0.0f) || s.contactColourMasks[i] == 0) return;
+    const float slower = std::sqrt(std::max(v * v - 2.0f * gravity * lift, 0.0f));
+    st.v += (-v - slower) * up;
+}
+
 /// Bodies [begin, end) of the solver arrays (each body on its own: a stage
-/// the workers may share).
-void integrateVelocities(SolverArrays& s, float h, float maxSpeed, std::size_t begin, std::size_t end) {
+/// the workers may share). `payLift`: pay the last substep's push lift first
+/// (soft_step, payPushLift), up being against gravity.
+void integrateVelocities(SolverArrays& s, float h, float maxSpeed, std::size_t begin, std::size_t end, bool payLift,
+                         Vec2 up) {
     for (std::size_t i = begin; i < end; ++i) {
         const BodyIntegration& in = s.integration[i];
         if (!in.movedByForces) continue;
         BodyState& st = s.states[i];
+        if (payLift) payPushLift(s, i, st, in.linearAcceleration, up, h);
         // Eq. 3.2.1-3.2.2 in velocities: v += Δt·(g·scale + F/m), ω += Δt·τ/I.
         Vec2 v = st.v + h * in.linearAcceleration;
         float av = st.w + h * in.invInertia * in.torque;
@@ -339,12 +371,15 @@ void integratePositions(SolverArrays& s, float h, float maxSpeed, std::size_t be
 /// pseudo-velocity (split mode's push, or the soft step's push of deep
 /// overlaps, deep_overlap.cpp), which is not kept: the body keeps only its
 /// velocity.
-void integratePositionsPushed(SolverArrays& s, float h, float maxSpeed) {
+void integratePositionsPushed(SolverArrays& s, float h, float maxSpeed, Vec2 up) {
     const float maxAngular = kMaxRotationPerStep / h;
     const std::size_t n = s.stateBodies.size();
     for (std::size_t i = 0; i < n; ++i) {
         BodyState& st = s.states[i];
         clampVelocity(st, maxSpeed, maxAngular);
+        // Kept for payPushLift (only steps with a deep overlap pay); the
+        // pseudo-velocity's own lift is paid by pushDeepOverlaps.
+        st.upBeforeRelax = dot(st.v, up);
         // The limits hold for the motion including the push: a light, small
         // body's pseudo-velocity could otherwise turn it by an angle whose
         // square overflows (fuzz_world: NaN rotation).
@@ -517,9 +552,14 @@ void solve(WorldState& w, float dt) {
 
     // Integration body by body, on every worker when the step is large
     // enough to gain from it (kParallelWork; the result is the same either way).
-    auto velocities = [&](float step) {
+    // soft_step pays each substep's push lift in the next integration (or
+    // the write-back) (payPushLift).
+    const float gravityLength = length(set.gravity);
+    const Vec2 up = gravityLength > 0.0f ? (-1.0f / gravityLength) * set.gravity : Vec2{0.0f, 1.0f};
+    auto velocities = [&](float step, bool payLift) {
         auto range = [&](int b, int e) {
-            integrateVelocities(s, step, maxSpeed, static_cast<std::size_t>(b), static_cast<std::size_t>(e));
+            integrateVelocities(s, step, maxSpeed, static_cast<std::size_t>(b), static_cast<std::size_t>(e), payLift,
+                                up);
         };
         w.runner.run(static_cast<int>(n), kBodyGrain, range);
     };
@@ -531,7 +571,7 @@ void solve(WorldState& w, float dt) {
     };
     if (soft) {
         for (int i = 0; i < substeps; ++i) {
-            velocities(h);
+            velocities(h, i > 0 && s.anyDeepOverlap);
             if (i > 0 && s.anyDeepOverlap) carryDeepLoads(s);
             warmStart();
             for (int pass = 0; pass < kJointSolvePasses; ++pass) joints(SolvePass::soft_bias);
@@ -541,7 +581,7 @@ void solve(WorldState& w, float dt) {
                 if (s.wideContactsActive) readWideNormalImpulses(s, s.deepRows);
                 pushDeepOverlaps(w, h);
                 dropNonFinitePush(s);
-                integratePositionsPushed(s, h, maxSpeed);
+                integratePositionsPushed(s, h, maxSpeed, up);
             } else {
                 positions(h);
             }
@@ -564,7 +604,7 @@ void solve(WorldState& w, float dt) {
     } else {
         const bool baumgarte = set.positionCorrection == PositionCorrection::baumgarte;
         const SolvePass pass = baumgarte ? SolvePass::baumgarte : SolvePass::no_push;
-        velocities(dt);
+        velocities(dt, false);
         warmStart();
         for (int it = 0; it < set.velocityIterations; ++it) {
             joints(pass);
@@ -579,7 +619,7 @@ void solve(WorldState& w, float dt) {
                 dropNonFinitePush(s);
             }
             // Move by v + v_push for this step only; v_push is then dropped.
-            integratePositionsPushed(s, dt, maxSpeed);
+            integratePositionsPushed(s, dt, maxSpeed, up);
         } else {
             positions(dt);
         }
@@ -590,9 +630,6 @@ void solve(WorldState& w, float dt) {
     // The relax and restitution passes act after the last position update, so
     // the limits are applied once more to the velocities the body keeps.
     const float maxAngular = kMaxRotationPerStep / (dt / static_cast<float>(substeps));
-    const Vec2 gravity = w.settings.gravity;
-    const float gravityLength = length(gravity);
-    const Vec2 up = gravityLength > 0.0f ? (-1.0f / gravityLength) * gravity : Vec2{0.0f, 1.0f};
     // Whether each body's shapes left their fat boxes, found here where the
     // body is in the cache and on every worker (refreshProxies moves those).
     std::vector<std::uint8_t>& leaves = w.broadPhase.proxyLeaves;
@@ -601,6 +638,8 @@ void solve(WorldState& w, float dt) {
         for (std::size_t i = static_cast<std::size_t>(first); i < static_cast<std::size_t>(last); ++i) {
             Body& body = w.bodies[s.stateBodies[i]];
             BodyState& st = s.states[i];
+            if (soft && s.anyDeepOverlap && s.integration[i].movedByForces)  // the last substep's push lift
+                payPushLift(s, i, st, s.integration[i].linearAcceleration, up, h);
             clampVelocity(st, maxSpeed, maxAngular);
             body.v = st.v;
             body.w = st.w;

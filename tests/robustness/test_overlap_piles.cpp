@@ -205,9 +205,10 @@ TEST(OverlapPiles, InTheAirAtOnePoint) {
 // substep (energy up to 1.067 times the start plus the lift out of the
 // ground; 9 beyond 1.02). Now each body's share of a sideways move is held to
 // its own width, and a supported body's lift is paid from its fall. The
-// issue's bounds, no tolerance added, except: circles, which still gain some
-// rolling energy as they part (up to 1.059 here: docs/validation.md,
-// "Overlaps that separate gently"), are held at 1.07; the 20-body piles
+// issue's bounds, no tolerance added, except: circles, of which one layout
+// (8, seed 31) still gains 1.039 as they part (1.059 before the soft rows'
+// lift was paid from the fall: docs/validation.md, "Overlaps that separate
+// gently"; the other eleven stay within 1.018), are held at 1.045; the 20-body piles
 // spread into one layer, and the last overlaps of one 20-box layout (seed
 // 83, 3.2 cm at 2 s; 4.3 cm before) take until 2.15 s, so at 2 s they are
 // held at 4 cm and must be within 2 cm by 2.5 s.
@@ -224,7 +225,7 @@ TEST(OverlapPiles, OnTheGround) {
                 EXPECT_LE(f.deepestAt2s, count > 8 ? 0.04f : 0.02f) << what;
                 EXPECT_LE(f.speedExcess, 0.0f) << what;
                 EXPECT_LE(f.rise, 0.5f) << what;
-                EXPECT_LE(f.energyRatio, kind == Kind::circle ? 1.07f : 1.02f) << what;
+                EXPECT_LE(f.energyRatio, kind == Kind::circle ? 1.045f : 1.02f) << what;
             }
 }
 
