@@ -43,7 +43,9 @@ void validateJointDef(const DistanceJointDef& def) {
     requireSpring(def.hertz, def.dampingRatio);
     requireNonNegative(def.minLength, "joint minLength");
     if (!(def.maxLength >= 0.0f) || std::isnan(def.maxLength)) fail("joint maxLength must be >= 0");
-    if (def.enableLimit && def.minLength > def.maxLength) fail("joint minLength must be <= maxLength");
+    // Always, as the other joints' ranges: a limit enabled later (World::enableJointLimit) would
+    // otherwise hold neither bound, and the def read back could not be set again.
+    if (def.minLength > def.maxLength) fail("joint minLength must be <= maxLength");
 }
 
 void validateJointDef(const RevoluteJointDef& def) {

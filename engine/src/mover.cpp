@@ -11,6 +11,7 @@
 #include <cmath>
 
 #include "impulse2d/world.hpp"
+#include "query_lock.hpp"
 #include "shape_cast.hpp"
 #include "validation.hpp"
 #include "world_state.hpp"
@@ -79,11 +80,10 @@ std::vector<int> candidates(detail::WorldState& w, const AABB& box, const QueryF
     w.broadPhase.staticTree.query(box, visit);
     w.broadPhase.movingTree.query(box, visit);
     std::sort(found.begin(), found.end());
-    // The game's accept function runs with the world locked.
-    const bool was = w.locked;
-    if (q.accept) w.locked = true;
+    // The game's accept function runs with the world locked, released
+    // however it ends (an exception from it left the world locked for good).
+    const detail::QueryLock lock(w, q);
     std::erase_if(found, [&](int s) { return !passesQuery(w, s, q); });
-    w.locked = was;
     return found;
 }
 

@@ -6,7 +6,8 @@
 
 namespace i2d::detail {
 
-int createShape(WorldState& w, int b, const ShapeDef& def, ShapeType type, const ShapeGeometry& geometry) {
+int createShape(WorldState& w, int b, const ShapeDef& def, ShapeType type, const ShapeGeometry& geometry,
+                bool updateBodyMass) {
     int s = w.shapes.allocate();
     Shape& sh = w.shapes[s];
     sh.type = type;
@@ -36,7 +37,7 @@ int createShape(WorldState& w, int b, const ShapeDef& def, ShapeType type, const
     // A sleeping body stays asleep (a level built asleep stays asleep, as in
     // Box2D): its new shape's contacts wake it when one begins to touch an
     // awake body.
-    updateMass(w, b);
+    if (updateBodyMass) updateMass(w, b);
     return s;
 }
 

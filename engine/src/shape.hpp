@@ -156,9 +156,12 @@ inline bool shapeContains(const Shape& s, Vec2 localPoint) {
 
 inline BodyShapes bodyShapes(const SlotArray<Shape>& shapes, const Body& body) { return {shapes, body.firstShape}; }
 
-/// Creates a shape on a body: its slot, its proxy in the broadphase and the
-/// body's new mass. The geometry must have been validated.
-int createShape(WorldState& w, int body, const ShapeDef& def, ShapeType type, const ShapeGeometry& geometry);
+/// Creates a shape on a body: its slot, its proxy in the broadphase and,
+/// unless `updateBodyMass` is false (a caller adding many shapes, which then
+/// calls updateMass once: it visits every shape of the body), the body's new
+/// mass. The geometry must have been validated.
+int createShape(WorldState& w, int body, const ShapeDef& def, ShapeType type, const ShapeGeometry& geometry,
+                bool updateBodyMass = true);
 
 /// Destroys a shape with its contacts (end events for touching ones) and its proxy.
 /// The body's mass is not updated.

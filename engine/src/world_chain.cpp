@@ -5,6 +5,7 @@
 #include <algorithm>
 #include <cmath>
 #include <string>
+#include <vector>
 
 #include "impulse2d/world.hpp"
 #include "world_state.hpp"
@@ -61,15 +62,40 @@ void validateChain(const ChainDef& def) {
             pointSegmentDistance(at(i), at(i + 1), at(i + 2)) <= kLinearSlop)
             fail("chain folds back on itself at point " + std::to_string((i + 1) % n));
     }
-    // Crossing or touching: every pair of segments that are not neighbours.
+    // Crossing or touching: every pair of segments that are not neighbours,
+    // found by sweeping their boxes (grown by the slop) along x, so that a
+    // terrain of 100,000 points is checked in a fraction of a second (testing
+    // every pair took 58 s at 64,000). The pair reported is the first in
+    // segment order, as a test of every pair would find it.
+    struct Extent {
+        double lowX, highX, lowY, highY;
+        std::size_t segment;
+    };
+    std::vector<Extent> extents(segments);
     for (std::size_t i = 0; i < segments; ++i) {
-        for (std::size_t j = i + 2; j < segments; ++j) {
+        const P a = at(i), b = at(i + 1);
+        extents[i] = {std::min(a.x, b.x) - kLinearSlop, std::max(a.x, b.x) + kLinearSlop,
+                      std::min(a.y, b.y) - kLinearSlop, std::max(a.y, b.y) + kLinearSlop, i};
+    }
+    std::sort(extents.begin(), extents.end(), [](const Extent& l, const Extent& r) {
+        return l.lowX < r.lowX || (l.lowX == r.lowX && l.segment < r.segment);
+    });
+    std::size_t firstI = segments, firstJ = segments;
+    for (std::size_t k = 0; k < segments; ++k) {
+        const Extent& e = extents[k];
+        for (std::size_t m = k + 1; m < segments && extents[m].lowX <= e.highX; ++m) {
+            const Extent& f = extents[m];
+            if (f.lowY > e.highY || e.lowY > f.highY) continue;
+            const std::size_t i = std::min(e.segment, f.segment), j = std::max(e.segment, f.segment);
+            if (j == i + 1) continue;                                 // neighbours
             if (def.isLoop && i == 0 && j == segments - 1) continue;  // the loop's closing neighbours
-            if (segmentsDistance(at(i), at(i + 1), at(j), at(j + 1)) <= kLinearSlop)
-                fail("chain crosses or touches itself: segments " + std::to_string(i) + " and " + std::to_string(j) +
-                     " come within the linear slop (0.005 m)");
+            if (i > firstI || (i == firstI && j >= firstJ)) continue;
+            if (segmentsDistance(at(i), at(i + 1), at(j), at(j + 1)) <= kLinearSlop) firstI = i, firstJ = j;
         }
     }
+    if (firstI < segments)
+        fail("chain crosses or touches itself: segments " + std::to_string(firstI) + " and " + std::to_string(firstJ) +
+             " come within the linear slop (0.005 m)");
 }
 
 }  // namespace
@@ -93,7 +119,7 @@ std::vector<ShapeId> World::createChain(BodyId bodyId, const ChainDef& def) {
     for (std::size_t i = 0; i < segments; ++i) {
         detail::ShapeGeometry g;
         g.segment = {def.points[i], def.points[(i + 1) % n]};
-        const int s = detail::createShape(w, b, sd, ShapeType::segment, g);
+        const int s = detail::createShape(w, b, sd, ShapeType::segment, g, false);
         detail::Shape& shape = w.shapes[s];
         shape.chainSegment = true;
         const bool first = i == 0, last = i + 1 == segments;
@@ -101,6 +127,9 @@ std::vector<ShapeId> World::createChain(BodyId bodyId, const ChainDef& def) {
         shape.ghost2 = (last && !def.isLoop) ? g.segment.point2 : def.points[(i + 2) % n];
         ids.push_back(w.shapeHandle(s));
     }
+    // Once for the whole chain: per segment, the body's mass pass over all
+    // its shapes made a chain of 100,000 points take minutes to create.
+    detail::updateMass(w, b);
     return ids;
 }
 

@@ -3,6 +3,7 @@
 #include <algorithm>
 
 #include "impulse2d/world.hpp"
+#include "query_lock.hpp"
 #include "shape_cast.hpp"
 #include "validation.hpp"
 #include "world_state.hpp"
@@ -15,22 +16,7 @@ bool passesBits(const Filter& f, const QueryFilter& q) {
     return (f.categoryBits & q.maskBits) != 0 && (f.maskBits & q.categoryBits) != 0;
 }
 
-// While a query calls the game's accept function the world is locked (a
-// callback that tries to change it gets i2d::Error); a query without one
-// costs nothing more.
-class QueryLock {
-public:
-    QueryLock(detail::WorldState& w, const QueryFilter& f) : w_(w), was_(w.locked) {
-        if (f.accept) w_.locked = true;
-    }
-    ~QueryLock() { w_.locked = was_; }
-    QueryLock(const QueryLock&) = delete;
-    QueryLock& operator=(const QueryLock&) = delete;
-
-private:
-    detail::WorldState& w_;
-    bool was_;
-};
+using detail::QueryLock;
 
 bool passes(const detail::WorldState& w, int s, const QueryFilter& q) {
     if (!passesBits(w.shapes[s].filter, q)) return false;

@@ -52,6 +52,30 @@ TEST(Chain, BadInputIsRefusedAndChangesNothing) {
     EXPECT_TRUE(world.bodyShapes(ground).empty());
 }
 
+// A long terrain: the crossing test sweeps the segments' boxes instead of
+// testing every pair, and must still find a crossing far apart in the point
+// order and name the first crossing pair, as a test of every pair would.
+TEST(Chain, ALongTerrainIsCheckedForCrossingsAndCreatedWhole) {
+    World world;
+    BodyId ground = world.createBody({});
+    std::vector<Vec2> points;
+    for (int i = 0; i < 20000; ++i) points.push_back({0.5f * static_cast<float>(i), std::sin(0.01f * i)});
+    const std::vector<ShapeId> segments = world.createChain(ground, {.points = points});
+    EXPECT_EQ(segments.size(), points.size() - 1);
+    // Three more points turn back under the terrain and up through its start: the last segment
+    // (20,001) crosses segment 0.
+    points.push_back({points.back().x, -5.0f});
+    points.push_back({0.25f, -5.0f});
+    points.push_back({0.25f, 5.0f});
+    try {
+        world.createChain(ground, {.points = points});
+        ADD_FAILURE() << "a chain crossing itself was accepted";
+    } catch (const Error& e) {
+        EXPECT_NE(std::string(e.what()).find("segments 0 and 20001"), std::string::npos) << e.what();
+    }
+    EXPECT_EQ(world.shapeCount(), static_cast<int>(segments.size()));
+}
+
 TEST(Chain, SegmentsKnowTheirNeighbours) {
     World world;
     BodyId ground = world.createBody({});

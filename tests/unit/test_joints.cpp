@@ -399,6 +399,8 @@ TEST(Joints, BadInputIsRefused) {
     const float nan = std::nanf("");
     EXPECT_THROW(w.createRevoluteJoint({.bodyA = ground, .bodyB = a, .localAnchorA = {nan, 0.0f}}), Error);
     EXPECT_THROW(w.createRevoluteJoint({.bodyA = ground, .bodyB = a, .lowerAngle = 0.5f, .upperAngle = 0.1f}), Error);
+    // An inverted range is refused with the limit off too (it could be enabled later).
+    EXPECT_THROW(w.createDistanceJoint({.bodyA = ground, .bodyB = a, .minLength = 5.0f, .maxLength = 1.0f}), Error);
     EXPECT_THROW(w.createPrismaticJoint({.bodyA = ground, .bodyB = a, .localAxisA = {0.0f, 0.0f}}), Error);
     EXPECT_THROW(
         w.createPrismaticJoint({.bodyA = ground, .bodyB = a, .lowerTranslation = 1.0f, .upperTranslation = 0.0f}),

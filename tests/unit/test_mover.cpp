@@ -5,6 +5,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <stdexcept>
 
 #include "world_fixtures.hpp"
 
@@ -193,6 +194,28 @@ TEST(Mover, BadInputIsRefused) {
     EXPECT_THROW((void)w.castMover(kCapsule, {nan, 0.0f}), Error);
     EXPECT_THROW((void)w.collideMover({{0, 0}, {0, 1}, -0.1f}), Error);
     EXPECT_THROW((void)moveCharacter(w, kCapsule, {nan, 0.0f}, {1, 0}, {}, {}), Error);
+}
+
+// A filter's accept function that throws (the game's own exception, or the
+// i2d::Error of a change the locked world refuses) leaves the world unlocked
+// afterwards: the mover's queries held the lock by hand and kept it for good.
+TEST(Mover, AnAcceptFunctionThatThrowsLeavesTheWorldUsable) {
+    World w;
+    BodyId ground = test::makeGround(w);
+    const ShapeId floor = w.bodyShapes(ground).front();
+    const QueryFilter throwing{.accept = [](ShapeId) -> bool { throw std::runtime_error("game"); }};
+    const QueryFilter destroying{.accept = [&](ShapeId s) {
+        w.destroyShape(s);  // refused: the world is locked
+        return true;
+    }};
+    for (const QueryFilter& filter : {throwing, destroying}) {
+        EXPECT_ANY_THROW((void)w.collideMover(kCapsule, filter));
+        EXPECT_ANY_THROW((void)w.castMover(kCapsule, {1.0f, 0.0f}, filter));
+        EXPECT_ANY_THROW((void)moveCharacter(w, kCapsule, {0.0f, kStand}, {kDt, 0.0f}, {1.0f, 0.0f}, filter));
+        w.step(kDt);  // threw "cannot be changed while it is stepping" before
+        EXPECT_NO_THROW((void)test::makeBox(w, {3.0f, 0.5f}));
+    }
+    EXPECT_TRUE(w.isValid(floor));
 }
 
 }  // namespace

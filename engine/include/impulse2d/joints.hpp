@@ -40,7 +40,7 @@ struct DistanceJointDef {
     float dampingRatio = 0.0f;  ///< ≥ 0
     bool enableLimit = false;
     float minLength = 0.0f;    ///< m, ≥ 0
-    float maxLength = 1.0e9f;  ///< m, ≥ minLength when the limit is enabled
+    float maxLength = 1.0e9f;  ///< m, ≥ minLength
     bool collideConnected = false;
     std::uintptr_t userData = 0;
 };
