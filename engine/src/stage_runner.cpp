@@ -49,6 +49,7 @@ void StageRunner::begin(TaskSystem* tasks) {
     if (tasks == nullptr || tasks->workerCount() < 2) return;
     shares_ = std::min(tasks->workerCount(), kMaxShares);
     exit_.store(false, std::memory_order_relaxed);
+    caller_ = std::this_thread::get_id();
     // Helpers start by waiting for an epoch after the current one.
     published_.store(epoch_, std::memory_order_release);
     // Helper i (of workerCount − 1, one item each) is worker i + 1.
@@ -116,6 +117,13 @@ void StageRunner::run(StageFn fn, void* context, int count, int grain) {
 
 void StageRunner::helper(int begin, int, int, void* context) {
     StageRunner& r = *static_cast<StageRunner*>(context);
+    // A task system that runs a range on the caller's thread, inside
+    // enqueue, breaks its contract (tasks.hpp): this helper would wait there
+    // for stages the caller can never publish, and the step hung. It returns
+    // at once instead, and the caller does every stage's work itself (the
+    // work of each stage is claimed by whoever comes, so nothing waits for
+    // the missing helper).
+    if (std::this_thread::get_id() == r.caller_) return;
     const int self = (begin + 1) % r.shares_;
     std::uint32_t seen = r.published_.load(std::memory_order_acquire);
     int spins = 0;

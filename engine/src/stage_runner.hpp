@@ -19,6 +19,7 @@
 
 #include <atomic>
 #include <cstdint>
+#include <thread>
 
 #include "impulse2d/tasks.hpp"
 
@@ -91,6 +92,7 @@ private:
     TaskSystem* tasks_ = nullptr;
     void* handle_ = nullptr;
     bool handleActive_ = false;
+    std::thread::id caller_;  ///< the thread that began the step
     bool share_ = true;
 };
 

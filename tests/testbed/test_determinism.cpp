@@ -143,10 +143,13 @@ TEST(ThreadedDeterminism, LargeScenesAreBitIdenticalOnAnyNumberOfWorkers) {
 /// A 60×60 grid of discs hinged to their neighbours (3,600 bodies, 7,080
 /// hinges: large enough to be shared among the workers), hanging from two
 /// corners, stepped `steps` times on `threads` workers; the hash of the state.
-std::uint64_t jointGridHash(int threads, int steps) {
+/// `tasks`, when given, is the task system instead of a pool of `threads`.
+std::uint64_t jointGridHash(int threads, int steps, i2d::TaskSystem* tasks = nullptr) {
     i2d::World world({.enableSleep = false});
     std::unique_ptr<tb::ThreadPool> pool;
-    if (threads > 1) {
+    if (tasks) {
+        world.setTaskSystem(tasks);
+    } else if (threads > 1) {
         pool = std::make_unique<tb::ThreadPool>(threads);
         world.setTaskSystem(pool.get());
     }
@@ -197,6 +200,27 @@ std::uint64_t jointGridHash(int threads, int steps) {
 TEST(ThreadedDeterminism, LargeJointGridIsBitIdenticalOnAnyNumberOfWorkers) {
     const std::uint64_t one = jointGridHash(1, 60);
     for (int threads : {2, 4}) EXPECT_EQ(jointGridHash(threads, 60), one) << threads << " workers";
+}
+
+/// A task system that claims two workers but runs every range inside
+/// enqueue, on the caller's thread (against tasks.hpp's contract, and a
+/// common fallback of game task systems).
+class InlineTasks final : public i2d::TaskSystem {
+public:
+    int workerCount() const override { return 2; }
+    void* enqueue(i2d::TaskFunction task, int count, int, void* context) override {
+        task(0, count, 1, context);
+        return nullptr;
+    }
+    void finish(void*) override {}
+};
+
+// Such a task system made the step wait forever for a helper that was
+// running on its own thread; the step now does all the work itself, with the
+// same result.
+TEST(ThreadedDeterminism, ATaskSystemThatRunsTasksInlineNeitherHangsNorChangesTheResult) {
+    InlineTasks inlineTasks;
+    EXPECT_EQ(jointGridHash(1, 20, &inlineTasks), jointGridHash(1, 20));
 }
 
 INSTANTIATE_TEST_SUITE_P(Shipped, PinnedDeterminism, ::testing::ValuesIn(kPinned),

@@ -24,7 +24,9 @@ public:
     /// `minRange` items (but the last), each run exactly once. With more than
     /// one worker, the ranges must run on threads other than the caller's,
     /// concurrently with it: the world keeps working while they run and may
-    /// wait for them to take part. Returns a handle for finish (may be null).
+    /// wait for them to take part. (A range run inside enqueue, on the
+    /// caller's thread, returns at once and the world does its work alone:
+    /// slower, never stuck.) Returns a handle for finish (may be null).
     virtual void* enqueue(TaskFunction task, int count, int minRange, void* context) = 0;
     /// Returns once every range of the task `handle` came from has run.
     virtual void finish(void* handle) = 0;
