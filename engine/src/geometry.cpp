@@ -319,6 +319,8 @@ Polygon makeRoundedBox(float hx, float hy, float radius) {
 
 MassData computeMass(const Circle& shape, float density) {
     if (!isFinite(density) || density < 0.0f) throw Error("computeMass: density must be finite and non-negative");
+    if (!(shape.radius >= 0.0f) || !isFinite(shape.radius) || !isFinite(shape.center))
+        throw Error("computeMass: circle radius must be finite and non-negative, its centre finite");
     // Solid disk: m = ρπr², I = ½ m r² about its centre.
     float rr = shape.radius * shape.radius;
     MassData md;
@@ -330,6 +332,8 @@ MassData computeMass(const Circle& shape, float density) {
 
 MassData computeMass(const Capsule& shape, float density) {
     if (!isFinite(density) || density < 0.0f) throw Error("computeMass: density must be finite and non-negative");
+    if (!(shape.radius >= 0.0f) || !isFinite(shape.radius) || !isFinite(shape.center1) || !isFinite(shape.center2))
+        throw Error("computeMass: capsule radius must be finite and non-negative, its centres finite");
     // Rectangle L × 2r plus two half-disks of radius r at the ends.
     float r = shape.radius;
     float L = length(shape.center2 - shape.center1);

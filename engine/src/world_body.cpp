@@ -211,6 +211,7 @@ void World::setAngularVelocity(BodyId id, float w) {
 
 Vec2 World::velocityAtPoint(BodyId id, Vec2 p) const {
     const detail::Body& body = state().bodies[state().bodyIndex(id)];
+    requireBounded(p, "point");
     return body.v + cross(body.w, p - body.center);
 }
 

@@ -254,6 +254,14 @@ TEST(ValidationWorld, TimeStep) {
 TEST(ValidationWorld, MassAndDensity) {
     Scene s;
     World& w = s.world;
+    // The free mass functions check their shapes as the shape constructors do
+    // (a NaN radius gave a NaN mass, a negative one a positive mass).
+    const float nan = std::numeric_limits<float>::quiet_NaN();
+    EXPECT_THROW((void)computeMass(Circle{{0.0f, 0.0f}, nan}, 1.0f), Error);
+    EXPECT_THROW((void)computeMass(Circle{{0.0f, 0.0f}, -1.0f}, 1.0f), Error);
+    EXPECT_THROW((void)computeMass(Capsule{{0.0f, 0.0f}, {1.0f, 0.0f}, -0.5f}, 1.0f), Error);
+    EXPECT_THROW((void)computeMass(Capsule{{nan, 0.0f}, {1.0f, 0.0f}, 0.5f}, 1.0f), Error);
+    EXPECT_THROW((void)w.velocityAtPoint(s.box, {nan, nan}), Error);
     expectRefused(
         s, [&] { w.setMassData(s.box, {.mass = 0.0f}); }, "mass must be > 0");
     expectRefused(

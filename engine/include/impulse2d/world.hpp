@@ -150,7 +150,8 @@ public:
     /// i2d::Error unless bounded.
     void setAngularVelocity(BodyId id, float w);
     /// Velocity (m/s) of the world point `worldPoint` (m) if it moved with the
-    /// body: v + ω × (worldPoint − centre of mass).
+    /// body: v + ω × (worldPoint − centre of mass). Throws i2d::Error unless
+    /// worldPoint is bounded.
     Vec2 velocityAtPoint(BodyId id, Vec2 worldPoint) const;
 
     /// Add a force (N) at a world point (m) for the next step, then it is
