@@ -211,6 +211,11 @@ std::optional<Entry> chordEntry(Vec2 p0, Vec2 p1, const Shape& other, const Tran
     ray.translation = invRotate(xfOther.q, p1 - p0);
     const std::optional<RayHit> hit = shapeRayCast(other, ray);
     if (!hit) return std::nullopt;
+    // A chord that starts on a segment's line does not enter it from either
+    // side: a body created with its centroid exactly on a thin static
+    // segment was stopped at the start of every step, whichever way its
+    // contact pushed it, and hung there half inside for good.
+    if (other.type == ShapeType::segment && !(hit->fraction > 0.0f)) return std::nullopt;
     return Entry{hit->fraction, std::abs(dot(ray.translation, hit->normal)), rotate(xfOther.q, hit->normal)};
 }
 
