@@ -595,7 +595,7 @@ int main(int argc, char** argv) {
           "    contact with its own normal, and their pushes can oppose (one along −x 0.54 m deep, one along\n"
           "    +x 6 cm); two L bodies 90 % overlapped were 0.57 m deep at 2 s and apart at 7.8 s, piles of 8\n"
           "    to 20 stay 0.3 to 0.6 m deep at 2 s.\n"
-          "  - Overlaps of bodies smaller than about 0.2 m are all shallower than the 5 cm at which overlaps\n"
+          "  - Overlaps of bodies of about 0.1 m are mostly shallower than the 5 cm at which overlaps\n"
           "    are pushed sideways, so the soft rows lift them: two 0.1 m boxes created half inside each other\n"
           "    on the ground end 5 cm up, 1.33 times the (small) start energy.\n"
           "  - A pile in a container narrower than it needs cannot spread and is lifted (8 boxes in a 4 m box:\n"
