@@ -52,7 +52,7 @@ SceneDesc parseSceneDesc(const std::string& text, const std::string& file, const
     desc.file = file;
     desc.name = o.str("name", name);
     desc.description = o.str("description", "");
-    desc.dt = o.f("dt", desc.dt, {0, 1, true});
+    desc.dt = o.f("dt", desc.dt, {1.0e-6, 1});  // the engine's own bounds on a step (World::step)
     if (o.has("world")) desc.settings = parseWorld(o.get("world"), o.at("world"));
     if (o.has("camera")) {
         Obj c(o.get("camera"), o.at("camera"), {"comment", "center", "height"});
