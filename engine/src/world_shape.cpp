@@ -107,6 +107,21 @@ void World::destroyShape(ShapeId id, bool updateBodyMass) {
     w.checkUnlocked();
     int s = w.shapeIndex(id);
     int b = w.shapes[s].body;
+    const detail::Shape& gone = w.shapes[s];
+    if (gone.chainSegment) {
+        // Its neighbours in the chain lose their ghost vertex on its side: the
+        // vertex becomes a corner, whose vertex normals collide again (kept
+        // as a ghost, it dropped them as if the removed segment still
+        // continued the surface).
+        const Segment seg = gone.geometry.segment;
+        for (int k : detail::bodyShapes(w.shapes, w.bodies[b])) {
+            detail::Shape& other = w.shapes[k];
+            if (!other.chainSegment || k == s) continue;
+            const Segment& o = other.geometry.segment;
+            if (o.point2 == seg.point1 && other.ghost2 == seg.point2) other.ghost2 = o.point2;
+            if (o.point1 == seg.point2 && other.ghost1 == seg.point1) other.ghost1 = o.point1;
+        }
+    }
     detail::destroyShape(w, s);
     detail::wakeBody(w, b);
     if (updateBodyMass) detail::updateMass(w, b);

@@ -76,6 +76,25 @@ TEST(Chain, ALongTerrainIsCheckedForCrossingsAndCreatedWhole) {
     EXPECT_EQ(world.shapeCount(), static_cast<int>(segments.size()));
 }
 
+// Destroying a segment makes its neighbours' ends on its side corners: their
+// ghost vertices there were the removed segment's far ends, and the rule
+// that drops a vertex normal leaning over the next segment kept dropping
+// them as if it were still there.
+TEST(Chain, DestroyingASegmentTurnsItsNeighboursEndsIntoCorners) {
+    World world;
+    BodyId ground = world.createBody({});
+    const std::vector<Vec2> points = {{0, 0}, {1, 0}, {2, 0.5f}, {3, 0.5f}};
+    const std::vector<ShapeId> segments = world.createChain(ground, {.points = points});
+    ASSERT_EQ(segments.size(), 3u);
+    world.destroyShape(segments[1]);
+    const ChainSegment first = world.shapeChainSegment(segments[0]);
+    const ChainSegment last = world.shapeChainSegment(segments[2]);
+    EXPECT_EQ(first.ghost2, first.segment.point2);  // was {2, 0.5}
+    EXPECT_EQ(last.ghost1, last.segment.point1);    // was {1, 0}
+    EXPECT_EQ(first.ghost1, first.segment.point1);  // the chain's own end, as before
+    EXPECT_EQ(last.ghost2, last.segment.point2);
+}
+
 TEST(Chain, SegmentsKnowTheirNeighbours) {
     World world;
     BodyId ground = world.createBody({});
