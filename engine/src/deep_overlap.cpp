@@ -294,7 +294,9 @@ void pushDeepOverlaps(WorldState& w, float h) {
         if (speed > cap) v *= cap / speed;
         const float lift = dot(v, up) * h;
         const float falling = -dot(s.states[i].v, up);
-        if (lift > 0.0f && falling > 0.0f && s.supported[i]) {
+        // (A fall beyond the speed limit, clamped after this, whose square
+        // overflows is left alone: it made the velocity −∞·up, NaN across.)
+        if (lift > 0.0f && falling > 0.0f && s.supported[i] && falling * falling < std::numeric_limits<float>::max()) {
             const float slower = std::sqrt(std::max(falling * falling - 2.0f * g * lift, 0.0f));
             s.states[i].v += (falling - slower) * up;
         }
