@@ -50,7 +50,7 @@ namespace {
 /// the pivot, I + m·r². With the bodies' own inertias alone, 1/(I_A⁻¹ + I_B⁻¹),
 /// the point row gave back all but I/(I + m·r²) of each stop: a small bob on
 /// a 1.94 m arm swung into its limit at 8 m/s passed it by 0.2 rad, and at
-/// 40 m/s went past π, where the wrapped angle put it beyond the other limit,
+/// 50 m/s went past π, where the wrapped angle put it beyond the other limit,
 /// which threw it on (its energy ×14). The pair (L, P) is applied together
 /// whenever L is, warm start included; P is not part of the point row's own
 /// accumulated impulse (its softness would take a share of it back and leave
