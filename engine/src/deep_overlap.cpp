@@ -294,12 +294,7 @@ void pushDeepOverlaps(WorldState& w, float h) {
         if (speed > cap) v *= cap / speed;
         const float lift = dot(v, up) * h;
         const float falling = -dot(s.states[i].v, up);
-        // (A fall beyond the speed limit, clamped after this, whose square
-        // overflows is left alone: it made the velocity −∞·up, NaN across.)
-        if (lift > 0.0f && falling > 0.0f && s.supported[i] && falling * falling < std::numeric_limits<float>::max()) {
-            const float slower = std::sqrt(std::max(falling * falling - 2.0f * g * lift, 0.0f));
-            s.states[i].v += (falling - slower) * up;
-        }
+        if (lift > 0.0f && falling > 0.0f && s.supported[i]) s.states[i].v += fallPaidForLift(falling, g, lift) * up;
         // Moved by the push, the body is not resting (its velocity says
         // nothing of it: a box created inside the ground slept there).
         if (speed > w.settings.linearSleepTolerance) w.bodies[s.stateBodies[i]].sleepTime = 0.0f;

@@ -3,11 +3,28 @@
 // the positions for one substep and are then dropped (deep_overlap.cpp).
 #pragma once
 
+#include <algorithm>
+#include <cmath>
+#include <limits>
+
 #include "impulse2d/math.hpp"
 
 namespace i2d::detail {
 
 struct WorldState;
+
+/// How much of a falling speed `falling` (m/s, along −up) a body loses when a
+/// push lifts it by `lift` (m) against an acceleration g: the new speed is
+/// √(max(f² − 2·g·lift, 0)), so the kinetic energy pays the potential energy
+/// the lift adds, or all of it. A fall beyond the speed limit (clamped
+/// later) whose square overflows is left as it is: paid for, it became −∞
+/// along up, NaN across (fuzz_world). Used by the deep push and by the soft
+/// rows' push (solver.cpp, payPushLift).
+inline float fallPaidForLift(float falling, float g, float lift) {
+    const float fall2 = falling * falling;
+    if (!(fall2 < std::numeric_limits<float>::max())) return 0.0f;
+    return falling - std::sqrt(std::max(fall2 - 2.0f * g * lift, 0.0f));
+}
 
 /// A deep contact between two moving bodies pushed apart sideways
 /// (perpendicular to gravity) instead of along its normal.

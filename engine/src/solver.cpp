@@ -34,7 +34,6 @@
 #include <bit>
 #include <chrono>
 #include <cmath>
-#include <limits>
 
 #include "contact_row.hpp"
 #include "continuous.hpp"
@@ -319,12 +318,7 @@ inline void payPushLift(const SolverArrays& s, std::size_t i, BodyState& st, Vec
     const float lift = h * (st.upBeforeRelax - v);
     const float gravity = -dot(a, up);
     if (!(gravity > 0.0f) || s.contactColourMasks[i] == 0) return;
-    // A velocity beyond the speed limit (clamped after this) can square to
-    // infinity (fuzz_world: 1.2e26 m/s after a relax pass): left as it is.
-    const float fall2 = v * v;
-    if (!(fall2 < std::numeric_limits<float>::max())) return;
-    const float slower = std::sqrt(std::max(fall2 - 2.0f * gravity * lift, 0.0f));
-    st.v += (-v - slower) * up;
+    st.v += fallPaidForLift(-v, gravity, lift) * up;
 }
 
 /// Bodies [begin, end) of the solver arrays (each body on its own: a stage
