@@ -69,7 +69,10 @@ struct WorldSettings {
     /// Penetration allowed without correction (m). Keeps resting contacts
     /// touching so the narrowphase keeps reporting them (Tamis and Maggiore (2015) §8.1, last note).
     float penetrationSlop = 0.005f;
-    /// Largest speed used to push overlapping bodies apart (m/s).
+    /// Largest speed used to push overlapping bodies apart (m/s). Overlaps
+    /// deeper than 5 cm in soft_step are pushed on pseudo-velocities that
+    /// leave no velocity behind; those may move a body across gravity at
+    /// twice this (a sideways move lifts nothing), up or down at most this.
     float maxPushSpeed = 3.0f;
     /// Contact stiffness (Hz) and damping ratio for soft_step. The stiffness is
     /// capped at an eighth of the substep rate (30 Hz at 60 Hz × 4 substeps),
