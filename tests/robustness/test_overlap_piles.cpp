@@ -251,6 +251,43 @@ TEST(OverlapPiles, FiftyCapsulesAtOnePointAreNotThrown) {
     EXPECT_LE(f.energyRatio, 1.02f);
 }
 
+// The deep push's limits per body (deep_overlap.cpp): across gravity at most
+// twice maxPushSpeed c, so in a step no body moves sideways more than 2·c·Δt
+// (the pseudo-velocity is the only sideways motion here: the pile is at rest
+// and the push leaves no velocity), and the pushes through a pile of 20 boxes
+// created at one point add beyond one contact's c (with the sideways limit at
+// c no body moved more than c·Δt); upwards at most c, less the fall, so no
+// body rises more than c·Δt in a step.
+TEST(OverlapPiles, APushAcrossGravityReachesTwiceTheCapAndNoMore) {
+    for (unsigned seed : {1u, 2u, 3u}) {
+        World world({.enableSleep = false});
+        std::mt19937 rng(seed);
+        std::uniform_real_distribution<float> jitter(-0.01f, 0.01f);
+        std::vector<BodyId> bodies;
+        for (int i = 0; i < 20; ++i)
+            bodies.push_back(makeBody(world, Kind::box, {jitter(rng), 10.0f + jitter(rng)}, 0.0f));
+        const float cap = world.settings().maxPushSpeed;
+        // Float rounding of a sum of four substeps' moves, far below the
+        // c·Δt = 5 cm that separates the two bounds.
+        const float rounding = 1e-5f;
+        for (int step = 0; step < 3; ++step) {
+            std::vector<Vec2> before;
+            for (BodyId b : bodies) before.push_back(world.position(b));
+            world.step(kDt);
+            float sideways = 0.0f, rise = -1.0f;
+            for (std::size_t i = 0; i < bodies.size(); ++i) {
+                const Vec2 p = world.position(bodies[i]);
+                sideways = std::max(sideways, std::abs(p.x - before[i].x));
+                rise = std::max(rise, p.y - before[i].y);
+                EXPECT_EQ(world.linearVelocity(bodies[i]).x, 0.0f) << "seed " << seed << " step " << step;
+            }
+            EXPECT_GT(sideways, cap * kDt) << "seed " << seed << " step " << step;
+            EXPECT_LE(sideways, 2.0f * cap * kDt + rounding) << "seed " << seed << " step " << step;
+            EXPECT_LE(rise, cap * kDt + rounding) << "seed " << seed << " step " << step;
+        }
+    }
+}
+
 // A body created 90 % inside the ground (boxes and circles 0.9 m deep,
 // capsules lying 0.45 m deep) is pushed out, not launched.
 TEST(OverlapPiles, DeepInsideTheGround) {
