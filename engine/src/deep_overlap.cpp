@@ -268,8 +268,8 @@ void pushDeepOverlaps(WorldState& w, float h) {
     // Each body's pseudo-velocity: along its free acceleration (down, under
     // gravity) at most maxPushSpeed c, against it (up) at most c less its
     // speed along that acceleration, and never less than c/2; across it at
-    // most kSidewaysPushFactor·c (no gravity: that, in any direction). A body at rest may be
-    // pushed up at c (out of the ground under a stack of four boxes:
+    // most kSidewaysPushFactor·c (without gravity, that in any direction).
+    // A body at rest may be pushed up at c (out of the ground under a stack of four boxes:
     // stack5_overlap, apart in 1.8 s; at c/2 it took 2.2 s). A body of a
     // falling pile pushed up at u while it falls at g·t gains g·u·t of
     // energy per unit mass; its speed stays within what a free fall from its

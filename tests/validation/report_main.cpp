@@ -355,7 +355,7 @@ int main(int argc, char** argv) {
           "it went in and out of the deep regime every few steps and rocked the stack 13 cm. So each point is\n"
           "pushed only beyond what its load explains: the push at which a soft row would hold its accumulated\n"
           "impulse λ steady, is·λ/(m·ms), is subtracted from biasRate·depth. Each body's pseudo-velocity is limited to maxPushSpeed c, and upwards to c less its falling speed but at least\n"
-          "c/2: a body of a falling pile pushed up at u gains g·u·t of energy per unit mass, and stays within a\n"
+          "c/2 (across gravity to 2c since, below: \"A pile created at one point must spread\"): a body of a falling pile pushed up at u gains g·u·t of energy per unit mass, and stays within a\n"
           "free fall from its height plus c at every moment only if u ≤ c/2. Pushes that add along a chain\n"
           "move no body faster than the limit. A body being pushed out does not count as resting (a box created\n"
           "inside the ground fell asleep there).\n"
