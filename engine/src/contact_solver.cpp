@@ -441,8 +441,10 @@ void solveContacts(WorldState& w, float h, SolvePass target) {
                                   w.settings.impactModel == ImpactModel::closed_form;
         const float impactSpeed = w.settings.impactThreshold;
         const bool trackMax = !s.wideContactsOnly;
+        const RowContext x = makeRowContext(w, h, true);
+        const float maxPush = w.settings.maxPushSpeed;
         forEachWideColour(w, [&](int b, int e, int points) {
-            solveWideContacts(s, target, h, leaveImpacts, impactSpeed, b, e, trackMax, points);
+            solveWideContacts(s, x, maxPush, target, h, leaveImpacts, impactSpeed, b, e, trackMax, points);
         });
         first = static_cast<std::size_t>(s.contactOverflowStart);
     }

@@ -5,6 +5,8 @@
 // results (tests/unit/test_float4.cpp checks the scalar path against SSE2).
 #pragma once
 
+#include <cstdint>
+
 #if defined(__SSE2__) && !defined(I2D_SCALAR_FLOAT4)
 #include <emmintrin.h>
 #define I2D_FLOAT4_SSE2 1
@@ -37,6 +39,12 @@ struct Mask4 {
 inline Mask4 operator<(Float4 a, Float4 b) { return {_mm_cmplt_ps(a.v, b.v)}; }
 inline Mask4 operator>(Float4 a, Float4 b) { return {_mm_cmpgt_ps(a.v, b.v)}; }
 inline Mask4 nonZero(Float4 a) { return {_mm_cmpneq_ps(a.v, _mm_setzero_ps())}; }
+/// The lanes of four flag words that have every bit of `bits`.
+inline Mask4 hasBits(const std::uint32_t* p, std::uint32_t bits) {
+    const __m128i b = _mm_set1_epi32(static_cast<int>(bits));
+    const __m128i f = _mm_and_si128(_mm_loadu_si128(reinterpret_cast<const __m128i*>(p)), b);
+    return {_mm_castsi128_ps(_mm_cmpeq_epi32(f, b))};
+}
 inline Mask4 operator&(Mask4 a, Mask4 b) { return {_mm_and_ps(a.m, b.m)}; }
 inline Mask4 operator|(Mask4 a, Mask4 b) { return {_mm_or_ps(a.m, b.m)}; }
 /// a and not b.
@@ -103,6 +111,10 @@ inline Mask4 operator>(Float4 a, Float4 b) {
 }
 inline Mask4 nonZero(Float4 a) {
     return lanewiseMask(a, a, [](float x, float) { return x != 0.0f; });
+}
+/// The lanes of four flag words that have every bit of `bits`.
+inline Mask4 hasBits(const std::uint32_t* p, std::uint32_t bits) {
+    return {{(p[0] & bits) == bits, (p[1] & bits) == bits, (p[2] & bits) == bits, (p[3] & bits) == bits}};
 }
 inline Mask4 operator&(Mask4 a, Mask4 b) {
     return {{a.m[0] && b.m[0], a.m[1] && b.m[1], a.m[2] && b.m[2], a.m[3] && b.m[3]}};

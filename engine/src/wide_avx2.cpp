@@ -65,6 +65,14 @@ struct Lanes8 {
     /// A contact block's point j.
     I2D_AVX V load(int j, PointField f) const { return load8(k0->points[j].*f, k1->points[j].*f); }
     I2D_AVX void store(int j, PointField f, V x) const { store8(k0->points[j].*f, k1->points[j].*f, x); }
+    /// The lanes whose flags (a contact block's) have every bit of `bits`.
+    I2D_AVX M flags(std::uint32_t bits) const {
+        const __m256i f = _mm256_insertf128_si256(
+            _mm256_castsi128_si256(_mm_loadu_si128(reinterpret_cast<const __m128i*>(k0->flags))),
+            _mm_loadu_si128(reinterpret_cast<const __m128i*>(k1->flags)), 1);
+        const __m256i b = _mm256_set1_epi32(static_cast<int>(bits));
+        return {_mm256_castsi256_ps(_mm256_cmpeq_epi32(_mm256_and_si256(f, b), b))};
+    }
 
     /// The eight bodies' states (two rows of four floats each, body.hpp),
     /// transposed so that each field is one register of eight lanes.

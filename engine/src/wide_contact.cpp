@@ -27,15 +27,19 @@ inline void packLane(WideContactBlock& k, int lane, const ContactConstraint* cc,
     k.tangentSpeed[lane] = used ? cc->tangentSpeed : 0.0f;
     k.mA[lane] = used ? cc->invMassA : 0.0f, k.iA[lane] = used ? cc->invIA : 0.0f;
     k.mB[lane] = used ? cc->invMassB : 0.0f, k.iB[lane] = used ? cc->invIB : 0.0f;
-    k.biasRate[lane] = used ? cc->biasRate : 0.0f;
-    k.massScale[lane] = used ? cc->massScale : 1.0f;
-    k.impulseScale[lane] = used ? cc->impulseScale : 0.0f;
-    k.maxPush[lane] = used ? cc->maxPush : 0.0f;
     k.pairScale[lane] = used ? cc->pairScale : 1.0f;
-    k.together[lane] = used && cc->pointsTogether ? 1.0f : 0.0f;
-    k.roundA[lane] = used && cc->roundA ? 1.0f : 0.0f;
-    k.roundB[lane] = used && cc->roundB ? 1.0f : 0.0f;
-    k.deep[lane] = used && cc->deepOverlap ? 1.0f : 0.0f;
+    std::uint32_t flags = 0;
+    if (used) {
+        if (cc->pointsTogether) flags |= kWideTogether;
+        if (cc->roundA) flags |= kWideRoundA;
+        if (cc->roundB) flags |= kWideRoundB;
+        if (cc->deepOverlap) flags |= kWideDeep;
+        // The side rule of prepareContactRow's softness.
+        if (cc->invMassA == 0.0f || cc->invMassB == 0.0f) flags |= kWideImmovableSide;
+        if (cc->pointCount > 0) flags |= kWidePoint0;
+        if (cc->pointCount > 1) flags |= kWidePoint1;
+    }
+    k.flags[lane] = flags;
     for (int j = 0; j < 2; ++j) {
         WideContactPoint& p = k.points[j];
         const bool present = used && j < cc->pointCount;
@@ -48,7 +52,6 @@ inline void packLane(WideContactBlock& k, int lane, const ContactConstraint* cc,
         p.normalImpulse[lane] = present ? cp->normalImpulse : 0.0f;
         p.tangentImpulse[lane] = present ? cp->tangentImpulse : 0.0f;
         p.maxNormalImpulse[lane] = present ? cp->maxNormalImpulse : 0.0f;
-        p.present[lane] = present ? 1.0f : 0.0f;
     }
 }
 
@@ -137,9 +140,11 @@ void warmStartWideContacts(SolverArrays& s, int firstBlock, int lastBlock, int p
     });
 }
 
-void solveWideContacts(SolverArrays& s, SolvePass pass, float h, bool leaveImpacts, float impactSpeed, int firstBlock,
-                       int lastBlock, bool trackMax, int points) {
-    const SweepParams sp{1.0f / h, -impactSpeed, pass == SolvePass::soft_bias, leaveImpacts, trackMax};
+void solveWideContacts(SolverArrays& s, const RowContext& x, float maxPush, SolvePass pass, float h, bool leaveImpacts,
+                       float impactSpeed, int firstBlock, int lastBlock, bool trackMax, int points) {
+    const SweepParams sp{1.0f / h,     -impactSpeed, pass == SolvePass::soft_bias,
+                         leaveImpacts, trackMax,     x.dynamicSoft,
+                         x.staticSoft, maxPush};
 #if defined(I2D_AVX2_KERNEL)
     if (wideLanes() == 8 && lastBlock > firstBlock)
         firstBlock = solveWideContactsAvx2(&s.wideContacts[0], s.states.data(), sp, firstBlock, lastBlock, points);

@@ -12,6 +12,7 @@
 // carries is set in the block (carryDeepLoads, contact_solver.cpp).
 #pragma once
 
+#include <cstdint>
 #include <vector>
 
 #include "contact_solver.hpp"
@@ -26,16 +27,33 @@ struct WorldState;
 /// points, then manifolds of one, whose sweeps skip the second point.
 inline constexpr int kWideGroupsPerColour = 2;
 
-/// One of the two points of four manifolds.
+/// One of the two points of four manifolds (whether a lane has it: the
+/// block's kWidePoint0/kWidePoint1 flags).
 struct WideContactPoint {
     float rAx[4], rAy[4], rBx[4], rBy[4];
     float adjustedSeparation[4], normalMass[4], tangentMass[4];
     float normalImpulse[4], tangentImpulse[4], maxNormalImpulse[4];
-    float present[4];  ///< 1 where the manifold has this point, else 0
+};
+
+/// A lane's flags (WideContactBlock::flags), the row's booleans.
+enum WideContactFlag : std::uint32_t {
+    kWideTogether = 1u << 0,       ///< the manifold's two points are solved together (pairScale)
+    kWideRoundA = 1u << 1,         ///< A's shape is a circle: its contact point does not turn with it
+    kWideRoundB = 1u << 2,         ///< the same for B
+    kWideDeep = 1u << 3,           ///< overlaps deeper than kDeepOverlap (rigid in the soft_bias pass)
+    kWideImmovableSide = 1u << 4,  ///< a side cannot move: the rows' stiffer softness (RowContext::staticSoft)
+    kWidePoint0 = 1u << 5,         ///< the manifold has its first point
+    kWidePoint1 = 1u << 6,         ///< and its second
 };
 
 /// Four manifolds, structure of arrays. An empty lane names the zero state on
-/// both sides with zero masses and no points.
+/// both sides with zero masses and no points. The substeps' sweeps stream
+/// through every block several times, so a block holds only what they read:
+/// the rows' softness and push cap are the step's (RowContext: every soft_step
+/// row has the same, by whether a side can move) and come with the sweep, and
+/// the booleans share one word per lane. 36 bytes fewer per contact than
+/// before (704 bytes a block then) made many_pyramids' step about a tenth
+/// faster (docs/performance.md).
 struct WideContactBlock {
     int a[4], b[4];  ///< solver state indices
     int row[4];      ///< the row in SolverArrays::constraints, −1 for an empty lane or one prepared without a row
@@ -43,10 +61,8 @@ struct WideContactBlock {
     float nx[4], ny[4];
     float friction[4], tangentSpeed[4];
     float mA[4], iA[4], mB[4], iB[4];
-    float biasRate[4], massScale[4], impulseScale[4], maxPush[4];
-    float pairScale[4];                       ///< the rows' pairScale (1 unless the points are solved together)
-    float together[4], roundA[4], roundB[4];  ///< the rows' flags as 1 or 0
-    float deep[4];  ///< 1 where the row overlaps deeper than kDeepOverlap (rigid in the soft_bias pass)
+    float pairScale[4];      ///< the rows' pairScale (1 unless the points are solved together)
+    std::uint32_t flags[4];  ///< WideContactFlag bits
     WideContactPoint points[2];
 };
 
@@ -73,8 +89,10 @@ void warmStartWideContacts(SolverArrays& s, int firstBlock, int lastBlock, int p
 /// closed-form impact law, see contact_solver.cpp).
 /// `trackMax` false leaves maxNormalImpulse alone: only the velocity-bias
 /// restitution pass reads it, through the rows (writeBackWideContacts).
-void solveWideContacts(SolverArrays& s, SolvePass pass, float h, bool leaveImpacts, float impactSpeed, int firstBlock,
-                       int lastBlock, bool trackMax = true, int points = 2);
+/// `x` and `maxPush` give the rows' softness and push cap (the step's, as
+/// prepareContactRow sets them in soft_step).
+void solveWideContacts(SolverArrays& s, const RowContext& x, float maxPush, SolvePass pass, float h, bool leaveImpacts,
+                       float impactSpeed, int firstBlock, int lastBlock, bool trackMax = true, int points = 2);
 /// The accumulated impulses of blocks [firstBlock, lastBlock) back into their
 /// rows (for restitution and the store, which read the rows).
 void writeBackWideContacts(SolverArrays& s, int firstBlock, int lastBlock);

@@ -78,6 +78,9 @@ I2D_KERNEL void withPointCount(int points, F&& f) {
 using BlockField = float (WideContactBlock::*)[4];
 using PointField = float (WideContactPoint::*)[4];
 
+/// The flag of point j (0 or 1) of a contact block.
+I2D_KERNEL std::uint32_t pointFlag(int j) { return j == 0 ? kWidePoint0 : kWidePoint1; }
+
 template <int Points, class L>
 I2D_KERNEL void warmStartBlock(const L& k, BodyState* states) {
     static_assert(Points == 1 || Points == 2);
@@ -93,8 +96,7 @@ I2D_KERNEL void warmStartBlock(const L& k, BodyState* states) {
         const V ln = k.load(j, &WideContactPoint::normalImpulse), lt = k.load(j, &WideContactPoint::tangentImpulse);
         const WideArmsT<V> r{k.load(j, &WideContactPoint::rAx), k.load(j, &WideContactPoint::rAy),
                              k.load(j, &WideContactPoint::rBx), k.load(j, &WideContactPoint::rBy)};
-        applyMasked<V, M>(nonZero(k.load(j, &WideContactPoint::present)), r, ln * nx + lt * tx, ln * ny + lt * ty, mA,
-                          iA, mB, iB, v);
+        applyMasked<V, M>(k.flags(pointFlag(j)), r, ln * nx + lt * tx, ln * ny + lt * ty, mA, iA, mB, iB, v);
     }
     A.vx = v.vAx, A.vy = v.vAy, A.w = v.wA;
     B.vx = v.vBx, B.vy = v.vBy, B.w = v.wB;
@@ -108,6 +110,8 @@ struct SweepParams {
     bool softBias;
     bool leaveImpacts;
     bool trackMax;  ///< keep maxNormalImpulse (only the velocity-bias restitution reads it, through the rows)
+    Softness dynamicSoft, staticSoft;  ///< the rows' softness: static where a side cannot move (kWideImmovableSide)
+    float maxPush;                     ///< the rows' push cap (WorldSettings::maxPushSpeed)
 };
 
 template <int Points, class L>
@@ -123,10 +127,16 @@ I2D_KERNEL void solveBlock(const L& k, BodyState* states, const SweepParams& sp)
     const V mA = k.load(&WideContactBlock::mA), iA = k.load(&WideContactBlock::iA);
     const V mB = k.load(&WideContactBlock::mB), iB = k.load(&WideContactBlock::iB);
     // A round side's contact point does not turn with it (contact_solver.cpp).
-    const M roundA = nonZero(k.load(&WideContactBlock::roundA)), roundB = nonZero(k.load(&WideContactBlock::roundB));
+    const M roundA = k.flags(kWideRoundA), roundB = k.flags(kWideRoundB);
     const V qAc = select(roundA, one, A.qc), qAs = select(roundA, zero, A.qs);
     const V qBc = select(roundB, one, B.qc), qBs = select(roundB, zero, B.qs);
     const V dpx = B.dpx - A.dpx, dpy = B.dpy - A.dpy;
+    // The rows' softness, the stiffer one where a side cannot move (prepareContactRow).
+    const M immovable = k.flags(kWideImmovableSide);
+    const V biasRate = select(immovable, L::splat(sp.staticSoft.biasRate), L::splat(sp.dynamicSoft.biasRate));
+    const V massScale = select(immovable, L::splat(sp.staticSoft.massScale), L::splat(sp.dynamicSoft.massScale));
+    const V impulseScale = select(immovable, L::splat(sp.staticSoft.impulseScale),
+                                  L::splat(sp.dynamicSoft.impulseScale));
 
     // Each point's target: Δλ = −m·ms·(vn + bias) − is·λ, and whether the
     // last relax leaves it to the impact law.
@@ -136,7 +146,7 @@ I2D_KERNEL void solveBlock(const L& k, BodyState* states, const SweepParams& sp)
     for (int j = 0; j < Points; ++j) {
         const WideArmsT<V>& r = arms[j] = {k.load(j, &WideContactPoint::rAx), k.load(j, &WideContactPoint::rAy),
                                            k.load(j, &WideContactPoint::rBx), k.load(j, &WideContactPoint::rBy)};
-        present[j] = nonZero(k.load(j, &WideContactPoint::present));
+        present[j] = k.flags(pointFlag(j));
         const V rotBx = qBc * r.rBx - qBs * r.rBy, rotBy = qBs * r.rBx + qBc * r.rBy;
         const V rotAx = qAc * r.rAx - qAs * r.rAy, rotAy = qAs * r.rAx + qAc * r.rAy;
         const V dx = dpx + (rotBx - rotAx), dy = dpy + (rotBy - rotAy);
@@ -146,11 +156,11 @@ I2D_KERNEL void solveBlock(const L& k, BodyState* states, const SweepParams& sp)
         if (sp.softBias) {
             // A deep overlap's row is rigid here (pushed apart on
             // pseudo-velocities instead, deep_overlap.cpp): no bias, full mass.
-            const M rigid = speculative | nonZero(k.load(&WideContactBlock::deep));
-            const V soft = maxv<V, M>(k.load(&WideContactBlock::biasRate) * sep, -k.load(&WideContactBlock::maxPush));
+            const M rigid = speculative | k.flags(kWideDeep);
+            const V soft = maxv<V, M>(biasRate * sep, -L::splat(sp.maxPush));
             bias[j] = select(speculative, sep * invH, select(rigid, zero, soft));
-            ms[j] = select(rigid, one, k.load(&WideContactBlock::massScale));
-            is[j] = select(rigid, zero, k.load(&WideContactBlock::impulseScale));
+            ms[j] = select(rigid, one, massScale);
+            is[j] = select(rigid, zero, impulseScale);
         } else {
             bias[j] = select(speculative, sep * invH, zero);
             ms[j] = one;
@@ -163,7 +173,7 @@ I2D_KERNEL void solveBlock(const L& k, BodyState* states, const SweepParams& sp)
     M pair{};  // a lane of one point goes alone, at scale 1
     V scale = one;
     if constexpr (Points == 2) {
-        pair = andNot(andNot(nonZero(k.load(&WideContactBlock::together)), skip[0]), skip[1]);
+        pair = andNot(andNot(k.flags(kWideTogether), skip[0]), skip[1]);
         scale = select(pair, k.load(&WideContactBlock::pairScale), one);
     }
     V increment[Points];

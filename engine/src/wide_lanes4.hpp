@@ -21,6 +21,8 @@ struct Lanes4 {
     /// A contact block's point j.
     V load(int j, float (WideContactPoint::*f)[4]) const { return load4(k->points[j].*f); }
     void store(int j, float (WideContactPoint::*f)[4], V x) const { store4(k->points[j].*f, x); }
+    /// The lanes whose flags (a contact block's) have every bit of `bits`.
+    M flags(std::uint32_t bits) const { return hasBits(k->flags, bits); }
     WideBodyT<V> gather(const BodyState* states, bool sideA) const {
         const WideBody b = gatherBodies(states, sideA ? k->a : k->b);
         return {b.vx, b.vy, b.w, b.reserved, b.dpx, b.dpy, b.qc, b.qs};

@@ -40,6 +40,13 @@ void fill(WorldState& w, unsigned seed, int n) {
         b.dq = {std::cos(a), std::sin(a)};
     }
     const int zero = 2 * n;
+    // Every soft_step row has the step's softness (the stiffer one where a side
+    // cannot move) and the world's push cap, which the wide sweeps take from
+    // the step rather than from each row; a low cap, so that a share of the
+    // pushes (biasRate times overlaps to 5 cm: up to 0.45 m/s, 0.9 against an
+    // immovable side) reach it.
+    w.settings.maxPushSpeed = 0.3f;
+    const RowContext x = makeRowContext(w, 1.0f / 240.0f, true);
     s.constraints.resizeForOverwrite(static_cast<std::size_t>(n));
     s.rowCount = n;
     for (int i = 0; i < n; ++i) {
@@ -56,11 +63,11 @@ void fill(WorldState& w, unsigned seed, int n) {
         cc.invIA = immovableA ? 0.0f : m(rng);
         cc.invMassB = m(rng);
         cc.invIB = m(rng);
-        const Softness soft = makeSoft(30.0f, 10.0f, 1.0f / 240.0f);
+        const Softness& soft = immovableA ? x.staticSoft : x.dynamicSoft;
         cc.biasRate = soft.biasRate;
         cc.massScale = soft.massScale;
         cc.impulseScale = soft.impulseScale;
-        cc.maxPush = unit(rng) < 0.3f ? 0.1f : 3.0f;  // some pushes reach their cap
+        cc.maxPush = w.settings.maxPushSpeed;
         cc.tangentSpeed = unit(rng) < 0.2f ? u(rng) : 0.0f;
         cc.deepOverlap = unit(rng) < 0.15f;  // rigid in the push pass (deep_overlap.cpp pushes it)
         cc.pointCount = static_cast<std::uint8_t>(unit(rng) < 0.3f ? 1 : 2);
