@@ -205,6 +205,7 @@ int layoutWideBlocks(SolverArrays& s, const int* ends) {
     // One allocation, sized first: growing block by block made a fresh
     // allocation, page faults and a copy per doubling, every step.
     s.wideContacts.resizeForOverwrite(static_cast<std::size_t>(blocks));
+    s.wideContactCold.resizeForOverwrite(static_cast<std::size_t>(blocks));
     return blocks;
 }
 
@@ -227,6 +228,7 @@ void prepareContactRows(WorldState& w, float h, bool soft) {
         prepareContacts(w, h, soft);  // leaves each colour's end in colourOffsets
         if (!s.wideContactsActive) {
             s.wideContacts.resizeForOverwrite(0);
+            s.wideContactCold.resizeForOverwrite(0);
             return;
         }
         const int blocks = layoutWideBlocks(s, s.colourOffsets.data());
@@ -274,9 +276,8 @@ void prepareContactRows(WorldState& w, float h, bool soft) {
             }
             const std::size_t group = s.contactColours[static_cast<std::size_t>(k)];
             const int inGroup = row - begin[group];
-            WideContactBlock& block =
-                s.wideContacts[static_cast<std::size_t>(s.wideContactColourStart[group] + inGroup / 4)];
-            prepareWideContactLane(w, x, contact, block, inGroup % 4);
+            const std::size_t blk = static_cast<std::size_t>(s.wideContactColourStart[group] + inGroup / 4);
+            prepareWideContactLane(w, x, contact, s.wideContacts[blk], s.wideContactCold[blk], inGroup % 4);
         }
     };
     w.runner.run(static_cast<int>(activeCount), kPrepareGrain, prepare);
@@ -284,9 +285,9 @@ void prepareContactRows(WorldState& w, float h, bool soft) {
     for (int c = 0; c < kRowGroupCount; ++c) {
         const int count = begin[static_cast<std::size_t>(c) + 1] - begin[static_cast<std::size_t>(c)];
         if (count % 4 == 0) continue;
-        WideContactBlock& block =
-            s.wideContacts[static_cast<std::size_t>(s.wideContactColourStart[static_cast<std::size_t>(c) + 1] - 1)];
-        for (int lane = count % 4; lane < 4; ++lane) packEmptyWideContactLane(block, lane, x.zeroState);
+        const std::size_t k = static_cast<std::size_t>(s.wideContactColourStart[static_cast<std::size_t>(c) + 1] - 1);
+        for (int lane = count % 4; lane < 4; ++lane)
+            packEmptyWideContactLane(s.wideContacts[k], s.wideContactCold[k], lane, x.zeroState);
     }
 }
 
@@ -683,6 +684,7 @@ void releaseLargeStepArrays(WorldState& w) {
     releaseIfLarge(s.biasW);
     releaseIfLarge(s.constraints);
     releaseIfLarge(s.wideContacts);
+    releaseIfLarge(s.wideContactCold);
     releaseIfLarge(s.rowContacts);
     releaseIfLarge(s.contactColours);
     releaseIfLarge(s.colourKeys);

@@ -59,15 +59,16 @@ struct SolverArrays {
     std::vector<DeepCarry> deepCarry;        ///< per deep row, in deepRows' order (contact_solver.cpp)
     std::vector<std::uint8_t> supported;     ///< per state: rests on something immovable (deep_overlap.cpp)
     std::vector<int> supportStart, supportAbove, supportQueue;  ///< deep_overlap.cpp's lists of what rests on what
-    std::vector<RollingConstraint> rolling;       ///< contacts with rolling resistance (contact_solver.cpp)
-    ScratchArray<WideContactBlock> wideContacts;  ///< the coloured contact rows four at a time (wide_contact.cpp)
-    bool wideContactsActive = false;              ///< this step solves them so
-    bool wideContactsOnly = false;                ///< ... prepared without scalar rows (solver.cpp)
-    ScratchArray<int> rowContacts;                ///< then: each active contact's row, −1 for none
-    std::vector<int> colourBegin;                 ///< then: each row group's first row
-    std::vector<int> wideContactColourStart;      ///< per row group: its first block; then the block count
-    std::vector<int> wideBlockRows;               ///< per block: its first row and its group's end
-    int contactOverflowStart = 0;                 ///< the first row of the scalar rest (the overflow group)
+    std::vector<RollingConstraint> rolling;         ///< contacts with rolling resistance (contact_solver.cpp)
+    ScratchArray<WideContactBlock> wideContacts;    ///< the coloured contact rows four at a time (wide_contact.cpp)
+    ScratchArray<WideContactCold> wideContactCold;  ///< what the sweeps do not read, block by block
+    bool wideContactsActive = false;                ///< this step solves them so
+    bool wideContactsOnly = false;                  ///< ... prepared without scalar rows (solver.cpp)
+    ScratchArray<int> rowContacts;                  ///< then: each active contact's row, −1 for none
+    std::vector<int> colourBegin;                   ///< then: each row group's first row
+    std::vector<int> wideContactColourStart;        ///< per row group: its first block; then the block count
+    std::vector<int> wideBlockRows;                 ///< per block: its first row and its group's end
+    int contactOverflowStart = 0;                   ///< the first row of the scalar rest (the overflow group)
 };
 
 /// limitSpeed for a velocity faster than maxSpeed (or not finite).

@@ -59,12 +59,17 @@ struct Lanes8 {
     using M = Mask8;
     Block* k0;
     Block* k1;
+    WideContactCold* c0 = nullptr;  ///< the contact blocks' cold parts (their sweeps only)
+    WideContactCold* c1 = nullptr;
     I2D_AVX static V splat(float x) { return {_mm256_set1_ps(x)}; }
     I2D_AVX V load(float (Block::*f)[4]) const { return load8(k0->*f, k1->*f); }
     I2D_AVX void store(float (Block::*f)[4], V x) const { store8(k0->*f, k1->*f, x); }
     /// A contact block's point j.
     I2D_AVX V load(int j, PointField f) const { return load8(k0->points[j].*f, k1->points[j].*f); }
     I2D_AVX void store(int j, PointField f, V x) const { store8(k0->points[j].*f, k1->points[j].*f, x); }
+    /// A contact block's largest normal impulse of point j (WideContactCold).
+    I2D_AVX V loadMax(int j) const { return load8(c0->maxNormalImpulse[j], c1->maxNormalImpulse[j]); }
+    I2D_AVX void storeMax(int j, V x) const { store8(c0->maxNormalImpulse[j], c1->maxNormalImpulse[j], x); }
     /// The lanes whose flags (a contact block's) have every bit of `bits`.
     I2D_AVX M flags(std::uint32_t bits) const {
         const __m256i f = _mm256_insertf128_si256(
@@ -135,11 +140,12 @@ int warmStartWideContactsAvx2(WideContactBlock* blocks, BodyState* states, int f
     return i;
 }
 
-int solveWideContactsAvx2(WideContactBlock* blocks, BodyState* states, const SweepParams& sp, int first, int last,
-                          int points) {
+int solveWideContactsAvx2(WideContactBlock* blocks, WideContactCold* cold, BodyState* states, const SweepParams& sp,
+                          int first, int last, int points) {
     int i = first;
     withPointCount(points, [&](auto n) {
-        for (; i + 1 < last; i += 2) solveBlock<n()>(Lanes8<WideContactBlock>{blocks + i, blocks + i + 1}, states, sp);
+        for (; i + 1 < last; i += 2)
+            solveBlock<n()>(Lanes8<WideContactBlock>{blocks + i, blocks + i + 1, cold + i, cold + i + 1}, states, sp);
     });
     return i;
 }

@@ -16,12 +16,13 @@ namespace i2d::detail {
 namespace {
 
 /// Lane `lane` of block k from row cc (null: an empty lane), every field written.
-inline void packLane(WideContactBlock& k, int lane, const ContactConstraint* cc, int row, int zero) {
+inline void packLane(WideContactBlock& k, WideContactCold& cold, int lane, const ContactConstraint* cc, int row,
+                     int zero) {
     const bool used = cc != nullptr;
     k.a[lane] = used ? cc->a : zero;
     k.b[lane] = used ? cc->b : zero;
-    k.row[lane] = used ? row : -1;
-    k.contact[lane] = used ? cc->contact : -1;
+    cold.row[lane] = used ? row : -1;
+    cold.contact[lane] = used ? cc->contact : -1;
     k.nx[lane] = used ? cc->normal.x : 0.0f, k.ny[lane] = used ? cc->normal.y : 0.0f;
     k.friction[lane] = used ? cc->friction : 0.0f;
     k.tangentSpeed[lane] = used ? cc->tangentSpeed : 0.0f;
@@ -51,7 +52,7 @@ inline void packLane(WideContactBlock& k, int lane, const ContactConstraint* cc,
         p.tangentMass[lane] = present ? cp->tangentMass : 0.0f;
         p.normalImpulse[lane] = present ? cp->normalImpulse : 0.0f;
         p.tangentImpulse[lane] = present ? cp->tangentImpulse : 0.0f;
-        p.maxNormalImpulse[lane] = present ? cp->maxNormalImpulse : 0.0f;
+        cold.maxNormalImpulse[j][lane] = present ? cp->maxNormalImpulse : 0.0f;
     }
 }
 
@@ -60,31 +61,34 @@ inline void packLane(WideContactBlock& k, int lane, const ContactConstraint* cc,
 void packWideContactBlock(SolverArrays& s, int block, int start, int last) {
     const int zero = static_cast<int>(s.states.size()) - 1;
     WideContactBlock& k = s.wideContacts[static_cast<std::size_t>(block)];
+    WideContactCold& cold = s.wideContactCold[static_cast<std::size_t>(block)];
     for (int lane = 0; lane < 4; ++lane) {
         const int r = start + lane;
-        packLane(k, lane, r < last ? &s.constraints[static_cast<std::size_t>(r)] : nullptr, r, zero);
+        packLane(k, cold, lane, r < last ? &s.constraints[static_cast<std::size_t>(r)] : nullptr, r, zero);
     }
 }
 
-void prepareWideContactLane(const WorldState& w, const RowContext& x, int contact, WideContactBlock& k, int lane) {
+void prepareWideContactLane(const WorldState& w, const RowContext& x, int contact, WideContactBlock& k,
+                            WideContactCold& cold, int lane) {
     // The scalar row's own preparation, on the stack: the lane holds exactly
     // what packing that row would have given.
     ContactConstraint cc;
     prepareContactRow(w, x, contact, cc);
     finishContactRow(x, w.settings.penetrationSlop, cc);
-    packLane(k, lane, &cc, -1, x.zeroState);
+    packLane(k, cold, lane, &cc, -1, x.zeroState);
 }
 
-void packEmptyWideContactLane(WideContactBlock& k, int lane, int zeroState) {
-    packLane(k, lane, nullptr, -1, zeroState);
+void packEmptyWideContactLane(WideContactBlock& k, WideContactCold& cold, int lane, int zeroState) {
+    packLane(k, cold, lane, nullptr, -1, zeroState);
 }
 
 void storeWideContacts(SolverArrays& s, SlotArray<Contact>& contacts, int firstBlock, int lastBlock) {
     for (int i = firstBlock; i < lastBlock; ++i) {
         const WideContactBlock& k = s.wideContacts[static_cast<std::size_t>(i)];
+        const WideContactCold& cold = s.wideContactCold[static_cast<std::size_t>(i)];
         for (int lane = 0; lane < 4; ++lane) {
-            if (k.contact[lane] < 0) continue;
-            Contact& ct = contacts[k.contact[lane]];
+            if (cold.contact[lane] < 0) continue;
+            Contact& ct = contacts[cold.contact[lane]];
             for (int j = 0; j < ct.manifold.pointCount; ++j) {
                 ct.normalImpulse[j] = k.points[j].normalImpulse[lane];
                 ct.tangentImpulse[j] = k.points[j].tangentImpulse[lane];
@@ -113,8 +117,8 @@ bool cpuHasAvx2() {
 // wide_avx2.cpp: pairs of blocks from `first`; each returns the first
 // block it left (the odd one at the end, if any).
 int warmStartWideContactsAvx2(WideContactBlock* blocks, BodyState* states, int first, int last, int points);
-int solveWideContactsAvx2(WideContactBlock* blocks, BodyState* states, const SweepParams& sp, int first, int last,
-                          int points);
+int solveWideContactsAvx2(WideContactBlock* blocks, WideContactCold* cold, BodyState* states, const SweepParams& sp,
+                          int first, int last, int points);
 #endif
 
 int wideLanes() {
@@ -147,26 +151,29 @@ void solveWideContacts(SolverArrays& s, const RowContext& x, float maxPush, Solv
                          x.staticSoft, maxPush};
 #if defined(I2D_AVX2_KERNEL)
     if (wideLanes() == 8 && lastBlock > firstBlock)
-        firstBlock = solveWideContactsAvx2(&s.wideContacts[0], s.states.data(), sp, firstBlock, lastBlock, points);
+        firstBlock = solveWideContactsAvx2(&s.wideContacts[0], &s.wideContactCold[0], s.states.data(), sp, firstBlock,
+                                           lastBlock, points);
 #endif
     withPointCount(points, [&](auto n) {
-        for (int i = firstBlock; i < lastBlock; ++i)
-            solveBlock<n()>(Lanes4<WideContactBlock>{&s.wideContacts[static_cast<std::size_t>(i)]}, s.states.data(),
-                            sp);
+        for (int i = firstBlock; i < lastBlock; ++i) {
+            const std::size_t b = static_cast<std::size_t>(i);
+            solveBlock<n()>(Lanes4<WideContactBlock>{&s.wideContacts[b], &s.wideContactCold[b]}, s.states.data(), sp);
+        }
     });
 }
 
 void writeBackWideContacts(SolverArrays& s, int firstBlock, int lastBlock) {
     for (int i = firstBlock; i < lastBlock; ++i) {
         const WideContactBlock& k = s.wideContacts[static_cast<std::size_t>(i)];
+        const WideContactCold& cold = s.wideContactCold[static_cast<std::size_t>(i)];
         for (int lane = 0; lane < 4; ++lane) {
-            if (k.row[lane] < 0) continue;
-            ContactConstraint& cc = s.constraints[static_cast<std::size_t>(k.row[lane])];
+            if (cold.row[lane] < 0) continue;
+            ContactConstraint& cc = s.constraints[static_cast<std::size_t>(cold.row[lane])];
             for (int j = 0; j < cc.pointCount; ++j) {
                 ContactPointConstraint& cp = cc.points[j];
                 cp.normalImpulse = k.points[j].normalImpulse[lane];
                 cp.tangentImpulse = k.points[j].tangentImpulse[lane];
-                cp.maxNormalImpulse = k.points[j].maxNormalImpulse[lane];
+                cp.maxNormalImpulse = cold.maxNormalImpulse[j][lane];
             }
         }
     }
@@ -189,12 +196,15 @@ void readWideNormalImpulses(SolverArrays& s, const std::vector<int>& rows) {
 }
 
 void dropWideContactImpulses(SolverArrays& s, const std::vector<char>& bad) {
-    for (WideContactBlock& k : s.wideContacts)
+    for (std::size_t i = 0; i < s.wideContacts.size(); ++i) {
+        WideContactBlock& k = s.wideContacts[i];
         for (int lane = 0; lane < 4; ++lane) {
             if (!bad[static_cast<std::size_t>(k.a[lane])] && !bad[static_cast<std::size_t>(k.b[lane])]) continue;
-            for (WideContactPoint& p : k.points)
-                p.normalImpulse[lane] = p.tangentImpulse[lane] = p.maxNormalImpulse[lane] = 0.0f;
+            for (int j = 0; j < 2; ++j)
+                k.points[j].normalImpulse[lane] = k.points[j].tangentImpulse[lane] =
+                    s.wideContactCold[i].maxNormalImpulse[j][lane] = 0.0f;
         }
+    }
 }
 
 }  // namespace i2d::detail

@@ -32,7 +32,7 @@ inline constexpr int kWideGroupsPerColour = 2;
 struct WideContactPoint {
     float rAx[4], rAy[4], rBx[4], rBy[4];
     float adjustedSeparation[4], normalMass[4], tangentMass[4];
-    float normalImpulse[4], tangentImpulse[4], maxNormalImpulse[4];
+    float normalImpulse[4], tangentImpulse[4];
 };
 
 /// A lane's flags (WideContactBlock::flags), the row's booleans.
@@ -51,19 +51,31 @@ enum WideContactFlag : std::uint32_t {
 /// through every block several times, so a block holds only what they read:
 /// the rows' softness and push cap are the step's (RowContext: every soft_step
 /// row has the same, by whether a side can move) and come with the sweep, and
-/// the booleans share one word per lane. 36 bytes fewer per contact than
-/// before (704 bytes a block then) made many_pyramids' step about a tenth
-/// faster (docs/performance.md).
+/// the booleans share one word per lane; what else a lane needs is in its
+/// WideContactCold, an array of its own beside the blocks. 480 bytes a block
+/// instead of 704 made many_pyramids' step 10 % faster and pyramid100's 4 %,
+/// bit-identical (docs/performance.md).
 struct WideContactBlock {
     int a[4], b[4];  ///< solver state indices
-    int row[4];      ///< the row in SolverArrays::constraints, −1 for an empty lane or one prepared without a row
-    int contact[4];  ///< the contact slot, −1 for an empty lane
     float nx[4], ny[4];
     float friction[4], tangentSpeed[4];
     float mA[4], iA[4], mB[4], iB[4];
     float pairScale[4];      ///< the rows' pairScale (1 unless the points are solved together)
     std::uint32_t flags[4];  ///< WideContactFlag bits
     WideContactPoint points[2];
+};
+// The sweeps' time on large scenes follows the bytes they stream (a block 160
+// bytes larger made many_pyramids' step 14 % slower): grow it only knowingly.
+static_assert(sizeof(WideContactBlock) == 480, "a wide contact block is what the sweeps stream through");
+
+/// What the sweeps do not stream through, block by block beside the blocks
+/// (SolverArrays::wideContactCold): where each lane's row and contact are, for
+/// the write-back and the store, and each point's largest normal impulse, which
+/// only the velocity-bias restitution reads (SweepParams::trackMax).
+struct WideContactCold {
+    int row[4];      ///< the row in SolverArrays::constraints, −1 for an empty lane or one prepared without a row
+    int contact[4];  ///< the contact slot, −1 for an empty lane
+    float maxNormalImpulse[2][4];
 };
 
 /// Packs the rows [start, min(start + 4, last)) of SolverArrays::constraints
@@ -74,9 +86,10 @@ void packWideContactBlock(SolverArrays& s, int block, int start, int last);
 /// with no scalar row (row −1): the lane holds what packWideContactBlock
 /// makes of the row prepareContacts writes. Writes that lane only, so the
 /// lanes may be prepared on any worker.
-void prepareWideContactLane(const WorldState& w, const RowContext& x, int contact, WideContactBlock& k, int lane);
+void prepareWideContactLane(const WorldState& w, const RowContext& x, int contact, WideContactBlock& k,
+                            WideContactCold& cold, int lane);
 /// Lane `lane` of block k empty: the zero state on both sides, no points.
-void packEmptyWideContactLane(WideContactBlock& k, int lane, int zeroState);
+void packEmptyWideContactLane(WideContactBlock& k, WideContactCold& cold, int lane, int zeroState);
 /// The accumulated impulses of blocks [firstBlock, lastBlock) into their
 /// contacts for the next step's warm start (the store of blocks without rows).
 void storeWideContacts(SolverArrays& s, SlotArray<Contact>& contacts, int firstBlock, int lastBlock);

@@ -180,8 +180,8 @@ I2D_KERNEL void solveBlock(const L& k, BodyState* states, const SweepParams& sp)
     M acts[Points];
     auto raiseMax = [&](int j, M m) {
         if (!sp.trackMax) return;
-        const V old = k.load(j, &WideContactPoint::maxNormalImpulse);
-        k.store(j, &WideContactPoint::maxNormalImpulse, select(m, maxv<V, M>(old, increment[j]), old));
+        const V old = k.loadMax(j);
+        k.storeMax(j, select(m, maxv<V, M>(old, increment[j]), old));
     };
     for (int j = 0; j < Points; ++j) {
         const V lambda = k.load(j, &WideContactPoint::normalImpulse);

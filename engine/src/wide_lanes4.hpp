@@ -15,6 +15,7 @@ struct Lanes4 {
     using V = Float4;
     using M = Mask4;
     Block* k;
+    WideContactCold* cold = nullptr;  ///< a contact block's cold part (its sweeps only)
     static V splat(float x) { return detail::splat(x); }
     V load(float (Block::*f)[4]) const { return load4(k->*f); }
     void store(float (Block::*f)[4], V x) const { store4(k->*f, x); }
@@ -23,6 +24,9 @@ struct Lanes4 {
     void store(int j, float (WideContactPoint::*f)[4], V x) const { store4(k->points[j].*f, x); }
     /// The lanes whose flags (a contact block's) have every bit of `bits`.
     M flags(std::uint32_t bits) const { return hasBits(k->flags, bits); }
+    /// A contact block's largest normal impulse of point j (WideContactCold).
+    V loadMax(int j) const { return load4(cold->maxNormalImpulse[j]); }
+    void storeMax(int j, V x) const { store4(cold->maxNormalImpulse[j], x); }
     WideBodyT<V> gather(const BodyState* states, bool sideA) const {
         const WideBody b = gatherBodies(states, sideA ? k->a : k->b);
         return {b.vx, b.vy, b.w, b.reserved, b.dpx, b.dpy, b.qc, b.qs};

@@ -126,6 +126,7 @@ void expectAgreement(int lanes) {
         onePointRowsLast(s);
         const int twoBlocks = (twoPoints + 3) / 4, oneBlocks = (n - twoPoints + 3) / 4;
         s.wideContacts.resizeForOverwrite(static_cast<std::size_t>(twoBlocks + oneBlocks));
+        s.wideContactCold.resizeForOverwrite(static_cast<std::size_t>(twoBlocks + oneBlocks));
         for (int block = 0; block < twoBlocks; ++block) packWideContactBlock(s, block, 4 * block, twoPoints);
         for (int block = 0; block < oneBlocks; ++block)
             packWideContactBlock(s, twoBlocks + block, twoPoints + 4 * block, n);
@@ -273,20 +274,27 @@ TEST(WideContact, LanesPreparedFromContactsMatchThePackedRows) {
         prepareContacts(w, h, true);
         const int blocks = (n + 3) / 4;
         s.wideContacts.resizeForOverwrite(static_cast<std::size_t>(blocks));
+        s.wideContactCold.resizeForOverwrite(static_cast<std::size_t>(blocks));
         const RowContext x = makeRowContext(w, h, true);
         for (int block = 0; block < blocks; ++block) {
             packWideContactBlock(s, block, 4 * block, n);
             WideContactBlock direct;
+            WideContactCold directCold;
             for (int lane = 0; lane < 4; ++lane) {
                 const int r = 4 * block + lane;
                 if (r < n)
-                    prepareWideContactLane(w, x, w.activeContacts[static_cast<std::size_t>(r)], direct, lane);
+                    prepareWideContactLane(w, x, w.activeContacts[static_cast<std::size_t>(r)], direct, directCold,
+                                           lane);
                 else
-                    packEmptyWideContactLane(direct, lane, x.zeroState);
+                    packEmptyWideContactLane(direct, directCold, lane, x.zeroState);
             }
-            WideContactBlock packed = s.wideContacts[static_cast<std::size_t>(block)];
-            for (int lane = 0; lane < 4; ++lane) packed.row[lane] = direct.row[lane] = 0;  // a row only when packed
+            const WideContactBlock& packed = s.wideContacts[static_cast<std::size_t>(block)];
+            WideContactCold packedCold = s.wideContactCold[static_cast<std::size_t>(block)];
+            for (int lane = 0; lane < 4; ++lane)
+                packedCold.row[lane] = directCold.row[lane] = 0;  // a row only when packed
             ASSERT_EQ(std::memcmp(&packed, &direct, sizeof(WideContactBlock)), 0)
+                << "seed " << seed << " block " << block;
+            ASSERT_EQ(std::memcmp(&packedCold, &directCold, sizeof(WideContactCold)), 0)
                 << "seed " << seed << " block " << block;
         }
     }
