@@ -28,6 +28,11 @@ inline float pairScale(const ContactConstraint& cc) {
     return coupling > 0.0f ? 1.0f / (1.0f + coupling) : 1.0f;
 }
 
+/// Whether a row pushes against a side that cannot move (a zero inverse mass):
+/// such a row takes the stiffer softness (RowContext::staticSoft), in the
+/// scalar rows and in the wide lanes' flags alike.
+inline bool againstImmovable(const ContactConstraint& cc) { return cc.invMassA == 0.0f || cc.invMassB == 0.0f; }
+
 /// How far the impact stage moved the material point of `b` that was at `p`
 /// when the step began (zero when it did not move the body).
 inline Vec2 startShift(const Body& b, std::uint32_t stepStamp, Vec2 p) {
@@ -81,7 +86,7 @@ inline bool prepareContactRow(const WorldState& w, const RowContext& x, int c, C
     cc.normal = ct.manifold.normal;
     cc.friction = ct.friction;
     cc.restitution = ct.restitution;
-    const Softness& sf = (cc.invMassA == 0.0f || cc.invMassB == 0.0f) ? x.staticSoft : x.dynamicSoft;
+    const Softness& sf = againstImmovable(cc) ? x.staticSoft : x.dynamicSoft;
     cc.biasRate = sf.biasRate;
     cc.massScale = sf.massScale;
     cc.impulseScale = sf.impulseScale;

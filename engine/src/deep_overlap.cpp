@@ -269,9 +269,9 @@ void pushDeepOverlaps(WorldState& w, float h) {
     // gravity) at most maxPushSpeed c, against it (up) at most c less its
     // speed along that acceleration, and never less than c/2; across it at
     // most kSidewaysPushFactor·c (without gravity, that in any direction).
-    // A body at rest may be pushed up at c (out of the ground under a stack of four boxes:
-    // stack5_overlap, apart in 1.8 s; at c/2 it took 2.2 s). A body of a
-    // falling pile pushed up at u while it falls at g·t gains g·u·t of
+    // A body at rest may be pushed up at c (out of the ground under a stack
+    // of four boxes: stack5_overlap, apart in 1.8 s; at c/2 it took 2.2 s).
+    // A body of a falling pile pushed up at u while it falls at g·t gains g·u·t of
     // energy per unit mass; its speed stays within what a free fall from its
     // height allows plus c at every moment iff u ≤ c/2 (at g·t = 2u its
     // height is back where it started and it falls at 2u): at c, piles of 50
@@ -292,6 +292,10 @@ void pushDeepOverlaps(WorldState& w, float h) {
     // falling in the air keeps its centre of mass), so its fall is left as
     // it is: held up there as well, the pushed-up bodies of piles created at
     // one point in the air stopped falling and rose 1 to 2.6 m.
+    auto limitTo = [](Vec2& x, float limit) {
+        const float speed = length(x);
+        if (speed > limit) x *= limit / speed;
+    };
     const std::size_t n = s.stateBodies.size();
     for (std::size_t i = 0; i < n; ++i) {
         Vec2& v = s.biasV[i];
@@ -304,12 +308,10 @@ void pushDeepOverlaps(WorldState& w, float h) {
             const float limit = cap - std::min(falling, 0.5f * cap);
             const float u = dot(v, up);
             Vec2 across = v - u * up;
-            const float acrossSpeed = length(across);
-            if (acrossSpeed > sidewaysCap) across *= sidewaysCap / acrossSpeed;
+            limitTo(across, sidewaysCap);
             v = across + clamp(u, -cap, limit) * up;
         } else {
-            const float speed = length(v);
-            if (speed > sidewaysCap) v *= sidewaysCap / speed;
+            limitTo(v, sidewaysCap);
         }
         const float speed = length(v);
         const float lift = dot(v, up) * h;

@@ -35,8 +35,7 @@ inline void packLane(WideContactBlock& k, WideContactCold& cold, int lane, const
         if (cc->roundA) flags |= kWideRoundA;
         if (cc->roundB) flags |= kWideRoundB;
         if (cc->deepOverlap) flags |= kWideDeep;
-        // The side rule of prepareContactRow's softness.
-        if (cc->invMassA == 0.0f || cc->invMassB == 0.0f) flags |= kWideImmovableSide;
+        if (againstImmovable(*cc)) flags |= kWideImmovableSide;
         if (cc->pointCount > 0) flags |= kWidePoint0;
         if (cc->pointCount > 1) flags |= kWidePoint1;
     }
