@@ -8,6 +8,7 @@
 // (2015), Constraint based physics solver, the solver's warm start.
 #include <algorithm>
 #include <cmath>
+#include <new>
 
 #include "contact_persistence.hpp"
 #include "seams.hpp"
@@ -121,20 +122,32 @@ void reportHit(WorldState& w, const Contact& ct) {
 // on it would otherwise keep going into it. A chain segment whose end judges
 // the manifold's normal a ghost drops the whole manifold (seams.cpp), so the
 // wider margin does not snag a body on the next segment's far end.
-Manifold computeManifold(const WorldState& w, const Contact& c) {
+//
+// Written into `m` in place: the narrowphase function constructs its result
+// there (a prvalue into placement new is never copied). A manifold returned
+// into a local and then copied into the contact was written in 4-byte pieces
+// and read back in 16-byte ones at once, a store-forwarding stall per
+// contact that was a quarter of the manifold update's time in rain1000.
+void computeManifold(const WorldState& w, const Contact& c, Manifold& m) {
     const Shape& sa = w.shapes[c.shapeA];
     const Shape& sb = w.shapes[c.shapeB];
     const Body& A = w.bodies[c.bodyA];
     const Body& B = w.bodies[c.bodyB];
     // Sensors report overlap only: no speculative margin.
-    if (c.isSensor) return collideOrdered(sa, A.xf, sb, B.xf, 0.0f);
+    if (c.isSensor) {
+        ::new (&m) Manifold(collideOrdered(sa, A.xf, sb, B.xf, 0.0f));
+        return;
+    }
     const float spec = w.settings.speculativeDistance;
     const float dt = w.stepDt;
     // No point of either body moves further than this within the step.
     const float bound = dt * (length(A.v) + std::abs(A.w) * std::max(A.reach, 0.0f) + length(B.v) +
                               std::abs(B.w) * std::max(B.reach, 0.0f));
-    if (!(bound > 0.0f) || !std::isfinite(bound)) return collideOrdered(sa, A.xf, sb, B.xf, spec);
-    Manifold m = collideOrdered(sa, A.xf, sb, B.xf, spec + bound);
+    if (!(bound > 0.0f) || !std::isfinite(bound)) {
+        ::new (&m) Manifold(collideOrdered(sa, A.xf, sb, B.xf, spec));
+        return;
+    }
+    ::new (&m) Manifold(collideOrdered(sa, A.xf, sb, B.xf, spec + bound));
     const Vec2 n = m.normal;  // from A to B
     int kept = 0;
     for (int i = 0; i < m.pointCount; ++i) {
@@ -151,7 +164,6 @@ Manifold computeManifold(const WorldState& w, const Contact& c) {
         ++kept;
     }
     if (kept != m.pointCount) m.pointCount = kept;  // (as above: no write when nothing moved)
-    return m;
 }
 
 /// What the narrowphase found for one contact (updateManifold).
@@ -176,9 +188,16 @@ Update updateManifold(WorldState& w, int c) {
     // so the impulses carry over below; contact_persistence.hpp). The game's
     // callbacks see it like any other.
     const bool reused = ct.touching && reuseManifold(ct, bodyA, bodyB, w.settings.manifoldReuseDistance);
-    Manifold m = reused ? ct.manifold : computeManifold(w, ct);
+    // The last manifold's feature ids, for the impulses carried over below;
+    // the new manifold is computed into the contact (computeManifold).
+    const int lastCount = ct.manifold.pointCount;
+    const std::uint16_t lastIds[2] = {ct.manifold.points[0].id, ct.manifold.points[1].id};
+    Manifold& m = ct.manifold;
     // Seam ghosts were dropped when a kept manifold was computed.
-    if (!reused) dropSeamGhosts(w, ct, m);
+    if (!reused) {
+        computeManifold(w, ct, m);
+        dropSeamGhosts(w, ct, m);
+    }
     // The game's pre-solve callback may switch a touching contact off for
     // this step (a one-way platform): it then has no points, no row, and
     // counts as not touching.
@@ -194,8 +213,8 @@ Update updateManifold(WorldState& w, int c) {
         // Warm start: carry impulses over by feature id.
         float ni[2] = {0.0f, 0.0f}, ti[2] = {0.0f, 0.0f};
         for (int i = 0; i < m.pointCount; ++i) {
-            for (int j = 0; j < ct.manifold.pointCount; ++j) {
-                if (ct.manifold.points[j].id == m.points[i].id) {
+            for (int j = 0; j < lastCount; ++j) {
+                if (lastIds[j] == m.points[i].id) {
                     ni[i] = ct.normalImpulse[j];
                     ti[i] = ct.tangentImpulse[j];
                     break;
@@ -207,7 +226,6 @@ Update updateManifold(WorldState& w, int c) {
             ct.tangentImpulse[i] = ti[i];
         }
     }
-    ct.manifold = m;
     if (!reused) {
         ct.framed = false;
         if (!ct.isSensor && canPersist(a, b)) recordManifoldFrame(ct, bodyA, bodyB);
