@@ -31,7 +31,8 @@ inline float pairScale(const ContactConstraint& cc) {
 /// Whether a row pushes against a side that cannot move (a zero inverse mass):
 /// such a row takes the stiffer softness (RowContext::staticSoft), in the
 /// scalar rows and in the wide lanes' flags alike.
-inline bool againstImmovable(const ContactConstraint& cc) { return cc.invMassA == 0.0f || cc.invMassB == 0.0f; }
+inline bool againstImmovable(float invMassA, float invMassB) { return invMassA == 0.0f || invMassB == 0.0f; }
+inline bool againstImmovable(const ContactConstraint& cc) { return againstImmovable(cc.invMassA, cc.invMassB); }
 
 /// How far the impact stage moved the material point of `b` that was at `p`
 /// when the step began (zero when it did not move the body).

@@ -5,6 +5,7 @@
 // results (tests/unit/test_float4.cpp checks the scalar path against SSE2).
 #pragma once
 
+#include <cmath>
 #include <cstdint>
 
 #if defined(__SSE2__) && !defined(I2D_SCALAR_FLOAT4)
@@ -27,6 +28,8 @@ inline Float4 operator-(Float4 a, Float4 b) { return {_mm_sub_ps(a.v, b.v)}; }
 inline Float4 operator*(Float4 a, Float4 b) { return {_mm_mul_ps(a.v, b.v)}; }
 inline Float4 operator/(Float4 a, Float4 b) { return {_mm_div_ps(a.v, b.v)}; }
 inline Float4 operator-(Float4 a) { return {_mm_xor_ps(a.v, _mm_set1_ps(-0.0f))}; }
+/// √a, correctly rounded as std::sqrt is.
+inline Float4 sqrt4(Float4 a) { return {_mm_sqrt_ps(a.v)}; }
 /// b where a ≠ 0, else 0 (a division guarded against a singular lane).
 inline Float4 whereNonZero(Float4 a, Float4 b) { return {_mm_and_ps(_mm_cmpneq_ps(a.v, _mm_setzero_ps()), b.v)}; }
 /// Transposes four rows of four floats in place (rows become columns).
@@ -82,6 +85,9 @@ inline Float4 operator/(Float4 a, Float4 b) {
 }
 inline Float4 operator-(Float4 a) {
     return lanewise(a, a, [](float x, float) { return -x; });
+}
+inline Float4 sqrt4(Float4 a) {
+    return lanewise(a, a, [](float x, float) { return std::sqrt(x); });
 }
 inline Float4 whereNonZero(Float4 a, Float4 b) {
     return lanewise(a, b, [](float x, float y) { return x != 0.0f ? y : 0.0f; });

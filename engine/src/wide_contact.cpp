@@ -5,7 +5,10 @@
 // write-back and store of the impulses.
 #include "wide_contact.hpp"
 
+#include <algorithm>
+
 #include "contact_row.hpp"
+#include "float4.hpp"
 #include "solver.hpp"
 #include "wide_contact_kernel.hpp"
 #include "wide_lanes4.hpp"
@@ -67,14 +70,121 @@ void packWideContactBlock(SolverArrays& s, int block, int start, int last) {
     }
 }
 
-void prepareWideContactLane(const WorldState& w, const RowContext& x, int contact, WideContactBlock& k,
-                            WideContactCold& cold, int lane) {
-    // The scalar row's own preparation, on the stack: the lane holds exactly
-    // what packing that row would have given.
-    ContactConstraint cc;
-    prepareContactRow(w, x, contact, cc);
-    finishContactRow(x, w.settings.penetrationSlop, cc);
-    packLane(k, cold, lane, &cc, -1, x.zeroState);
+void prepareWideContactLanes(const WorldState& w, const RowContext& x, const WideLaneTarget* targets, int count) {
+    // What each lane reads of its contact and bodies, one lane at a time, as
+    // prepareContactRow reads it; unused lanes stay zero (their results are
+    // not written).
+    alignas(16) float nx[4]{}, ny[4]{}, mA[4]{}, iA[4]{}, mB[4]{}, iB[4]{}, biasRate[4]{};
+    alignas(16) float rAx[2][4]{}, rAy[2][4]{}, rBx[2][4]{}, rBy[2][4]{}, separation[2][4]{};
+    int a[4]{}, b[4]{}, pointCount[4]{};
+    float friction[4]{}, tangentSpeed[4]{}, normalImpulse[2][4]{}, tangentImpulse[2][4]{};
+    std::uint32_t flags[4]{};
+    for (int i = 0; i < count; ++i) {
+        const int c = targets[i].contact;
+        const Contact& ct = w.contacts[c];
+        const Body& bA = w.bodies[ct.bodyA];
+        const Body& bB = w.bodies[ct.bodyB];
+        RowBodies rb;
+        contactRowBodies(ct, bA, bB, x.zeroState, rb);
+        a[i] = rb.a, b[i] = rb.b;
+        mA[i] = rb.invMassA, iA[i] = rb.invIA, mB[i] = rb.invMassB, iB[i] = rb.invIB;
+        const Vec2 n = ct.manifold.normal;
+        nx[i] = n.x, ny[i] = n.y;
+        friction[i] = ct.friction;
+        const ContactSurface* surface = contactSurface(w, c);
+        tangentSpeed[i] = surface ? surface->tangentSpeed : 0.0f;
+        const bool immovable = againstImmovable(rb.invMassA, rb.invMassB);
+        biasRate[i] = (immovable ? x.staticSoft : x.dynamicSoft).biasRate;
+        std::uint32_t f = immovable ? kWideImmovableSide : 0u;
+        if (ct.roundA) f |= kWideRoundA;
+        if (ct.roundB) f |= kWideRoundB;
+        pointCount[i] = ct.manifold.pointCount;
+        for (int j = 0; j < pointCount[i]; ++j) {
+            const ManifoldPoint& mp = ct.manifold.points[j];
+            if (mp.separation < -kDeepOverlap) f |= kWideDeep;
+            f |= j == 0 ? kWidePoint0 : kWidePoint1;
+            Vec2 rA, rB;
+            contactArms(ct, bA, bB, j, rA, rB);
+            rAx[j][i] = rA.x, rAy[j][i] = rA.y, rBx[j][i] = rB.x, rBy[j][i] = rB.y;
+            separation[j][i] = mp.separation + impactShift(w, c, bA, bB, mp.point, n);
+            normalImpulse[j][i] = x.warm * ct.normalImpulse[j];
+            tangentImpulse[j][i] = x.warm * ct.tangentImpulse[j];
+        }
+        flags[i] = f;
+    }
+    // The arithmetic of prepareContactRow and finishContactRow (soft_step),
+    // four lanes at once, in the same order: the bits are the scalar row's.
+    const Float4 zero = splat(0.0f), one = splat(1.0f);
+    const Float4 n_x = load4(nx), n_y = load4(ny), t_x = n_y, t_y = -n_x;  // t = rightPerp(n)
+    const Float4 invMassA = load4(mA), invIA = load4(iA), invMassB = load4(mB), invIB = load4(iB);
+    const Float4 mAB = invMassA + invMassB;
+    Float4 kn[2], rnA[2], rnB[2], normalMass[2] = {zero, zero}, tangentMass[2] = {zero, zero};
+    Float4 adjusted[2] = {zero, zero};
+    Float4 deepest = zero;
+    // Lanes of one point each (circles) skip the second point's arithmetic.
+    const int points = std::max(std::max(pointCount[0], pointCount[1]), std::max(pointCount[2], pointCount[3]));
+    for (int j = 0; j < points; ++j) {
+        const Float4 ax = load4(rAx[j]), ay = load4(rAy[j]), bx = load4(rBx[j]), by = load4(rBy[j]);
+        rnA[j] = ax * n_y - ay * n_x;  // cross(rA, n)
+        rnB[j] = bx * n_y - by * n_x;
+        kn[j] = mAB + invIA * rnA[j] * rnA[j] + invIB * rnB[j] * rnB[j];
+        normalMass[j] = select(kn[j] > zero, one / kn[j], zero);
+        const Float4 rtA = ax * t_y - ay * t_x, rtB = bx * t_y - by * t_x;
+        const Float4 kt = mAB + invIA * rtA * rtA + invIB * rtB * rtB;
+        tangentMass[j] = select(kt > zero, one / kt, zero);
+        const Float4 arm = (bx - ax) * n_x + (by - ay) * n_y;  // dot(rB − rA, n)
+        adjusted[j] = load4(separation[j]) - arm;
+        const std::uint32_t bit = j == 0 ? kWidePoint0 : kWidePoint1;
+        deepest = select(hasBits(flags, bit), min4(deepest, adjusted[j] + arm), deepest);
+    }
+    // pointsTogether and pairScale (finishContactRow, pairScale): K11 and K22
+    // are the two points' normal denominators.
+    Float4 pairScale = one, togetherLanes = zero;
+    if (points == 2) {
+        const Float4 push = (-load4(biasRate)) * deepest;
+        const Mask4 together = hasBits(flags, kWidePoint1) & (push < splat(w.settings.maxPushSpeed));
+        const Float4 k12 = mAB + invIA * rnA[0] * rnA[1] + invIB * rnB[0] * rnB[1];
+        const Mask4 positive = (kn[0] > zero) & (kn[1] > zero);
+        const Float4 coupling = select(positive, k12 / sqrt4(kn[0] * kn[1]), zero);
+        pairScale = select(together & (coupling > zero), one / (one + coupling), one);
+        togetherLanes = select(together, one, zero);
+    }
+    alignas(16) float outNormalMass[2][4], outTangentMass[2][4], outAdjusted[2][4], outPairScale[4];
+    alignas(16) float outTogether[4];
+    for (int j = 0; j < 2; ++j) {
+        store4(outNormalMass[j], normalMass[j]);
+        store4(outTangentMass[j], tangentMass[j]);
+        store4(outAdjusted[j], adjusted[j]);
+    }
+    store4(outPairScale, pairScale);
+    store4(outTogether, togetherLanes);
+    // Each lane to its block, every field written (as packLane).
+    for (int i = 0; i < count; ++i) {
+        WideContactBlock& k = *targets[i].block;
+        WideContactCold& cold = *targets[i].cold;
+        const int lane = targets[i].lane;
+        k.a[lane] = a[i];
+        k.b[lane] = b[i];
+        cold.row[lane] = -1;
+        cold.contact[lane] = targets[i].contact;
+        k.nx[lane] = nx[i], k.ny[lane] = ny[i];
+        k.friction[lane] = friction[i];
+        k.tangentSpeed[lane] = tangentSpeed[i];
+        k.mA[lane] = mA[i], k.iA[lane] = iA[i], k.mB[lane] = mB[i], k.iB[lane] = iB[i];
+        k.pairScale[lane] = outPairScale[i];
+        k.flags[lane] = flags[i] | (outTogether[i] != 0.0f ? kWideTogether : 0u);
+        for (int j = 0; j < 2; ++j) {
+            WideContactPoint& p = k.points[j];
+            const bool present = j < pointCount[i];
+            p.rAx[lane] = rAx[j][i], p.rAy[lane] = rAy[j][i], p.rBx[lane] = rBx[j][i], p.rBy[lane] = rBy[j][i];
+            p.adjustedSeparation[lane] = present ? outAdjusted[j][i] : 0.0f;
+            p.normalMass[lane] = present ? outNormalMass[j][i] : 0.0f;
+            p.tangentMass[lane] = present ? outTangentMass[j][i] : 0.0f;
+            p.normalImpulse[lane] = normalImpulse[j][i];
+            p.tangentImpulse[lane] = tangentImpulse[j][i];
+            cold.maxNormalImpulse[j][lane] = 0.0f;
+        }
+    }
 }
 
 void packEmptyWideContactLane(WideContactBlock& k, WideContactCold& cold, int lane, int zeroState) {

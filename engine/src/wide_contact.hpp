@@ -82,12 +82,21 @@ struct WideContactCold {
 /// (of one colour, which ends at `last`) into block `block` of
 /// s.wideContacts (sized by the caller), every field written.
 void packWideContactBlock(SolverArrays& s, int block, int start, int last);
-/// Prepares lane `lane` of block k straight from contact slot `contact`,
-/// with no scalar row (row −1): the lane holds what packWideContactBlock
-/// makes of the row prepareContacts writes. Writes that lane only, so the
-/// lanes may be prepared on any worker.
-void prepareWideContactLane(const WorldState& w, const RowContext& x, int contact, WideContactBlock& k,
-                            WideContactCold& cold, int lane);
+/// Where one contact's lane goes (prepareWideContactLanes).
+struct WideLaneTarget {
+    int contact;  ///< contact slot
+    WideContactBlock* block;
+    WideContactCold* cold;
+    int lane;
+};
+/// Prepares `count` (at most 4) lanes straight from their contacts, with no
+/// scalar row (row −1), soft_step only: each lane holds what
+/// packWideContactBlock makes of the row prepareContacts writes. The contacts
+/// are read one by one, the arithmetic of prepareContactRow and
+/// finishContactRow runs in the lanes of Float4 in the same order, so the
+/// bits are the scalar row's. Writes those lanes only, so lanes may be
+/// prepared on any worker.
+void prepareWideContactLanes(const WorldState& w, const RowContext& x, const WideLaneTarget* targets, int count);
 /// Lane `lane` of block k empty: the zero state on both sides, no points.
 void packEmptyWideContactLane(WideContactBlock& k, WideContactCold& cold, int lane, int zeroState);
 /// The accumulated impulses of blocks [firstBlock, lastBlock) into their

@@ -211,11 +211,16 @@ TEST(WideContact, AgreesBitForBitWithTheScalarRowsInEightLanes) {
 }
 
 // The soft step with closed-form impacts prepares each lane straight from its
-// contact (prepareWideContactLane), without a scalar row: every lane must hold
-// the same bits as the row prepareContacts writes, packed.
+// contact, four at a time (prepareWideContactLanes), without a scalar row:
+// every lane must hold the same bits as the row prepareContacts writes, packed.
 TEST(WideContact, LanesPreparedFromContactsMatchThePackedRows) {
     for (unsigned seed = 1; seed <= 20; ++seed) {
         WorldState w({}, 1);
+        // Every other seed, the impact stage has moved some bodies' starts
+        // this step (impactShift), so the rows' separations carry shifts.
+        const bool shifted = seed % 2 == 0;
+        w.stepStamp = 7;
+        if (shifted) w.startsShiftedAt = w.stepStamp;
         std::mt19937 rng(seed);
         std::uniform_real_distribution<float> u(-1.0f, 1.0f), m(0.05f, 3.0f), unit(0.0f, 1.0f);
         const int bodyCount = 16;
@@ -231,6 +236,13 @@ TEST(WideContact, LanesPreparedFromContactsMatchThePackedRows) {
             b.v = {3.0f * u(rng), 3.0f * u(rng)};
             b.w = 3.0f * u(rng);
             b.solverIndex = moves ? awake++ : kNullIndex;
+            if (shifted && moves && i % 3 == 0) {
+                b.startStamp = w.stepStamp;
+                b.startCenter = b.center + Vec2{0.05f * u(rng), 0.05f * u(rng)};
+                const float turn = 0.1f * u(rng);
+                b.startQ = {std::cos(turn), std::sin(turn)};
+                b.xf.q = {std::cos(2.0f * turn), std::sin(2.0f * turn)};
+            }
         }
         SolverArrays& s = w.solver;
         s.states.assign(static_cast<std::size_t>(awake) + 1, BodyState{});
@@ -264,6 +276,10 @@ TEST(WideContact, LanesPreparedFromContactsMatchThePackedRows) {
                 ct.frame.anchorA[1] = {u(rng), u(rng)};
             }
             w.activeContacts.push_back(c);
+            if (shifted) {  // some contacts struck by the impact stage (a rebound time), some not
+                w.impactTime.resize(static_cast<std::size_t>(c) + 1, -1.0f);
+                w.impactTime[static_cast<std::size_t>(c)] = unit(rng) < 0.5f ? 0.01f * unit(rng) : -1.0f;
+            }
         }
         // One colour holding every row, in contact order.
         s.rowCount = n;
@@ -278,23 +294,33 @@ TEST(WideContact, LanesPreparedFromContactsMatchThePackedRows) {
         const RowContext x = makeRowContext(w, h, true);
         for (int block = 0; block < blocks; ++block) {
             packWideContactBlock(s, block, 4 * block, n);
-            WideContactBlock direct;
-            WideContactCold directCold;
-            for (int lane = 0; lane < 4; ++lane) {
+            // The lanes in reverse order, in calls of 1 to 4 contacts, so each
+            // lane's result must not depend on its neighbours.
+            WideContactBlock grouped;
+            WideContactCold groupedCold;
+            const int chunk = 1 + block % 4;
+            WideLaneTarget targets[4];
+            int pending = 0;
+            for (int lane = 3; lane >= 0; --lane) {
                 const int r = 4 * block + lane;
-                if (r < n)
-                    prepareWideContactLane(w, x, w.activeContacts[static_cast<std::size_t>(r)], direct, directCold,
-                                           lane);
-                else
-                    packEmptyWideContactLane(direct, directCold, lane, x.zeroState);
+                if (r >= n) {
+                    packEmptyWideContactLane(grouped, groupedCold, lane, x.zeroState);
+                    continue;
+                }
+                targets[pending++] = {w.activeContacts[static_cast<std::size_t>(r)], &grouped, &groupedCold, lane};
+                if (pending == chunk) {
+                    prepareWideContactLanes(w, x, targets, pending);
+                    pending = 0;
+                }
             }
+            if (pending > 0) prepareWideContactLanes(w, x, targets, pending);
             const WideContactBlock& packed = s.wideContacts[static_cast<std::size_t>(block)];
             WideContactCold packedCold = s.wideContactCold[static_cast<std::size_t>(block)];
             for (int lane = 0; lane < 4; ++lane)
-                packedCold.row[lane] = directCold.row[lane] = 0;  // a row only when packed
-            ASSERT_EQ(std::memcmp(&packed, &direct, sizeof(WideContactBlock)), 0)
+                packedCold.row[lane] = groupedCold.row[lane] = 0;  // a row only when packed
+            ASSERT_EQ(std::memcmp(&packed, &grouped, sizeof(WideContactBlock)), 0)
                 << "seed " << seed << " block " << block;
-            ASSERT_EQ(std::memcmp(&packedCold, &directCold, sizeof(WideContactCold)), 0)
+            ASSERT_EQ(std::memcmp(&packedCold, &groupedCold, sizeof(WideContactCold)), 0)
                 << "seed " << seed << " block " << block;
         }
     }
