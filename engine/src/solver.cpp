@@ -96,21 +96,31 @@ constexpr int kPrepareGrain = 128;  ///< contacts per chunk when rows are prepar
 
 constexpr std::uint8_t kKeyRow = 1, kKeyMoveA = 2, kKeyMoveB = 4, kKeyOnePoint = 8, kKeyDeep = 16, kKeyRolling = 32;
 
-ColourKey colourKey(const WorldState& w, int contact, int zeroState, std::size_t bodyCount) {
-    RowBodies rb;
+ColourKey colourKey(const WorldState& w, int contact, int zeroState) {
     const Contact& ct = w.contacts[contact];
-    if (!contactRowBodies(ct, w.bodies[ct.bodyA], w.bodies[ct.bodyB], zeroState, rb)) return {0, 0, 0};
+    // Whether the contact has a row: contactRowBodies's test, from the
+    // contact and SolverArrays::bodyMoves (the bodies are not read: in a
+    // large scene each was a cache miss, a fifth of the colouring's time).
+    if (!ct.touching || ct.isSensor || ct.manifold.pointCount == 0) return {0, 0, 0};
+    const std::vector<std::uint8_t>& moves = w.solver.bodyMoves;
+    const bool moveA = moves[static_cast<std::size_t>(ct.bodyA)] != 0;
+    const bool moveB = moves[static_cast<std::size_t>(ct.bodyB)] != 0;
+    if (!moveA && !moveB) return {0, 0, 0};
     std::uint8_t flags = kKeyRow;
+    if (moveA) flags |= kKeyMoveA;
+    if (moveB) flags |= kKeyMoveB;
     // What decides the rows' path before any is prepared: the same tests as
     // prepareContacts' and prepareRollingResistance's.
     for (int j = 0; j < ct.manifold.pointCount; ++j)
         if (ct.manifold.points[j].separation < -kDeepOverlap) flags |= kKeyDeep;
     const ContactSurface* surface = contactSurface(w, contact);
-    if (surface && surface->rollingResistance > 0.0f && !(rb.invIA + rb.invIB <= 0.0f)) flags |= kKeyRolling;
-    if (static_cast<std::size_t>(rb.a) < bodyCount && (rb.invMassA != 0.0f || rb.invIA != 0.0f)) flags |= kKeyMoveA;
-    if (static_cast<std::size_t>(rb.b) < bodyCount && (rb.invMassB != 0.0f || rb.invIB != 0.0f)) flags |= kKeyMoveB;
+    if (surface && surface->rollingResistance > 0.0f) {
+        RowBodies rb;
+        contactRowBodies(ct, w.bodies[ct.bodyA], w.bodies[ct.bodyB], zeroState, rb);
+        if (!(rb.invIA + rb.invIB <= 0.0f)) flags |= kKeyRolling;
+    }
     if (ct.manifold.pointCount == 1) flags |= kKeyOnePoint;
-    return {rb.a, rb.b, flags};
+    return {ct.bodyA, ct.bodyB, flags};
 }
 
 /// Colours the rows of this step's active contacts (greedy, in activeContacts
@@ -123,11 +133,10 @@ ColourKey colourKey(const WorldState& w, int contact, int zeroState, std::size_t
 void colourContacts(WorldState& w) {
     SolverArrays& s = w.solver;
     const std::size_t count = w.activeContacts.size();
-    const std::size_t bodyCount = s.stateBodies.size();
     const int zeroState = static_cast<int>(s.states.size()) - 1;
-    // Per state: bit c set once the body has a row of colour c.
+    // Per body slot: bit c set once the body has a row of colour c (all
+    // zero here: gatherBodies).
     std::vector<std::uint32_t>& masks = s.contactColourMasks;
-    masks.assign(bodyCount, 0u);
     s.colourOffsets.assign(kRowGroupCount + 1, 0);
     s.contactColours.resize(count);
     // On one worker the keys are found as the greedy pass goes (no array to
@@ -139,14 +148,14 @@ void colourContacts(WorldState& w) {
         auto findKeys = [&](int first, int last) {
             for (int k = first; k < last; ++k)
                 keys[static_cast<std::size_t>(k)] = colourKey(w, w.activeContacts[static_cast<std::size_t>(k)],
-                                                              zeroState, bodyCount);
+                                                              zeroState);
         };
         w.runner.run(static_cast<int>(count), kPrepareGrain, findKeys);
     }
     int rows = 0;
     std::uint8_t any = 0;
     for (std::size_t i = 0; i < count; ++i) {
-        const ColourKey key = shared ? keys[i] : colourKey(w, w.activeContacts[i], zeroState, bodyCount);
+        const ColourKey key = shared ? keys[i] : colourKey(w, w.activeContacts[i], zeroState);
         if (!(key.flags & kKeyRow)) {
             s.contactColours[i] = kNoRow;
             continue;
@@ -328,7 +337,7 @@ inline void payPushLift(const SolverArrays& s, std::size_t i, BodyState& st, Vec
     if (!(v < 0.0f) || !(st.upBeforeRelax > v)) return;  // not falling, or not pushed up
     const float lift = h * (st.upBeforeRelax - v);
     const float gravity = -dot(a, up);
-    if (!(gravity > 0.0f) || s.contactColourMasks[i] == 0) return;
+    if (!(gravity > 0.0f) || s.contactColourMasks[static_cast<std::size_t>(s.stateBodies[i])] == 0) return;
     st.v += fallPaidForLift(-v, gravity, lift) * up;
 }
 
@@ -471,6 +480,7 @@ void gatherBodyRange(WorldState& w, float h, Vec2 g, int first, int last) {
         const int b = awake[i];
         Body& body = w.bodies[b];
         body.solverIndex = static_cast<int>(i);
+        s.bodyMoves[static_cast<std::size_t>(b)] = body.invMass != 0.0f || body.invInertia != 0.0f;
         s.stateBodies[i] = b;
         BodyState& st = s.states[i];
         st.v = body.v;
@@ -496,6 +506,15 @@ void gatherBodies(WorldState& w, float h) {
     const Vec2 g = w.settings.gravity;
     s.states.resize(n + 1);
     s.states[n] = BodyState{};  // the zero state for immovable sides of contacts
+    // The per-slot arrays are zero but at the last step's states (their only
+    // writers); cleared there, not over every slot, so that sleeping and
+    // static bodies cost nothing.
+    for (const int b : s.stateBodies) {
+        s.bodyMoves[static_cast<std::size_t>(b)] = 0;
+        s.contactColourMasks[static_cast<std::size_t>(b)] = 0;
+    }
+    s.bodyMoves.resize(w.bodies.items.size(), 0);
+    s.contactColourMasks.resize(w.bodies.items.size(), 0u);
     s.integration.resize(n);
     s.stateBodies.resize(n);
     auto range = [&](int first, int last) { gatherBodyRange(w, h, g, first, last); };
@@ -689,7 +708,14 @@ void releaseLargeStepArrays(WorldState& w) {
     SolverArrays& s = w.solver;
     releaseIfLarge(s.states);
     releaseIfLarge(s.integration);
-    releaseIfLarge(s.stateBodies);
+    // bodyMoves and contactColourMasks are cleared at the slots of
+    // stateBodies (gatherBodies): released with it, or not at all.
+    if (s.stateBodies.capacity() * sizeof(int) > kKeptScratchBytes ||
+        s.contactColourMasks.capacity() * sizeof(std::uint32_t) > kKeptScratchBytes) {
+        std::vector<int>().swap(s.stateBodies);
+        std::vector<std::uint8_t>().swap(s.bodyMoves);
+        std::vector<std::uint32_t>().swap(s.contactColourMasks);
+    }
     releaseIfLarge(s.biasV);
     releaseIfLarge(s.biasW);
     releaseIfLarge(s.constraints);
@@ -698,7 +724,6 @@ void releaseLargeStepArrays(WorldState& w) {
     releaseIfLarge(s.rowContacts);
     releaseIfLarge(s.contactColours);
     releaseIfLarge(s.colourKeys);
-    releaseIfLarge(s.contactColourMasks);
     releaseIfLarge(s.deepContactCount);
     releaseIfLarge(w.activeContacts);
     releaseIfLarge(w.gatherScratch);

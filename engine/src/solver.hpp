@@ -18,9 +18,9 @@ namespace i2d::detail {
 struct WorldState;
 
 /// What the greedy colouring needs of one active contact, found on every
-/// worker (solver.cpp, colourContacts): its row's state indices, and flags.
+/// worker (solver.cpp, colourContacts): its bodies, and flags.
 struct ColourKey {
-    int a, b;  ///< state indices
+    int a, b;  ///< body slots
     std::uint8_t flags;
 };
 
@@ -35,10 +35,14 @@ struct SolverArrays {
     ScratchArray<ContactConstraint> constraints;    ///< in colour order (solver.cpp)
     std::vector<std::uint8_t> contactColours;       ///< per active contact: its row's group (solver.cpp), or kNoRow
     std::vector<int> colourOffsets;                 ///< per row group: its first row (advanced as rows are placed)
-    std::vector<std::uint32_t> contactColourMasks;  ///< per state: the colours of its contact rows (solver.cpp)
-    std::vector<ColourKey> colourKeys;              ///< per active contact (solver.cpp)
-    int rowCount = 0;                               ///< contact rows this step
-    std::vector<JointSlot> jointSlots;              ///< every joint with an awake body, in the world's order
+    std::vector<std::uint32_t> contactColourMasks;  ///< per body slot: the colours of its contact rows (solver.cpp)
+    /// Per body slot: 1 for a body of this step's states that moves under an
+    /// impulse (a non-zero inverse mass or inertia), what the colouring reads
+    /// instead of the bodies themselves.
+    std::vector<std::uint8_t> bodyMoves;
+    std::vector<ColourKey> colourKeys;    ///< per active contact (solver.cpp)
+    int rowCount = 0;                     ///< contact rows this step
+    std::vector<JointSlot> jointSlots;    ///< every joint with an awake body, in the world's order
     std::vector<JointConstraint> joints;  ///< rows of the slots not solved wide, in slot order (joint_solver.cpp)
     std::vector<int> jointScratch;        ///< the row of each slot while the order is built
     std::vector<int> jointOrder;          ///< by colour: rows, then each colour's wide slots
