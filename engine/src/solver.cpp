@@ -100,7 +100,8 @@ ColourKey colourKey(const WorldState& w, int contact, int zeroState) {
     const Contact& ct = w.contacts[contact];
     // Whether the contact has a row: contactRowBodies's test, from the
     // contact and SolverArrays::bodyMoves (the bodies are not read: in a
-    // large scene each was a cache miss, a fifth of the colouring's time).
+    // large scene each was a cache miss; many_pyramids' colouring took 0.86
+    // to 0.90 ms reading them, 0.54 to 0.59 without).
     if (!ct.touching || ct.isSensor || ct.manifold.pointCount == 0) return {0, 0, 0};
     const std::vector<std::uint8_t>& moves = w.solver.bodyMoves;
     const bool moveA = moves[static_cast<std::size_t>(ct.bodyA)] != 0;
