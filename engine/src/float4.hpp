@@ -2,7 +2,8 @@
 // portable scalar path elsewhere or with I2D_SCALAR_FLOAT4 defined. Only
 // IEEE-exact operations (+, −, ×, ÷, comparisons, selects) are offered and the
 // engine is built without FMA contraction, so both paths give bit-identical
-// results (tests/unit/test_float4.cpp checks the scalar path against SSE2).
+// results (tests/unit/test_wide_contact.cpp holds the wide rows to the scalar
+// ones on either path; the asan-engine preset builds the portable one).
 #pragma once
 
 #include <cmath>
@@ -48,6 +49,8 @@ inline Mask4 hasBits(const std::uint32_t* p, std::uint32_t bits) {
     const __m128i f = _mm_and_si128(_mm_loadu_si128(reinterpret_cast<const __m128i*>(p)), b);
     return {_mm_castsi128_ps(_mm_cmpeq_epi32(f, b))};
 }
+/// Bit k set where lane k holds.
+inline int laneBits(Mask4 a) { return _mm_movemask_ps(a.m); }
 inline Mask4 operator&(Mask4 a, Mask4 b) { return {_mm_and_ps(a.m, b.m)}; }
 inline Mask4 operator|(Mask4 a, Mask4 b) { return {_mm_or_ps(a.m, b.m)}; }
 /// a and not b.
@@ -122,6 +125,7 @@ inline Mask4 nonZero(Float4 a) {
 inline Mask4 hasBits(const std::uint32_t* p, std::uint32_t bits) {
     return {{(p[0] & bits) == bits, (p[1] & bits) == bits, (p[2] & bits) == bits, (p[3] & bits) == bits}};
 }
+inline int laneBits(Mask4 a) { return int(a.m[0]) | int(a.m[1]) << 1 | int(a.m[2]) << 2 | int(a.m[3]) << 3; }
 inline Mask4 operator&(Mask4 a, Mask4 b) {
     return {{a.m[0] && b.m[0], a.m[1] && b.m[1], a.m[2] && b.m[2], a.m[3] && b.m[3]}};
 }
