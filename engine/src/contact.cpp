@@ -11,6 +11,7 @@
 #include <new>
 
 #include "contact_persistence.hpp"
+#include "impact_stage.hpp"
 #include "seams.hpp"
 #include "world_state.hpp"
 
@@ -236,6 +237,9 @@ Update updateManifold(WorldState& w, int c) {
     return touching ? Update::touching : Update::apart;
 }
 
+/// Whether the contact touches once `update` is applied (applyUpdate).
+constexpr bool touchingAfter(Update update) { return update == Update::kept || update == Update::touching; }
+
 /// The rest of a contact's update, on the stepping thread in slot order:
 /// destroys a contact whose boxes parted (false), reports hits, begin and
 /// end events, and wakes what a new touch reaches.
@@ -401,9 +405,27 @@ void collide(WorldState& w) {
     scratch.reserve(static_cast<std::size_t>(w.contacts.count));
     std::vector<std::uint8_t>& updates = w.collideUpdates;
     updates.clear();
-    // A narrowphase with enough contacts is shared with the task system's
-    // workers, when the step has them (stage_runner.hpp); the result is the same.
-    w.runner.share(w.contacts.count >= kParallelWork);
+    // The impact stage's first look at each active contact, taken with its
+    // manifold (passesOverImpacts): per gathered contact, then per active one.
+    // Velocity-bias impacts have no impact stage: no look.
+    std::vector<ImpactLook>& gatheredLooks = w.collideLooks;
+    gatheredLooks.clear();
+    w.impactLooks.clear();
+    w.impactLooks.reserve(static_cast<std::size_t>(w.contacts.count));
+    const bool lookNeeded = w.settings.impactModel == ImpactModel::closed_form;
+    // Written field by field into its place: returned as a whole, it was
+    // written in 4-byte pieces and read back in 8-byte ones, a stall on store
+    // forwarding per contact.
+    auto look = [&](int c, Update update, ImpactLook& out) {
+        const Contact& ct = w.contacts[c];
+        out.bodyA = ct.bodyA;
+        out.bodyB = ct.bodyB;
+        out.passOver = !lookNeeded || passesOverImpacts(w, ct, touchingAfter(update));
+    };
+    auto keep = [&](int c, const ImpactLook& first) {
+        w.activeContacts.push_back(c);
+        w.impactLooks.push_back(first);
+    };
     // With no island asleep every contact has an awake body (a contact needs
     // a body that can move, and a disabled body keeps none): the round is
     // every live contact, in slot order, read off the slots without walking
@@ -447,7 +469,10 @@ void collide(WorldState& w) {
             // contact in slot order, each seeing the updates before it.
             for (; processed < scratch.size(); ++processed) {
                 const int c = scratch[processed];
-                if (applyUpdate(w, c, updateManifold(w, c))) w.activeContacts.push_back(c);
+                const Update update = updateManifold(w, c);
+                ImpactLook first;
+                look(c, update, first);
+                if (applyUpdate(w, c, update)) keep(c, first);
             }
             continue;
         }
@@ -457,15 +482,21 @@ void collide(WorldState& w) {
         const std::size_t roundEnd = scratch.size();
         const int count = static_cast<int>(roundEnd - processed);
         updates.resize(roundEnd);
+        gatheredLooks.resize(roundEnd);
         const int* round = scratch.data() + processed;
         std::uint8_t* results = updates.data() + processed;
+        ImpactLook* looks = gatheredLooks.data() + processed;
         auto manifolds = [&](int b, int e) {
-            for (int i = b; i < e; ++i) results[i] = static_cast<std::uint8_t>(updateManifold(w, round[i]));
+            for (int i = b; i < e; ++i) {
+                const Update update = updateManifold(w, round[i]);
+                results[i] = static_cast<std::uint8_t>(update);
+                look(round[i], update, looks[i]);
+            }
         };
         w.runner.run(count, kCollideGrain, manifolds);
         for (; processed < roundEnd; ++processed) {
             const int c = scratch[processed];
-            if (applyUpdate(w, c, static_cast<Update>(updates[processed]))) w.activeContacts.push_back(c);
+            if (applyUpdate(w, c, static_cast<Update>(updates[processed]))) keep(c, gatheredLooks[processed]);
         }
     }
 }

@@ -820,6 +820,7 @@ void releaseLargeStepArrays(WorldState& w) {
     releaseIfLarge(w.activeContacts);
     releaseIfLarge(w.gatherScratch);
     releaseIfLarge(w.collideUpdates);
+    releaseIfLarge(w.collideLooks);
     releaseIfLarge(w.broadPhase.proxyLeaves);
     // impactChanged, impactTime and impactBodyTime are kept: the impact stage
     // resets only what it wrote (impact_stage.cpp).
