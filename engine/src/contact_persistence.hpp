@@ -63,7 +63,8 @@ bool reuseManifold(Contact& c, const Body& a, const Body& b, float reuseDistance
 /// reused manifold these are the two material points of the point, which have
 /// drifted apart by the bodies' relative motion; otherwise both arms end at
 /// the manifold point.
-inline void contactArms(const Contact& c, const Body& a, const Body& b, int j, Vec2& rA, Vec2& rB) {
+template <class BodyA, class BodyB>  // Body, or anything with its center and localCenter (RowBody)
+inline void contactArms(const Contact& c, const BodyA& a, const BodyB& b, int j, Vec2& rA, Vec2& rB) {
     if (!c.framed) {
         const Vec2 p = c.manifold.points[j].point;
         rA = p - a.center;

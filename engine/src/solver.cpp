@@ -573,6 +573,7 @@ void gatherBodyRange(WorldState& w, float h, Vec2 g, int first, int last) {
         Body& body = w.bodies[b];
         body.solverIndex = static_cast<int>(i);
         s.bodyMoves[static_cast<std::size_t>(b)] = body.invMass != 0.0f || body.invInertia != 0.0f;
+        s.rowBodies[static_cast<std::size_t>(b)] = rowBodyOf(body, static_cast<int>(i));
         s.stateBodies[i] = b;
         BodyState& st = s.states[i];
         st.v = body.v;
@@ -604,9 +605,11 @@ void gatherBodies(WorldState& w, float h) {
     for (const int b : s.stateBodies) {
         s.bodyMoves[static_cast<std::size_t>(b)] = 0;
         s.contactColourMasks[static_cast<std::size_t>(b)] = 0;
+        s.rowBodies[static_cast<std::size_t>(b)].state = kNullIndex;
     }
     s.bodyMoves.resize(w.bodies.items.size(), 0);
     s.contactColourMasks.resize(w.bodies.items.size(), 0u);
+    s.rowBodies.resize(w.bodies.items.size());
     s.integration.resize(n);
     s.stateBodies.resize(n);
     auto range = [&](int first, int last) { gatherBodyRange(w, h, g, first, last); };
@@ -801,9 +804,12 @@ void releaseLargeStepArrays(WorldState& w) {
     releaseIfLarge(s.states);
     releaseIfLarge(s.integration);
     // bodyMoves and contactColourMasks are cleared at the slots of
-    // stateBodies (gatherBodies): released with it, or not at all.
+    // stateBodies (gatherBodies): released with it, or not at all. rowBodies
+    // is kept (32 bytes a body slot: released and filled again, every step
+    // would pay for the idle bodies' slots), its states cleared here.
     if (s.stateBodies.capacity() * sizeof(int) > kKeptScratchBytes ||
         s.contactColourMasks.capacity() * sizeof(std::uint32_t) > kKeptScratchBytes) {
+        for (const int b : s.stateBodies) s.rowBodies[static_cast<std::size_t>(b)].state = kNullIndex;
         std::vector<int>().swap(s.stateBodies);
         std::vector<std::uint8_t>().swap(s.bodyMoves);
         std::vector<std::uint32_t>().swap(s.contactColourMasks);

@@ -79,21 +79,30 @@ void prepareWideContactLanes(const WorldState& w, const RowContext& x, const Wid
     int a[4]{}, b[4]{}, pointCount[4]{};
     float friction[4]{}, tangentSpeed[4]{}, normalImpulse[2][4]{}, tangentImpulse[2][4]{};
     std::uint32_t flags[4]{};
+    const std::vector<RowBody>& rowBodies = w.solver.rowBodies;
+    // A body with a state is read from its RowBody, one without (static or
+    // asleep: immovable this step, few and shared by many contacts) from
+    // the body; contactRowBodies's values either way.
+    auto rowBody = [&](int slot) {
+        const RowBody& r = rowBodies[static_cast<std::size_t>(slot)];
+        if (r.state != kNullIndex) return r;
+        RowBody immovable = rowBodyOf(w.bodies[slot], x.zeroState);
+        immovable.invMass = immovable.invInertia = 0.0f;
+        return immovable;
+    };
+    const bool shifted = w.startsShiftedAt == w.stepStamp;  // impactShift reads the bodies only then
     for (int i = 0; i < count; ++i) {
         const int c = targets[i].contact;
         const Contact& ct = w.contacts[c];
-        const Body& bA = w.bodies[ct.bodyA];
-        const Body& bB = w.bodies[ct.bodyB];
-        RowBodies rb;
-        contactRowBodies(ct, bA, bB, x.zeroState, rb);
-        a[i] = rb.a, b[i] = rb.b;
-        mA[i] = rb.invMassA, iA[i] = rb.invIA, mB[i] = rb.invMassB, iB[i] = rb.invIB;
+        const RowBody bA = rowBody(ct.bodyA), bB = rowBody(ct.bodyB);
+        a[i] = bA.state, b[i] = bB.state;
+        mA[i] = bA.invMass, iA[i] = bA.invInertia, mB[i] = bB.invMass, iB[i] = bB.invInertia;
         const Vec2 n = ct.manifold.normal;
         nx[i] = n.x, ny[i] = n.y;
         friction[i] = ct.friction;
         const ContactSurface* surface = contactSurface(w, c);
         tangentSpeed[i] = surface ? surface->tangentSpeed : 0.0f;
-        const bool immovable = againstImmovable(rb.invMassA, rb.invMassB);
+        const bool immovable = againstImmovable(bA.invMass, bB.invMass);
         biasRate[i] = (immovable ? x.staticSoft : x.dynamicSoft).biasRate;
         std::uint32_t f = immovable ? kWideImmovableSide : 0u;
         if (ct.roundA) f |= kWideRoundA;
@@ -106,7 +115,8 @@ void prepareWideContactLanes(const WorldState& w, const RowContext& x, const Wid
             Vec2 rA, rB;
             contactArms(ct, bA, bB, j, rA, rB);
             rAx[j][i] = rA.x, rAy[j][i] = rA.y, rBx[j][i] = rB.x, rBy[j][i] = rB.y;
-            separation[j][i] = mp.separation + impactShift(w, c, bA, bB, mp.point, n);
+            const float shift = shifted ? impactShift(w, c, w.bodies[ct.bodyA], w.bodies[ct.bodyB], mp.point, n) : 0.0f;
+            separation[j][i] = mp.separation + shift;
             normalImpulse[j][i] = x.warm * ct.normalImpulse[j];
             tangentImpulse[j][i] = x.warm * ct.tangentImpulse[j];
         }

@@ -246,6 +246,12 @@ TEST(WideContact, LanesPreparedFromContactsMatchThePackedRows) {
         }
         SolverArrays& s = w.solver;
         s.states.assign(static_cast<std::size_t>(awake) + 1, BodyState{});
+        // What the lanes read of the bodies with a state (gatherBodies); the
+        // scalar rows read the bodies themselves.
+        s.rowBodies.resize(static_cast<std::size_t>(bodyCount));
+        for (int i = 0; i < bodyCount; ++i)
+            if (w.bodies[i].solverIndex != kNullIndex)
+                s.rowBodies[static_cast<std::size_t>(i)] = rowBodyOf(w.bodies[i], w.bodies[i].solverIndex);
         const int n = 37;  // not a multiple of four: the last block has empty lanes
         for (int k = 0; k < n; ++k) {
             const int c = w.contacts.allocate();
