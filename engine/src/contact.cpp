@@ -405,26 +405,37 @@ void collide(WorldState& w) {
     scratch.reserve(static_cast<std::size_t>(w.contacts.count));
     std::vector<std::uint8_t>& updates = w.collideUpdates;
     updates.clear();
-    // The impact stage's first look at each active contact, taken with its
-    // manifold (passesOverImpacts): per gathered contact, then per active one.
-    // Velocity-bias impacts have no impact stage: no look.
-    std::vector<ImpactLook>& gatheredLooks = w.collideLooks;
+    // Each active contact's look (ContactLook), taken with its manifold: per
+    // gathered contact, then per active one. Velocity-bias impacts have no
+    // impact stage to look for.
+    std::vector<ContactLook>& gatheredLooks = w.collideLooks;
     gatheredLooks.clear();
-    w.impactLooks.clear();
-    w.impactLooks.reserve(static_cast<std::size_t>(w.contacts.count));
-    const bool lookNeeded = w.settings.impactModel == ImpactModel::closed_form;
+    w.activeLooks.clear();
+    w.activeLooks.reserve(static_cast<std::size_t>(w.contacts.count));
+    const bool lookForImpacts = w.settings.impactModel == ImpactModel::closed_form;
     // Written field by field into its place: returned as a whole, it was
     // written in 4-byte pieces and read back in 8-byte ones, a stall on store
     // forwarding per contact.
-    auto look = [&](int c, Update update, ImpactLook& out) {
+    auto look = [&](int c, Update update, ContactLook& out) {
         const Contact& ct = w.contacts[c];
+        const bool touching = touchingAfter(update);
         out.bodyA = ct.bodyA;
         out.bodyB = ct.bodyB;
-        out.passOver = !lookNeeded || passesOverImpacts(w, ct, touchingAfter(update));
+        out.passOver = !lookForImpacts || passesOverImpacts(w, ct, touching);
+        std::uint8_t flags = 0;
+        if (touching && !ct.isSensor && ct.manifold.pointCount > 0) {
+            flags = kLookRow;
+            if (ct.manifold.pointCount == 1) flags |= kLookOnePoint;
+            for (int j = 0; j < ct.manifold.pointCount; ++j)
+                if (ct.manifold.points[j].separation < -kDeepOverlap) flags |= kLookDeep;
+            const ContactSurface* surface = contactSurface(w, c);
+            if (surface && surface->rollingResistance > 0.0f) flags |= kLookRollingSurface;
+        }
+        out.rowFlags = flags;
     };
-    auto keep = [&](int c, const ImpactLook& first) {
+    auto keep = [&](int c, const ContactLook& first) {
         w.activeContacts.push_back(c);
-        w.impactLooks.push_back(first);
+        w.activeLooks.push_back(first);
     };
     // With no island asleep every contact has an awake body (a contact needs
     // a body that can move, and a disabled body keeps none): the round is
@@ -470,7 +481,7 @@ void collide(WorldState& w) {
             for (; processed < scratch.size(); ++processed) {
                 const int c = scratch[processed];
                 const Update update = updateManifold(w, c);
-                ImpactLook first;
+                ContactLook first;
                 look(c, update, first);
                 if (applyUpdate(w, c, update)) keep(c, first);
             }
@@ -485,7 +496,7 @@ void collide(WorldState& w) {
         gatheredLooks.resize(roundEnd);
         const int* round = scratch.data() + processed;
         std::uint8_t* results = updates.data() + processed;
-        ImpactLook* looks = gatheredLooks.data() + processed;
+        ContactLook* looks = gatheredLooks.data() + processed;
         auto manifolds = [&](int b, int e) {
             for (int i = b; i < e; ++i) {
                 const Update update = updateManifold(w, round[i]);

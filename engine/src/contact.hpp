@@ -87,9 +87,29 @@ void createContact(WorldState& w, int shapeA, int shapeB);
 /// Destroys a contact; a touching one reports its end when `emitEvents`.
 void destroyContact(WorldState& w, int contact, bool emitEvents);
 
+/// What the narrowphase found of an active contact for the stages after it
+/// (WorldState::activeLooks, in activeContacts' order), taken while the
+/// contact and its bodies are in the cache: its bodies, the impact stage's
+/// first look (impact_stage.cpp) and what decides its row's path in the
+/// colouring (solver.cpp). The later stages read these 12 bytes instead of
+/// the contact: the colouring's reading of every contact was half its time in
+/// a large scene. Nothing changes them between the narrowphase and the solve
+/// (the impact stage keeps the manifolds as they are).
+struct ContactLook {
+    int bodyA, bodyB;
+    bool passOver;          ///< the impact stage passes it over (passesOverImpacts)
+    std::uint8_t rowFlags;  ///< kLook* below
+};
+/// Touching, not a sensor, with points: it gets a row if a body moves.
+constexpr std::uint8_t kLookRow = 1;
+constexpr std::uint8_t kLookOnePoint = 2;        ///< one manifold point
+constexpr std::uint8_t kLookDeep = 4;            ///< a point deeper than kDeepOverlap
+constexpr std::uint8_t kLookRollingSurface = 8;  ///< its surface resists rolling
+
 /// The narrowphase: updates the manifold of every contact with an awake body,
 /// reports begin and end events, wakes islands that are touched, destroys
-/// contacts whose boxes parted and fills WorldState::activeContacts.
+/// contacts whose boxes parted and fills WorldState::activeContacts and
+/// activeLooks.
 void collide(WorldState& w);
 
 /// Destroys every contact of `body` whose other shape is `shape` (or any of the

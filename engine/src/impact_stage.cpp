@@ -143,10 +143,10 @@ void resolveImpacts(WorldState& w, float dt) {
     // body slot for it: filled every step, it made 10,000 idle bodies cost the
     // 100 awake beside them a fifth more.)
     const std::size_t activeCount = w.activeContacts.size();
-    const std::vector<ImpactLook>& looks = w.impactLooks;
+    const std::vector<ContactLook>& looks = w.activeLooks;
     auto passedOver = [&](const Contact& ct) { return passesOverImpacts(w, ct, ct.touching); };
     auto stillPassedOver = [&](std::size_t i) {  // in the first sweep
-        const ImpactLook& l = looks[i];
+        const ContactLook& l = looks[i];
         return l.passOver && changed[static_cast<std::size_t>(l.bodyA)] != 1u &&
                changed[static_cast<std::size_t>(l.bodyB)] != 1u;
     };

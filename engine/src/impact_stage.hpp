@@ -7,14 +7,6 @@ namespace i2d::detail {
 struct WorldState;
 struct Contact;
 
-/// The impact stage's first look at an active contact, taken by the
-/// narrowphase (contact.cpp) while the contact and its bodies are in the
-/// cache, on whichever worker updated the manifold.
-struct ImpactLook {
-    int bodyA, bodyB;
-    bool passOver;  ///< approaches at none of its points (or has none)
-};
-
 /// The look at contact `ct` after its manifold update (`touching`: what the
 /// update found), from the bodies' motion at the step's start: true (passed
 /// over) when it is not touching, is a sensor, has no point, or approaches at

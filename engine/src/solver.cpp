@@ -97,32 +97,33 @@ constexpr int kPrepareGrain = 128;  ///< contacts per chunk when rows are prepar
 
 constexpr std::uint8_t kKeyRow = 1, kKeyMoveA = 2, kKeyMoveB = 4, kKeyOnePoint = 8, kKeyDeep = 16, kKeyRolling = 32;
 
-ColourKey colourKey(const WorldState& w, int contact, int zeroState) {
-    const Contact& ct = w.contacts[contact];
+ColourKey colourKey(const WorldState& w, std::size_t active, int zeroState) {
     // Whether the contact has a row: contactRowBodies's test, from the
-    // contact and SolverArrays::bodyMoves (the bodies are not read: in a
-    // large scene each was a cache miss; many_pyramids' colouring took 0.86
-    // to 0.90 ms reading them, 0.54 to 0.59 without).
-    if (!ct.touching || ct.isSensor || ct.manifold.pointCount == 0) return {0, 0, 0};
+    // narrowphase's look at the contact (ContactLook) and
+    // SolverArrays::bodyMoves. Neither the contact nor its bodies are read:
+    // in a large scene each was a cache miss (many_pyramids' colouring took
+    // 0.86 to 0.90 ms reading both, 0.54 to 0.59 reading the contacts).
+    const ContactLook& look = w.activeLooks[active];
+    if (!(look.rowFlags & kLookRow)) return {0, 0, 0};
     const std::vector<std::uint8_t>& moves = w.solver.bodyMoves;
-    const bool moveA = moves[static_cast<std::size_t>(ct.bodyA)] != 0;
-    const bool moveB = moves[static_cast<std::size_t>(ct.bodyB)] != 0;
+    const bool moveA = moves[static_cast<std::size_t>(look.bodyA)] != 0;
+    const bool moveB = moves[static_cast<std::size_t>(look.bodyB)] != 0;
     if (!moveA && !moveB) return {0, 0, 0};
     std::uint8_t flags = kKeyRow;
     if (moveA) flags |= kKeyMoveA;
     if (moveB) flags |= kKeyMoveB;
     // What decides the rows' path before any is prepared: the same tests as
     // prepareContacts' and prepareRollingResistance's.
-    for (int j = 0; j < ct.manifold.pointCount; ++j)
-        if (ct.manifold.points[j].separation < -kDeepOverlap) flags |= kKeyDeep;
-    const ContactSurface* surface = contactSurface(w, contact);
-    if (surface && surface->rollingResistance > 0.0f) {
+    if (look.rowFlags & kLookDeep) flags |= kKeyDeep;
+    if (look.rowFlags & kLookRollingSurface) {
+        const int contact = w.activeContacts[active];
+        const Contact& ct = w.contacts[contact];
         RowBodies rb;
         contactRowBodies(ct, w.bodies[ct.bodyA], w.bodies[ct.bodyB], zeroState, rb);
         if (!(rb.invIA + rb.invIB <= 0.0f)) flags |= kKeyRolling;
     }
-    if (ct.manifold.pointCount == 1) flags |= kKeyOnePoint;
-    return {ct.bodyA, ct.bodyB, flags};
+    if (look.rowFlags & kLookOnePoint) flags |= kKeyOnePoint;
+    return {look.bodyA, look.bodyB, flags};
 }
 
 /// Colours the rows of this step's active contacts (greedy, in activeContacts
@@ -149,15 +150,14 @@ void colourContacts(WorldState& w) {
         keys.resize(count);
         auto findKeys = [&](int first, int last) {
             for (int k = first; k < last; ++k)
-                keys[static_cast<std::size_t>(k)] = colourKey(w, w.activeContacts[static_cast<std::size_t>(k)],
-                                                              zeroState);
+                keys[static_cast<std::size_t>(k)] = colourKey(w, static_cast<std::size_t>(k), zeroState);
         };
         w.runner.run(static_cast<int>(count), kPrepareGrain, findKeys);
     }
     int rows = 0;
     std::uint8_t any = 0;
     for (std::size_t i = 0; i < count; ++i) {
-        const ColourKey key = shared ? keys[i] : colourKey(w, w.activeContacts[i], zeroState);
+        const ColourKey key = shared ? keys[i] : colourKey(w, i, zeroState);
         if (!(key.flags & kKeyRow)) {
             s.contactColours[i] = kNoRow;
             continue;
@@ -830,7 +830,7 @@ void releaseLargeStepArrays(WorldState& w) {
     releaseIfLarge(w.broadPhase.proxyLeaves);
     // impactChanged, impactTime and impactBodyTime are kept: the impact stage
     // resets only what it wrote (impact_stage.cpp).
-    releaseIfLarge(w.impactLooks);
+    releaseIfLarge(w.activeLooks);
     releaseIfLarge(w.islands.unionParent);
 }
 

@@ -47,11 +47,11 @@ struct WorldState {
     std::vector<int> activeContacts;  ///< contacts with an awake body, updated this step, slot order
     std::vector<int> gatherScratch;
     std::vector<std::uint8_t> collideUpdates;  ///< per gathered contact: what its manifold update found (contact.cpp)
-    std::vector<ImpactLook> collideLooks;      ///< per gathered contact: the impact stage's first look (contact.cpp)
+    std::vector<ContactLook> collideLooks;     ///< per gathered contact: its look (contact.cpp)
     std::vector<std::uint32_t> impactChanged;
     std::vector<float> impactTime, impactBodyTime;
     std::vector<int> impactStruckBodies, impactStruckContacts;  ///< what the last impact stage wrote
-    std::vector<ImpactLook> impactLooks;                        ///< impact_stage.cpp: per active contact
+    std::vector<ContactLook> activeLooks;                       ///< per active contact (contact.hpp)
 
     // Callbacks (World::setCustomFilter, setPreSolve); empty when not set.
     /// The game's task system (World::setTaskSystem), not owned; null: one thread.
