@@ -405,6 +405,9 @@ void collide(WorldState& w) {
     scratch.reserve(static_cast<std::size_t>(w.contacts.count));
     std::vector<std::uint8_t>& updates = w.collideUpdates;
     updates.clear();
+    // A narrowphase with enough contacts is shared with the task system's
+    // workers, when the step has them (stage_runner.hpp); the result is the same.
+    w.runner.share(w.contacts.count >= kParallelWork);
     // Each active contact's look (ContactLook), taken with its manifold: per
     // gathered contact, then per active one. Velocity-bias impacts have no
     // impact stage to look for.

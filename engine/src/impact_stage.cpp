@@ -32,7 +32,6 @@ namespace i2d::detail {
 
 namespace {
 constexpr int kMaxSweeps = 8;
-constexpr int kLookGrain = 256;  ///< contacts per chunk of the first look on the workers
 
 // Timing within the step. The solver integrates by semi-implicit Euler over
 // N substeps of h = Δt/N: v_k = v_(k−1) + a·h, x_k = x_(k−1) + h·v_k, with a
