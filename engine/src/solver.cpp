@@ -343,11 +343,8 @@ inline void payPushLift(const SolverArrays& s, std::size_t i, BodyState& st, Vec
     st.v += fallPaidForLift(-v, gravity, lift) * up;
 }
 
-/// Bodies [begin, end) of the solver arrays (each body on its own: a stage
-/// the workers may share). `payLift`: pay the last substep's push lift first
-/// (soft_step, payPushLift), up being against gravity.
-/// integrateVelocities (without a lift to pay) for the four bodies from
-/// `first`, in Float4, when all four are moved by forces and none ends
+/// integrateVelocities (without a lift to pay) for the four bodies at
+/// `states` and `in`, in Float4, when all four are moved by forces and none ends
 /// faster than maxSpeed (else false, nothing changed): the scalar loop's
 /// operations in its order, so bit-identical.
 bool integrateFourVelocities(BodyState* states, const BodyIntegration* in, float h, float maxSpeed2) {
@@ -381,6 +378,9 @@ bool integrateFourVelocities(BodyState* states, const BodyIntegration* in, float
     return true;
 }
 
+/// Bodies [begin, end) of the solver arrays (each body on its own: a stage
+/// the workers may share). `payLift`: pay the last substep's push lift first
+/// (soft_step, payPushLift), up being against gravity.
 void integrateVelocities(SolverArrays& s, float h, float maxSpeed, std::size_t begin, std::size_t end, bool payLift,
                          Vec2 up) {
     auto integrate = [&](std::size_t i) {
@@ -420,7 +420,7 @@ void clampVelocity(BodyState& s, float maxSpeed, float maxAngularSpeed) {
     if (std::abs(s.w) > maxAngularSpeed) s.w = s.w > 0.0f ? maxAngularSpeed : -maxAngularSpeed;
 }
 
-/// integratePositions for the four bodies from `first`, in Float4, when none
+/// integratePositions for the four bodies at `states`, in Float4, when none
 /// of them is faster than the limits (else false, nothing changed). The
 /// same operations in the same order as the scalar loop (integrateRotation):
 /// bit-identical. A position update is a square root and a division per
