@@ -271,7 +271,10 @@ void prepareContactRows(WorldState& w, float h, bool soft) {
     // Contact by contact in slot order, which reads the contacts and bodies
     // in the order they lie in memory; each row goes to its lane (or the
     // overflow group's scalar row), so the contacts may be shared among the
-    // workers.
+    // workers. Preparing block by block instead (each block's four contacts
+    // gathered, the block written whole, four lanes a store) ran 20 % fewer
+    // instructions but read each colour's contacts strided through the slots:
+    // many_pyramids' step took 1.3 times as long, pyramid100's 1.08.
     const RowContext x = makeRowContext(w, h, soft);
     const float slop = w.settings.penetrationSlop;
     // Four lanes' arithmetic at once (prepareWideContactLanes), the contacts
