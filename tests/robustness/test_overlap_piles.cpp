@@ -256,9 +256,10 @@ TEST(OverlapPiles, FiftyCapsulesAtOnePointAreNotThrown) {
 // sweeps per substep the pile's outer bodies, pushed through it at the cap,
 // moved out together while its core stayed about a metre deep for the first
 // second: 50 boxes (seed 3001) were still 0.17 m deep at 2 s, 50 capsules
-// (seed 1009) 3.6 cm. With sixteen (deep_overlap.cpp, kPushSweeps) they are
-// 0.6 and 0.8 cm deep (docs/validation.md gives 468 layouts in all). The
-// issue's bounds, no tolerance added.
+// (seed 1009) 3.6 cm. With sixteen (deep_overlap.cpp, kPushSweeps) they were
+// 0.6 and 0.8 cm deep, and are 1.2 and 0.9 cm since bodies resting on
+// nothing may be pushed sideways at three times the cap (docs/validation.md
+// gives 684 layouts in all). The bounds, no tolerance added.
 TEST(OverlapPiles, FiftyAtOnePointPartWithinTwoSeconds) {
     for (auto [kind, seed] : {std::pair{Kind::box, 3001u}, std::pair{Kind::capsule, 1009u}}) {
         const PileFigures f = airPile(kind, 50, 5.0f, seed);
@@ -269,13 +270,14 @@ TEST(OverlapPiles, FiftyAtOnePointPartWithinTwoSeconds) {
 }
 
 // The deep push's limits per body (deep_overlap.cpp): across gravity at most
-// twice maxPushSpeed c, so in a step no body moves sideways more than 2·c·Δt
-// (the pseudo-velocity is the only sideways motion here: the pile is at rest
-// and the push leaves no velocity), and the pushes through a pile of 20 boxes
-// created at one point add beyond one contact's c (with the sideways limit at
-// c no body moved more than c·Δt); upwards at most c, less the fall, so no
-// body rises more than c·Δt in a step.
-TEST(OverlapPiles, APushAcrossGravityReachesTwiceTheCapAndNoMore) {
+// three times maxPushSpeed c for a body that rests on nothing (twice c for a
+// supported one: unit/test_deep_push.cpp), so in a step no body of a pile in
+// the air moves sideways more than 3·c·Δt (the pseudo-velocity is the only
+// sideways motion here: the pile is at rest and the push leaves no
+// velocity), and the pushes through a pile of 20 boxes created at one point
+// add up beyond a supported body's 2·c; upwards at most c, less the fall, so
+// no body rises more than c·Δt in a step.
+TEST(OverlapPiles, APushAcrossGravityInTheAirReachesThriceTheCapAndNoMore) {
     for (unsigned seed : {1u, 2u, 3u}) {
         World world({.enableSleep = false});
         std::mt19937 rng(seed);
@@ -285,8 +287,9 @@ TEST(OverlapPiles, APushAcrossGravityReachesTwiceTheCapAndNoMore) {
             bodies.push_back(makeBody(world, Kind::box, {jitter(rng), 10.0f + jitter(rng)}, 0.0f));
         const float cap = world.settings().maxPushSpeed;
         // Float rounding of a sum of four substeps' moves, far below the
-        // c·Δt = 5 cm that separates the two bounds.
+        // c·Δt = 5 cm that separates the bounds.
         const float rounding = 1e-5f;
+        float reached = 0.0f;
         for (int step = 0; step < 3; ++step) {
             std::vector<Vec2> before;
             for (BodyId b : bodies) before.push_back(world.position(b));
@@ -298,10 +301,11 @@ TEST(OverlapPiles, APushAcrossGravityReachesTwiceTheCapAndNoMore) {
                 rise = std::max(rise, p.y - before[i].y);
                 EXPECT_EQ(world.linearVelocity(bodies[i]).x, 0.0f) << "seed " << seed << " step " << step;
             }
-            EXPECT_GT(sideways, cap * kDt) << "seed " << seed << " step " << step;
-            EXPECT_LE(sideways, 2.0f * cap * kDt + rounding) << "seed " << seed << " step " << step;
+            reached = std::max(reached, sideways);
+            EXPECT_LE(sideways, 3.0f * cap * kDt + rounding) << "seed " << seed << " step " << step;
             EXPECT_LE(rise, cap * kDt + rounding) << "seed " << seed << " step " << step;
         }
+        EXPECT_GT(reached, 2.0f * cap * kDt) << "seed " << seed;
     }
 }
 

@@ -1,0 +1,109 @@
+// The push of deep overlaps (deep_overlap.cpp, pushDeepOverlaps): each
+// body's pseudo-velocity across gravity is held to twice maxPushSpeed c when
+// the body is supported (rests, through upward normals, on something
+// immovable) and to three times c when it rests on nothing; without gravity
+// to twice c in every direction.
+#include <gtest/gtest.h>
+
+#include <algorithm>
+#include <cmath>
+
+#include "contact_solver.hpp"
+#include "deep_overlap.hpp"
+#include "world_state.hpp"
+
+namespace {
+
+using namespace i2d;
+using namespace i2d::detail;
+
+constexpr int kBodies = 5;
+
+/// Five unit-mass bodies in a horizontal row, each 0.5 m deep in the next
+/// and the first 0.5 m deep in something immovable on its left (the zero
+/// state): one deep row per pair, normal +x, one point at the centres. Each
+/// row asks its pair to part at c, so, unlimited, the k-th body would be
+/// pushed right at (k + 1)·c; the last one (5c) reaches any limit below.
+void deepRow(WorldState& w, Vec2 gravity, bool supported) {
+    w.settings.gravity = gravity;
+    SolverArrays& s = w.solver;
+    s.states.assign(kBodies + 1, BodyState{});
+    s.integration.assign(kBodies, BodyIntegration{});
+    s.stateBodies.clear();
+    for (int i = 0; i < kBodies; ++i) {
+        const int slot = w.bodies.allocate();
+        Body& b = w.bodies[slot];
+        b.type = BodyType::dynamic_body;
+        b.invMass = b.invInertia = 1.0f;
+        b.solverIndex = i;
+        s.stateBodies.push_back(slot);
+        s.integration[static_cast<std::size_t>(i)].linearAcceleration = gravity;
+    }
+    s.supported.assign(kBodies + 1, supported ? 1 : 0);
+    s.constraints.resizeForOverwrite(kBodies);
+    s.rowCount = kBodies;
+    s.deepRows.clear();
+    s.sidePushes.clear();
+    const Softness soft = makeSoft(30.0f, 10.0f, 1.0f / 240.0f);
+    for (int r = 0; r < kBodies; ++r) {
+        ContactConstraint& cc = s.constraints[static_cast<std::size_t>(r)];
+        cc = ContactConstraint{};
+        cc.a = r == 0 ? kBodies : r - 1;  // the zero state, then the body on the left
+        cc.b = r;
+        cc.normal = {1.0f, 0.0f};
+        cc.invMassA = cc.invIA = r == 0 ? 0.0f : 1.0f;
+        cc.invMassB = cc.invIB = 1.0f;
+        cc.biasRate = soft.biasRate;
+        cc.massScale = soft.massScale;
+        cc.impulseScale = soft.impulseScale;
+        cc.deepOverlap = true;
+        cc.roundA = cc.roundB = false;
+        cc.pointCount = 1;
+        ContactPointConstraint& cp = cc.points[0];
+        cp.rA = cp.rB = {0.0f, 0.0f};
+        cp.adjustedSeparation = -0.5f;
+        cp.normalMass = 1.0f / (cc.invMassA + cc.invMassB);
+        cp.normalImpulse = cp.biasImpulse = 0.0f;
+        s.deepRows.push_back(r);
+    }
+}
+
+/// The fastest pseudo-speed after one substep's push (each body's
+/// pseudo-velocity is along +x: the rows are).
+float fastestPush(Vec2 gravity, bool supported) {
+    WorldState w({}, 1);
+    deepRow(w, gravity, supported);
+    pushDeepOverlaps(w, 1.0f / 240.0f);
+    float fastest = 0.0f;
+    for (int i = 0; i < kBodies; ++i) {
+        const Vec2 v = w.solver.biasV[static_cast<std::size_t>(i)];
+        EXPECT_EQ(v.y, 0.0f) << "body " << i;
+        fastest = std::max(fastest, v.x);
+    }
+    return fastest;
+}
+
+// Float rounding of limitTo's rescaling (a few ulps of 9 m/s).
+constexpr float kRounding = 1e-5f;
+
+TEST(DeepPush, AcrossGravityTwiceTheCapForASupportedBodyThriceForOneOnNothing) {
+    const float c = WorldSettings{}.maxPushSpeed;
+    {
+        WorldState w({}, 1);
+        deepRow(w, {0.0f, -10.0f}, true);
+        const ContactConstraint& cc = w.solver.constraints[0];
+        ASSERT_GT(cc.biasRate * 0.5f, c) << "each row must ask for the cap";
+    }
+    EXPECT_NEAR(fastestPush({0.0f, -10.0f}, true), 2.0f * c, kRounding);
+    // Reaching 3c shows the pile asks for more than the 2c a supported body
+    // is held to.
+    EXPECT_NEAR(fastestPush({0.0f, -10.0f}, false), 3.0f * c, kRounding);
+}
+
+// Without gravity nothing is supported and no direction is across: 2c.
+TEST(DeepPush, WithoutGravityTwiceTheCapInEveryDirection) {
+    const float c = WorldSettings{}.maxPushSpeed;
+    EXPECT_NEAR(fastestPush({0.0f, 0.0f}, false), 2.0f * c, kRounding);
+}
+
+}  // namespace
