@@ -29,16 +29,19 @@ void createProxy(WorldState& w, int s) {
     if (!body.enabled) return;  // a disabled body's shapes stay out of the trees
     // Static boxes are exact: they never move, so a margin would only make
     // more pairs.
-    sh.fatAABB = fatten(speculativeBox(w, sh, body), body.type == BodyType::static_body ? 0.0f : w.settings.aabbMargin);
+    if (bp.fatBoxes.size() < static_cast<std::size_t>(w.shapes.capacity()))
+        bp.fatBoxes.resize(static_cast<std::size_t>(w.shapes.capacity()));
+    AABB& fat = bp.fatBox(s);
+    fat = fatten(speculativeBox(w, sh, body), body.type == BodyType::static_body ? 0.0f : w.settings.aabbMargin);
     sh.inStaticTree = body.type == BodyType::static_body;
     DynamicTree& tree = sh.inStaticTree ? bp.staticTree : bp.movingTree;
-    sh.proxy = tree.createProxy(sh.fatAABB, s);
+    sh.proxy = tree.createProxy(fat, s);
     if (!sh.inStaticTree) {
         sh.moved = true;
         bp.moveBuffer.push_back(s);
     } else {
         // A new static shape: let the moving shapes around it look again.
-        bp.movingTree.query(sh.fatAABB, [&](int other) {
+        bp.movingTree.query(fat, [&](int other) {
             Shape& o = w.shapes[other];
             if (!o.moved) {
                 o.moved = true;
@@ -75,14 +78,15 @@ void synchronizeProxies(WorldState& w, int b, float dt) {
     for (int s : bodyShapes(w.shapes, body)) {
         Shape& sh = w.shapes[s];
         AABB box = speculativeBox(w, sh, body);
-        if (contains(sh.fatAABB, box)) continue;
-        sh.fatAABB = fatten(box, body.type == BodyType::static_body ? 0.0f : w.settings.aabbMargin);
+        AABB& fat = bp.fatBox(s);
+        if (contains(fat, box)) continue;
+        fat = fatten(box, body.type == BodyType::static_body ? 0.0f : w.settings.aabbMargin);
         if (body.type != BodyType::static_body && isFinite(ahead.x + ahead.y)) {
-            (ahead.x < 0.0f ? sh.fatAABB.lower.x : sh.fatAABB.upper.x) += ahead.x;
-            (ahead.y < 0.0f ? sh.fatAABB.lower.y : sh.fatAABB.upper.y) += ahead.y;
+            (ahead.x < 0.0f ? fat.lower.x : fat.upper.x) += ahead.x;
+            (ahead.y < 0.0f ? fat.lower.y : fat.upper.y) += ahead.y;
         }
         DynamicTree& tree = sh.inStaticTree ? bp.staticTree : bp.movingTree;
-        tree.moveProxy(sh.proxy, sh.fatAABB);
+        tree.moveProxy(sh.proxy, fat);
         bp.markMoved(sh, s);
     }
 }
@@ -90,7 +94,7 @@ void synchronizeProxies(WorldState& w, int b, float dt) {
 bool leftFatBox(const WorldState& w, const Body& body) {
     if (!body.enabled) return false;
     for (int s : bodyShapes(w.shapes, body))
-        if (!contains(w.shapes[s].fatAABB, speculativeBox(w, w.shapes[s], body))) return true;
+        if (!contains(w.broadPhase.fatBox(s), speculativeBox(w, w.shapes[s], body))) return true;
     return false;
 }
 
@@ -105,7 +109,7 @@ void wakeShapesAround(WorldState& w, int b) {
     BroadPhase& bp = w.broadPhase;
     if (!w.bodies[b].enabled) return;
     for (int s : bodyShapes(w.shapes, w.bodies[b])) {
-        const AABB box = w.shapes[s].fatAABB;
+        const AABB box = bp.fatBox(s);
         bp.staticTree.query(box, [&](int other) {
             Shape& o = w.shapes[other];
             if (w.bodies[o.body].type != BodyType::static_body) wakeBody(w, o.body);

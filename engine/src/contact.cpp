@@ -180,9 +180,7 @@ enum class Update : std::uint8_t { parted, apart, touching, kept };
 /// the world — destroying, waking, events — is applyUpdate's.
 Update updateManifold(WorldState& w, int c) {
     Contact& ct = w.contacts[c];
-    const Shape& a = w.shapes[ct.shapeA];
-    const Shape& b = w.shapes[ct.shapeB];
-    if (!overlaps(a.fatAABB, b.fatAABB)) return Update::parted;
+    if (!overlaps(w.broadPhase.fatBox(ct.shapeA), w.broadPhase.fatBox(ct.shapeB))) return Update::parted;
     const Body& bodyA = w.bodies[ct.bodyA];
     const Body& bodyB = w.bodies[ct.bodyB];
     // A touching flat pair that has barely moved keeps its manifold (same ids,
@@ -229,7 +227,7 @@ Update updateManifold(WorldState& w, int c) {
     }
     if (!reused) {
         ct.framed = false;
-        if (!ct.isSensor && canPersist(a, b)) recordManifoldFrame(ct, bodyA, bodyB);
+        if (!ct.isSensor && canPersist(w.shapes[ct.shapeA], w.shapes[ct.shapeB])) recordManifoldFrame(ct, bodyA, bodyB);
     } else if (m.pointCount == 0) {
         ct.framed = false;  // switched off by the pre-solve callback
     }

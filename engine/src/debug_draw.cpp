@@ -93,8 +93,8 @@ void World::draw(DebugDraw& dd) const {
     if (dd.drawAABBs) {
         for (int s = 0; s < w.shapes.capacity(); ++s) {
             const detail::Shape& sh = w.shapes[s];
-            if (!sh.alive) continue;
-            const AABB& a = sh.fatAABB;
+            if (!sh.alive || sh.proxy == detail::DynamicTree::kNull) continue;  // no box: not in a tree
+            const AABB& a = w.broadPhase.fatBox(s);
             Color c{0.8f, 0.3f, 0.8f, 1.0f};
             dd.drawSegment(a.lower, {a.upper.x, a.lower.y}, c);
             dd.drawSegment({a.upper.x, a.lower.y}, a.upper, c);

@@ -28,7 +28,6 @@ union ShapeGeometry {
 
 struct Shape {
     ShapeGeometry geometry;
-    AABB fatAABB{};  ///< the box in the broadphase tree (grown by the margin)
     float density = 1.0f, friction = 0.6f, restitution = 0.0f;
     float rollingResistance = 0.0f, tangentSpeed = 0.0f;
     Filter filter{};
