@@ -186,7 +186,8 @@ void prepareDeepOverlaps(WorldState& w) {
     // body back height it had, never new height; (3) neither body moves further
     // than its own width: the row moves the two apart in inverse proportion to
     // their masses, so the bodies' shares of the clearing distance are
-    // clear·m⁻¹/(m_A⁻¹ + m_B⁻¹). A box on a long plank is still lifted (it
+    // clear·m⁻¹/(m_A⁻¹ + m_B⁻¹), or, where that moves one beyond its width,
+    // split otherwise (below). A box on a long plank is still lifted (it
     // would have to slide the plank's length); two like bodies, one deep in the
     // other, slide apart however deep. Held to the narrower width of the pair
     // instead (the upper body moving it all), a body created almost wholly
@@ -214,9 +215,27 @@ void prepareDeepOverlaps(WorldState& w) {
         const float hiB = supportAlong(shB, bB.xf, side), loB = -supportAlong(shB, bB.xf, -side);
         const float toSide = hiA - loB, toOtherSide = hiB - loA;  // how far B must move along ±side to clear A
         const float clear = std::min(toSide, toOtherSide);
+        const float widthA = hiA - loA, widthB = hiB - loB;
         const float shareB = cc.invMassB / (cc.invMassA + cc.invMassB);
-        if (shareB * clear > hiB - loB || (1.0f - shareB) * clear > hiA - loA) continue;
-        s.sidePushes.push_back({r, toSide <= toOtherSide ? side : -side, clear});
+        float invMassA = cc.invMassA, invMassB = cc.invMassB;
+        if (shareB * clear > widthB || (1.0f - shareB) * clear > widthA) {
+            // Split by the masses, one body would move beyond its own width:
+            // it moves its width and the other the rest, within its own
+            // width, when that rest is no more than the lift it replaces
+            // (depth·|n·up|). A 1 m box created inside a 2 m box on the
+            // ground was lifted out, the big box ending on the small one
+            // (rise 1 m, energy 1.7 times the start); it now slides out
+            // while the big one gives way. A box on a long plank is still
+            // lifted: the plank would have to slide far more than the lift.
+            if (clear > widthA + widthB) continue;
+            const float movedB = std::clamp(shareB * clear, clear - widthA, widthB);
+            const float extra = std::abs(movedB - shareB * clear);  // what the other body takes beyond its share
+            if (extra > depth * std::abs(nu)) continue;
+            const float sum = cc.invMassA + cc.invMassB;
+            invMassB = sum * (movedB / clear);
+            invMassA = sum - invMassB;
+        }
+        s.sidePushes.push_back({r, toSide <= toOtherSide ? side : -side, clear, invMassA, invMassB});
     }
 }
 
@@ -245,13 +264,13 @@ void pushDeepOverlaps(WorldState& w, float h) {
                 Vec2& vB = s.biasV[static_cast<std::size_t>(cc.b)];
                 const float sep = dot(states[cc.b].dp - states[cc.a].dp, sp.axis) - sp.depth;
                 const float target = std::max(std::min(-cc.biasRate * sep, cap), 0.0f);
-                const float mass = 1.0f / (cc.invMassA + cc.invMassB);
+                const float mass = 1.0f / (sp.invMassA + sp.invMassB);
                 ContactPointConstraint& cp = cc.points[0];
                 const float accumulated = std::max(cp.biasImpulse - mass * (dot(vB - vA, sp.axis) - target), 0.0f);
                 const Vec2 P = (accumulated - cp.biasImpulse) * sp.axis;
                 cp.biasImpulse = accumulated;
-                vA = mulSub(vA, cc.invMassA, P);
-                vB = mulAdd(vB, cc.invMassB, P);
+                vA = mulSub(vA, sp.invMassA, P);
+                vB = mulAdd(vB, sp.invMassB, P);
                 continue;
             }
             const BodyState& sA = states[cc.a];

@@ -29,9 +29,10 @@ inline float fallPaidForLift(float falling, float g, float lift) {
 /// A deep contact between two moving bodies pushed apart sideways
 /// (perpendicular to gravity) instead of along its normal.
 struct SidePush {
-    int row;      ///< in SolverArrays::constraints
-    Vec2 axis;    ///< unit, from A's side towards B's
-    float depth;  ///< overlap of the two shapes' extents along axis at step start (m)
+    int row;                   ///< in SolverArrays::constraints
+    Vec2 axis;                 ///< unit, from A's side towards B's
+    float depth;               ///< overlap of the two shapes' extents along axis at step start (m)
+    float invMassA, invMassB;  ///< how the row splits the move between A and B (prepareDeepOverlaps)
 };
 
 /// Once per step, after the rows are prepared, in a step with a deep overlap:
