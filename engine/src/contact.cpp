@@ -326,6 +326,12 @@ void createContact(WorldState& w, int s1, int s2) {
     ct.isSensor = a.isSensor || b.isSensor;
     ct.roundA = a.type == ShapeType::circle;
     ct.roundB = b.type == ShapeType::circle;
+    const float thinner = std::min(shapeThickness(a), shapeThickness(b));
+    if (kDeepFraction * thinner < kDeepOverlap)  // (a NaN thickness keeps kDeepOverlap)
+        ct.deepScale = static_cast<std::uint8_t>(
+            std::clamp(255.0f * kDeepFraction * thinner / kDeepOverlap, 1.0f, 254.0f));
+    else
+        ct.deepScale = kFullDeepScale;
     ct.enableHitEvents = !ct.isSensor && (a.enableHitEvents || b.enableHitEvents);
     ct.enableEvents = ct.isSensor ? ((a.isSensor ? a.enableSensorEvents : b.enableSensorEvents))
                                   : (a.enableContactEvents || b.enableContactEvents);
@@ -428,7 +434,7 @@ void collide(WorldState& w) {
             flags = kLookRow;
             if (ct.manifold.pointCount == 1) flags |= kLookOnePoint;
             for (int j = 0; j < ct.manifold.pointCount; ++j)
-                if (ct.manifold.points[j].separation < -kDeepOverlap) flags |= kLookDeep;
+                if (ct.manifold.points[j].separation < -deepOverlapOf(ct)) flags |= kLookDeep;
             const ContactSurface* surface = contactSurface(w, c);
             if (surface && surface->rollingResistance > 0.0f) flags |= kLookRollingSurface;
         }

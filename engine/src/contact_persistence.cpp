@@ -40,7 +40,7 @@ void recordManifoldFrame(Contact& c, const Body& a, const Body& b) {
     // A deep overlap is not at rest: its geometry changes as it separates.
     bool shallow = c.manifold.pointCount > 0;
     for (int j = 0; j < c.manifold.pointCount; ++j)
-        shallow = shallow && c.manifold.points[j].separation > -kDeepOverlap;
+        shallow = shallow && c.manifold.points[j].separation > -deepOverlapOf(c);
     c.framed = shallow;
 }
 

@@ -99,7 +99,7 @@ inline bool prepareContactRow(const WorldState& w, const RowContext& x, int c, C
     cc.roundA = ct.roundA;
     cc.roundB = ct.roundB;
     for (int j = 0; j < cc.pointCount; ++j)
-        cc.deepOverlap = cc.deepOverlap || ct.manifold.points[j].separation < -kDeepOverlap;
+        cc.deepOverlap = cc.deepOverlap || ct.manifold.points[j].separation < -deepOverlapOf(ct);
     const Vec2 n = cc.normal;
     const Vec2 t = rightPerp(n);
     const Vec2 vA = bA.v, vB = bB.v;

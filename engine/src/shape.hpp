@@ -85,6 +85,28 @@ inline AABB shapeAABB(const Shape& s, const Transform& xf) {
     return {};
 }
 
+/// How thick a shape is (m): a round shape's diameter, a polygon's smallest
+/// width between a face and the centroid's opposite side, twice the centroid's
+/// distance to its nearest face plus its rounding (exact for boxes and regular
+/// polygons, an underestimate otherwise); a segment, which has no inside, is
+/// infinitely thick. What a contact's deep-overlap depth scales with
+/// (contact.hpp, kDeepFraction).
+inline float shapeThickness(const Shape& s) {
+    switch (s.type) {
+        case ShapeType::circle: return 2.0f * s.geometry.circle.radius;
+        case ShapeType::capsule: return 2.0f * s.geometry.capsule.radius;
+        case ShapeType::segment: break;
+        case ShapeType::polygon: {
+            const Polygon& p = s.geometry.polygon;
+            float nearest = INFINITY;
+            for (int i = 0; i < p.count; ++i)
+                nearest = std::min(nearest, dot(p.normals[i], p.vertices[i] - p.centroid));
+            return 2.0f * (nearest + p.radius);
+        }
+    }
+    return INFINITY;
+}
+
 /// Mass data of a shape with area; none for segments (they add no mass).
 inline std::optional<MassData> shapeMass(const Shape& s) {
     switch (s.type) {

@@ -108,9 +108,10 @@ void prepareWideContactLanes(const WorldState& w, const RowContext& x, const Wid
         if (ct.roundA) f |= kWideRoundA;
         if (ct.roundB) f |= kWideRoundB;
         pointCount[i] = ct.manifold.pointCount;
+        const float deep = deepOverlapOf(ct);
         for (int j = 0; j < pointCount[i]; ++j) {
             const ManifoldPoint& mp = ct.manifold.points[j];
-            if (mp.separation < -kDeepOverlap) f |= kWideDeep;
+            if (mp.separation < -deep) f |= kWideDeep;
             f |= j == 0 ? kWidePoint0 : kWidePoint1;
             Vec2 rA, rB;
             contactArms(ct, bA, bB, j, rA, rB);
