@@ -433,8 +433,9 @@ void collide(WorldState& w) {
         if (touching && !ct.isSensor && ct.manifold.pointCount > 0) {
             flags = kLookRow;
             if (ct.manifold.pointCount == 1) flags |= kLookOnePoint;
+            const float deep = deepOverlapOf(ct);
             for (int j = 0; j < ct.manifold.pointCount; ++j)
-                if (ct.manifold.points[j].separation < -deepOverlapOf(ct)) flags |= kLookDeep;
+                if (ct.manifold.points[j].separation < -deep) flags |= kLookDeep;
             const ContactSurface* surface = contactSurface(w, c);
             if (surface && surface->rollingResistance > 0.0f) flags |= kLookRollingSurface;
         }

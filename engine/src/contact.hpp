@@ -5,6 +5,7 @@
 // id (the warm start).
 #pragma once
 
+#include <array>
 #include <cstdint>
 
 #include "impulse2d/collision.hpp"
@@ -73,10 +74,17 @@ struct Contact {
     std::uint32_t stamp = 0;  ///< step stamp, to gather each active contact once
 };
 
+/// Contact::deepScale's depths (m), looked up rather than computed: the
+/// look of every contact and the preparation of every row read one.
+inline constexpr std::array<float, 256> kDeepDepths = [] {
+    std::array<float, 256> depths{};
+    for (int q = 0; q < 256; ++q)
+        depths[static_cast<std::size_t>(q)] = q == kFullDeepScale ? kDeepOverlap
+                                                                  : kDeepOverlap * (static_cast<float>(q) / 255.0f);
+    return depths;
+}();
 /// The depth beyond which a point of `c` is a deep overlap (m).
-inline float deepOverlapOf(const Contact& c) {
-    return c.deepScale == kFullDeepScale ? kDeepOverlap : kDeepOverlap * (static_cast<float>(c.deepScale) / 255.0f);
-}
+inline float deepOverlapOf(const Contact& c) { return kDeepDepths[c.deepScale]; }
 static_assert(sizeof(Contact) == 148, "memory per contact is held below Box2D 2.4.1's: grow it only knowingly");
 
 /// A contact's rolling resistance and tangent speed, and its rolling row's
