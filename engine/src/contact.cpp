@@ -329,7 +329,7 @@ void createContact(WorldState& w, int s1, int s2) {
     const float thinner = std::min(shapeThickness(a), shapeThickness(b));
     if (kDeepFraction * thinner < kDeepOverlap)  // (a NaN thickness keeps kDeepOverlap)
         ct.deepScale = static_cast<std::uint8_t>(
-            std::clamp(255.0f * kDeepFraction * thinner / kDeepOverlap, 1.0f, 254.0f));
+            std::clamp(255.0f * std::max(kDeepFraction * thinner, kMinDeepOverlap) / kDeepOverlap, 1.0f, 254.0f));
     else
         ct.deepScale = kFullDeepScale;
     ct.enableHitEvents = !ct.isSensor && (a.enableHitEvents || b.enableHitEvents);

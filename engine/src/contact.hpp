@@ -35,6 +35,10 @@ constexpr float kDeepOverlap = 0.05f;
 /// size), but columns of 50 boxes 5 and 10 cm across and pyramids of 0.1 m
 /// boxes stand as before (docs/validation.md, "Small bodies").
 constexpr float kDeepFraction = 0.2f;
+/// ... but never from less than this (m): a box resting on a plate 1 cm
+/// thick sags a few tenths of a millimetre under its own weight, and 35
+/// boxes stacked on it 1 cm; such sags stay soft rows.
+constexpr float kMinDeepOverlap = 0.01f;
 /// Contact::deepScale of a contact deep from kDeepOverlap itself.
 constexpr std::uint8_t kFullDeepScale = 255;
 

@@ -570,7 +570,7 @@ int main(int argc, char** argv) {
           "from 5 cm deep; bodies about 0.1 m across overlap mostly less than that, so their soft rows lifted\n"
           "them: two 0.1 m boxes created half inside each other on the ground ended 5 cm up, 1.33 times the\n"
           "(small) start energy. A contact between shapes thinner than 25 cm now counts as deep from a fifth of\n"
-          "the thinner one's thickness (a round shape's diameter, twice a polygon's centroid-to-nearest-face\n"
+          "the thinner one's thickness, but never from less than 1 cm (a round shape's diameter, twice a polygon's centroid-to-nearest-face\n"
           "distance plus its rounding; `kDeepFraction`, engine/src/contact.hpp; stored in a byte of the\n"
           "contact, which stays 148 bytes). The piles on the ground of \"Overlaps that separate gently\" scaled\n"
           "down (defaults, sleeping off, 20 s; boxes, circles and capsules, 8 and 20 of each, seeds 1 to 20),\n"
