@@ -85,11 +85,10 @@ inline AABB shapeAABB(const Shape& s, const Transform& xf) {
     return {};
 }
 
-/// How thick a shape is (m): a round shape's diameter, a polygon's smallest
-/// width between a face and the centroid's opposite side, twice the centroid's
-/// distance to its nearest face plus its rounding (exact for boxes and regular
-/// polygons, an underestimate otherwise); a segment, which has no inside, is
-/// infinitely thick. What a contact's deep-overlap depth scales with
+/// How thick a shape is (m): a round shape's diameter; for a polygon, twice
+/// the sum of the centroid's distance to its nearest face and the rounding
+/// (exact for boxes and regular polygons, an underestimate otherwise); a
+/// segment, which has no inside, is infinitely thick. What a contact's deep-overlap depth scales with
 /// (contact.hpp, kDeepFraction).
 inline float shapeThickness(const Shape& s) {
     switch (s.type) {
