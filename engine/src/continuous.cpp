@@ -343,6 +343,12 @@ void sweepBody(WorldState& w, Body& body, const Mover& m, Vec2 rewind) {
 
 }  // namespace
 
+bool needsSweep(const WorldState& w, const Body& body, const BodyState& s) {
+    if (body.type != BodyType::dynamic_body || body.reach < 0.0f) return false;
+    Mover m;
+    return makeMover(w, body, s, m);
+}
+
 void solveContinuous(WorldState& w, float dt) {
     // Non-bullets first: the bullets then meet them where they ended the step.
     struct Bullet {
@@ -351,9 +357,10 @@ void solveContinuous(WorldState& w, float dt) {
         Vec2 rewind;
     };
     std::vector<Bullet> bullets;  // allocates only in a step with a fast bullet
+    const std::vector<std::uint8_t>& sweeps = w.solver.sweeps;
     for (std::size_t i = 0; i < w.solver.stateBodies.size(); ++i) {
+        if (sweeps[i] == 0) continue;  // needsSweep said no in the write-back
         Body& body = w.bodies[w.solver.stateBodies[i]];
-        if (body.type != BodyType::dynamic_body || body.reach < 0.0f) continue;
         Mover m;
         if (!makeMover(w, body, w.solver.states[i], m)) continue;
         // The velocity the free acceleration added over the whole step.
