@@ -72,7 +72,8 @@ struct WorldSettings {
     /// Largest speed used to push overlapping bodies apart (m/s). Overlaps
     /// deeper than 5 cm in soft_step are pushed on pseudo-velocities that
     /// leave no velocity behind; those may move a body across gravity at
-    /// twice this (a sideways move lifts nothing), up or down at most this.
+    /// twice this, three times for a body resting on nothing (a sideways
+    /// move lifts nothing), up or down at most this.
     float maxPushSpeed = 3.0f;
     /// Contact stiffness (Hz) and damping ratio for soft_step. The stiffness is
     /// capped at an eighth of the substep rate (30 Hz at 60 Hz × 4 substeps),
