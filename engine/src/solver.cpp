@@ -413,7 +413,7 @@ void integrateVelocities(SolverArrays& s, float h, float maxSpeed, std::size_t b
 // The speed limits hold for the velocities the positions are integrated with,
 // after the constraints have acted: a joint or contact impulse can exceed what
 // integrateVelocities clamped (a fuzzed distance joint launched a body at
-// 1750 m/s and 55,000 rad/s). Angular: at most a quarter turn per (sub)step,
+// 1750 m/s and 55,000 rad/s). Angular: at most π/4 (an eighth of a turn) per (sub)step,
 // beyond which the rotation integration and the narrowphase lose the body's
 // orientation (Box2D v3 uses the same bound).
 constexpr float kMaxRotationPerStep = 0.25f * 3.14159265f;
