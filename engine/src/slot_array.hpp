@@ -51,8 +51,8 @@ struct SlotArray {
 
 /// Appends every live slot of `a` to `out`, in ascending order, found from
 /// the free list: the items are not read (in a large world each read was a
-/// cache miss: scanning 58,000 contacts' flags on the stepping thread was
-/// half of the narrowphase's serial part). `marks` is scratch.
+/// cache miss: scanning the contacts' flags on the stepping thread was half
+/// of the narrowphase's own samples on pyramid100). `marks` is scratch.
 template <class T>
 void appendLiveSlots(const SlotArray<T>& a, std::vector<std::uint8_t>& marks, std::vector<int>& out) {
     const int n = a.capacity();

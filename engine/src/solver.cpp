@@ -763,7 +763,8 @@ void solve(WorldState& w, float dt) {
     leaves.resize(n);
     // And whether continuous collision must sweep it: asked here for the same
     // reason, the stage then visits the fast bodies only (it read every awake
-    // body again, serially: 0.5 ms of many_pyramids' 22,000 boxes).
+    // body again on the stepping thread: 0.2 ms a step for many_pyramids'
+    // 22,000 boxes on a quiet machine).
     const bool continuous = set.enableContinuous;
     std::vector<std::uint8_t>& sweeps = s.sweeps;
     sweeps.resize(n);

@@ -46,7 +46,7 @@ struct WorldState {
     // Per-step lists of the narrowphase and the impact stage.
     std::vector<int> activeContacts;  ///< contacts with an awake body, updated this step, slot order
     std::vector<int> gatherScratch;
-    std::vector<std::uint8_t> gatherMarks;     ///< the free contact slots, marked while gathering (collide)
+    std::vector<std::uint8_t> gatherMarks;     ///< per contact slot: free, or gathered (collide's scratch)
     std::vector<std::uint8_t> collideUpdates;  ///< per gathered contact: what its manifold update found (contact.cpp)
     std::vector<ContactLook> collideLooks;     ///< per gathered contact: its look (contact.cpp)
     std::vector<std::uint32_t> impactChanged;
