@@ -480,8 +480,7 @@ void collide(WorldState& w) {
                 marks.assign(static_cast<std::size_t>(slots), 0);
                 for (const int c : scratch) marks[static_cast<std::size_t>(c)] = 1;
                 scratch.clear();
-                for (int c = 0; c < slots; ++c)
-                    if (marks[static_cast<std::size_t>(c)] != 0) scratch.push_back(c);
+                appendMarked(marks, scratch);
             } else {
                 std::sort(scratch.begin() + static_cast<std::ptrdiff_t>(roundBegin), scratch.end());
             }

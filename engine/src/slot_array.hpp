@@ -49,6 +49,13 @@ struct SlotArray {
     int capacity() const { return static_cast<int>(items.size()); }
 };
 
+/// Appends to `out`, in ascending order, every index whose byte in `marks` is set.
+inline void appendMarked(const std::vector<std::uint8_t>& marks, std::vector<int>& out) {
+    const int n = static_cast<int>(marks.size());
+    for (int i = 0; i < n; ++i)
+        if (marks[static_cast<std::size_t>(i)] != 0) out.push_back(i);
+}
+
 /// Appends every live slot of `a` to `out`, in ascending order, found from
 /// the free list: the items are not read (in a large world each read was a
 /// cache miss: scanning the contacts' flags on the stepping thread was half
@@ -62,8 +69,7 @@ void appendLiveSlots(const SlotArray<T>& a, std::vector<std::uint8_t>& marks, st
     }
     marks.assign(static_cast<std::size_t>(n), 1);
     for (const int f : a.freeSlots) marks[static_cast<std::size_t>(f)] = 0;
-    for (int i = 0; i < n; ++i)
-        if (marks[static_cast<std::size_t>(i)] != 0) out.push_back(i);
+    appendMarked(marks, out);
 }
 
 }  // namespace i2d::detail
