@@ -195,7 +195,7 @@ Update updateManifold(WorldState& w, int c) {
     // Seam ghosts were dropped when a kept manifold was computed.
     if (!reused) {
         computeManifold(w, ct, m);
-        dropSeamGhosts(w, ct, m);
+        if (ct.seamRule) dropSeamGhosts(w, ct, m);
     }
     // The game's pre-solve callback may switch a touching contact off for
     // this step (a one-way platform): it then has no points, no row, and
@@ -227,7 +227,7 @@ Update updateManifold(WorldState& w, int c) {
     }
     if (!reused) {
         ct.framed = false;
-        if (!ct.isSensor && canPersist(w.shapes[ct.shapeA], w.shapes[ct.shapeB])) recordManifoldFrame(ct, bodyA, bodyB);
+        if (ct.persists) recordManifoldFrame(ct, bodyA, bodyB);
     } else if (m.pointCount == 0) {
         ct.framed = false;  // switched off by the pre-solve callback
     }
@@ -326,6 +326,9 @@ void createContact(WorldState& w, int s1, int s2) {
     ct.isSensor = a.isSensor || b.isSensor;
     ct.roundA = a.type == ShapeType::circle;
     ct.roundB = b.type == ShapeType::circle;
+    ct.persists = canPersist(a, b);
+    ct.seamRule = hasSeamRule(a, b, w.bodies[a.body].type == BodyType::static_body,
+                              w.bodies[b.body].type == BodyType::static_body);
     const float thinner = std::min(shapeThickness(a), shapeThickness(b));
     if (kDeepFraction * thinner < kDeepOverlap)  // (a NaN thickness keeps kDeepOverlap)
         ct.deepScale = static_cast<std::uint8_t>(

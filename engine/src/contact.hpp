@@ -65,6 +65,15 @@ struct Contact {
     /// Shape A, B is a circle, whose contact point does not turn with it
     /// (contact_solver.hpp): kept here so that preparing the rows reads no shape.
     bool roundA : 1 = false, roundB : 1 = false;
+    /// The pair is flat and solid (canPersist): a manifold of it may be
+    /// reused (contact_persistence.hpp). Fixed for the contact's life, as the
+    /// shapes' types and sensor flags are, so the narrowphase reads no shape for it.
+    bool persists : 1 = false;
+    /// A seam rule may drop points of this pair's manifolds (seams.cpp,
+    /// hasSeamRule): a chain segment, a two-sided segment, or a static body
+    /// on one side only. A body's type change destroys its contacts, so this
+    /// too is fixed for the contact's life; most pairs of a pile have none.
+    bool seamRule : 1 = false;
     /// How deep a point must be to count as a deep overlap, in 1/255 of
     /// kDeepOverlap (kFullDeepScale: kDeepOverlap itself); set from the two
     /// shapes' thickness when the contact is created (deepOverlapOf).

@@ -253,6 +253,11 @@ void keepSegmentSide(const WorldState& w, const Shape& segment, const Shape& oth
     if ((side > 0.0f ? 1.0f : -1.0f) * cross(e, n) < 0.0f) m.pointCount = 0;
 }
 
+bool hasSeamRule(const Shape& a, const Shape& b, bool aStatic, bool bStatic) {
+    if (a.isSensor || b.isSensor) return false;
+    return a.type == ShapeType::segment || a.chainSegment || b.chainSegment || aStatic != bStatic;
+}
+
 void dropSeamGhosts(const WorldState& w, const Contact& c, Manifold& m) {
     if (m.pointCount == 0 || c.isSensor) return;
     const Shape& shapeA = w.shapes[c.shapeA];

@@ -31,6 +31,7 @@
 // substep loops read BodyState, BodyIntegration and the constraint rows: all
 // contiguous arrays.
 #include <algorithm>
+#include <atomic>
 #include <chrono>
 #include <cmath>
 #include <cstddef>
@@ -346,6 +347,21 @@ inline void payPushLift(const SolverArrays& s, std::size_t i, BodyState& st, Vec
     st.v += fallPaidForLift(-v, gravity, lift) * up;
 }
 
+/// Lanes 0 to 2 of the result hold where v.x, v.y or w of the state is not
+/// finite: x·0 is 0 for a finite x and NaN otherwise, and NaN ≠ 0. One
+/// four-float load, multiply and compare per body with no dependency between
+/// bodies (the masks are or-ed); summed as floats and tested with isfinite,
+/// each body waited on two additions, and the scans, three per substep, took
+/// 4 % of a 1,000-circle scene's step. Lane 3 is upBeforeRelax, not tested.
+inline Mask4 nonFiniteLanes(const BodyState& st) {
+    static_assert(offsetof(BodyState, v) == 0 && offsetof(BodyState, w) == 8 &&
+                  offsetof(BodyState, upBeforeRelax) == 12);
+    return nonZero(load4(&st.v.x) * splat(0.0f));
+}
+constexpr int kVelocityLanes = 0b0111;
+/// Whether a state's velocity is not finite (nonFiniteLanes, one body).
+inline bool nonFiniteVelocity(const BodyState& st) { return (laneBits(nonFiniteLanes(st)) & kVelocityLanes) != 0; }
+
 /// integrateVelocities (without a lift to pay) for the four bodies at
 /// `states` and `in`, in Float4, when all four are moved by forces and none ends
 /// faster than maxSpeed (else false, nothing changed): the scalar loop's
@@ -368,6 +384,8 @@ bool integrateFourVelocities(BodyState* states, const BodyIntegration* in, float
     float* f = &states[0].v.x;
     Float4 vx = load4(f), vy = load4(f + 8), w = load4(f + 16), up = load4(f + 24);
     transpose(vx, vy, w, up);
+    const Float4 zero = splat(0.0f);
+    if (laneBits(nonZero(vx * zero + vy * zero + w * zero)) != 0) return false;  // not finite: the scalar loop says so
     const Float4 step = splat(h);
     vx = (vx + step * ax) * linear;
     vy = (vy + step * ay) * linear;
@@ -385,11 +403,15 @@ bool integrateFourVelocities(BodyState* states, const BodyIntegration* in, float
 /// the workers may share). `payLift`: pay the last substep's push lift first
 /// (soft_step, payPushLift), up being against gravity.
 void integrateVelocities(SolverArrays& s, float h, float maxSpeed, std::size_t begin, std::size_t end, bool payLift,
-                         Vec2 up) {
+                         Vec2 up, std::atomic<bool>& nonFinite) {
     auto integrate = [&](std::size_t i) {
         const BodyIntegration& in = s.integration[i];
-        if (!in.movedByForces) return;
         BodyState& st = s.states[i];
+        if (nonFiniteVelocity(st)) {  // left as it is for stopNonFiniteBodies
+            nonFinite.store(true, std::memory_order_relaxed);
+            return;
+        }
+        if (!in.movedByForces) return;
         if (payLift) payPushLift(s, i, st, in.linearAcceleration, up, h);
         // Eq. 3.2.1-3.2.2 in velocities: v += Δt·(g·scale + F/m), ω += Δt·τ/I.
         Vec2 v = st.v + h * in.linearAcceleration;
@@ -435,8 +457,12 @@ bool integrateFourPositions(BodyState* states, float h, float maxSpeed2, float m
     Float4 vx = load4(f), vy = load4(f + 8), w = load4(f + 16), up = load4(f + 24);
     transpose(vx, vy, w, up);
     const Float4 fast = vx * vx + vy * vy;  // lengthSquared, as limitSpeed
-    const Float4 absW = select(w < splat(0.0f), -w, w);
-    if (laneBits((fast > splat(maxSpeed2)) | (absW > splat(maxAngular))) != 0) return false;
+    const Float4 zero = splat(0.0f);
+    const Float4 absW = select(w < zero, -w, w);
+    // Limited, or not finite (the scalar loop says so).
+    if (laneBits((fast > splat(maxSpeed2)) | (absW > splat(maxAngular)) | nonZero(vx * zero + vy * zero + w * zero)) !=
+        0)
+        return false;
     Float4 dpx = load4(f + 4), dpy = load4(f + 12), c = load4(f + 20), sn = load4(f + 28);
     transpose(dpx, dpy, c, sn);
     const Float4 step = splat(h);
@@ -455,10 +481,15 @@ bool integrateFourPositions(BodyState* states, float h, float maxSpeed2, float m
     return true;
 }
 
-void integratePositions(SolverArrays& s, float h, float maxSpeed, std::size_t begin, std::size_t end) {
+void integratePositions(SolverArrays& s, float h, float maxSpeed, std::size_t begin, std::size_t end,
+                        std::atomic<bool>& nonFinite) {
     const float maxAngular = kMaxRotationPerStep / h;
     auto integrate = [&](std::size_t i) {
         BodyState& st = s.states[i];
+        if (nonFiniteVelocity(st)) {  // not moved; stopNonFiniteBodies stops it
+            nonFinite.store(true, std::memory_order_relaxed);
+            return;
+        }
         clampVelocity(st, maxSpeed, maxAngular);
         // Eq. 3.2.3-3.2.4 with the new velocities.
         st.dp = mulAdd(st.dp, h, st.v);
@@ -496,19 +527,6 @@ void integratePositionsPushed(SolverArrays& s, float h, float maxSpeed, Vec2 up)
         st.dq = integrateRotation(st.dq, h * moved.w);
     }
 }
-
-/// Lanes 0 to 2 of the result hold where v.x, v.y or w of the state is not
-/// finite: x·0 is 0 for a finite x and NaN otherwise, and NaN ≠ 0. One
-/// four-float load, multiply and compare per body with no dependency between
-/// bodies (the masks are or-ed); summed as floats and tested with isfinite,
-/// each body waited on two additions, and the scans, three per substep, took
-/// 4 % of a 1,000-circle scene's step. Lane 3 is upBeforeRelax, not tested.
-inline Mask4 nonFiniteLanes(const BodyState& st) {
-    static_assert(offsetof(BodyState, v) == 0 && offsetof(BodyState, w) == 8 &&
-                  offsetof(BodyState, upBeforeRelax) == 12);
-    return nonZero(load4(&st.v.x) * splat(0.0f));
-}
-constexpr int kVelocityLanes = 0b0111;
 
 /// A sweep that left a body's velocity non-finite stops that body and drops
 /// the accumulated impulses of every row on it, so all bodies stay finite.
@@ -659,22 +677,35 @@ void solve(WorldState& w, float dt) {
     jointCtx.jointSoft = makeSoft(std::min(set.jointHertz, 0.25f * jointCtx.invH), set.jointDampingRatio, h);
     jointCtx.pushFactor = set.pushFactor;
     jointCtx.maxLinearSpeed = maxSpeed;
+    // Where a sweep left a velocity non-finite (stopNonFiniteBodies). The
+    // soft step finds it where the next integration reads every velocity
+    // anyway (integrateVelocities, integratePositions: a body found so is
+    // left as it is, and the bodies are stopped before anything else reads
+    // them), and once after its last sweep. A scan of its own after each of
+    // a substep's three sweeps was 3 % of a 1,000-circle scene's step, and
+    // serial; the other modes keep it.
+    std::atomic<bool> nonFinite{false};
+    auto stopIfNonFinite = [&] {
+        if (!nonFinite.load(std::memory_order_relaxed) && !nonFiniteVelocity(s.states[n])) return;
+        stopNonFiniteBodies(s);
+        nonFinite.store(false, std::memory_order_relaxed);
+    };
     // A world without joints pays nothing for them, the check included.
     auto joints = [&](SolvePass pass) {
         if (s.joints.empty() && s.wideRevolutes.empty()) return;
         jointCtx.pass = pass;
         solveJoints(w, jointCtx);
-        stopNonFiniteBodies(s);
+        if (!soft) stopNonFiniteBodies(s);
     };
     auto contacts = [&](SolvePass pass, float step) {
         if (s.rowCount == 0) return;  // a world without contacts pays nothing for them
         solveContacts(w, step, pass);
-        stopNonFiniteBodies(s);
+        if (!soft) stopNonFiniteBodies(s);
     };
     auto warmStart = [&] {
         warmStartContacts(w);
         warmStartJoints(w);
-        stopNonFiniteBodies(s);
+        if (!soft) stopNonFiniteBodies(s);
     };
 
     // Integration body by body, on every worker when the step is large
@@ -686,15 +717,17 @@ void solve(WorldState& w, float dt) {
     auto velocities = [&](float step, bool payLift) {
         auto range = [&](int b, int e) {
             integrateVelocities(s, step, maxSpeed, static_cast<std::size_t>(b), static_cast<std::size_t>(e), payLift,
-                                up);
+                                up, nonFinite);
         };
         w.runner.run(static_cast<int>(n), kBodyGrain, range);
+        stopIfNonFinite();
     };
     auto positions = [&](float step) {
         auto range = [&](int b, int e) {
-            integratePositions(s, step, maxSpeed, static_cast<std::size_t>(b), static_cast<std::size_t>(e));
+            integratePositions(s, step, maxSpeed, static_cast<std::size_t>(b), static_cast<std::size_t>(e), nonFinite);
         };
         w.runner.run(static_cast<int>(n), kBodyGrain, range);
+        stopIfNonFinite();
     };
     if (soft) {
         for (int i = 0; i < substeps; ++i) {
@@ -704,6 +737,7 @@ void solve(WorldState& w, float dt) {
             for (int pass = 0; pass < kJointSolvePasses; ++pass) joints(SolvePass::soft_bias);
             contacts(SolvePass::soft_bias, h);
             if (s.anyDeepOverlap) {
+                stopNonFiniteBodies(s);  // (integratePositionsPushed does not look)
                 // The push reads the load its rows carry (deep_overlap.cpp).
                 if (s.wideContactsActive) readWideNormalImpulses(s, s.deepRows);
                 pushDeepOverlaps(w, h);
@@ -716,6 +750,7 @@ void solve(WorldState& w, float dt) {
             joints(SolvePass::soft_relax);
             contacts(i + 1 == substeps ? SolvePass::soft_relax_last : SolvePass::soft_relax, h);
         }
+        stopNonFiniteBodies(s);    // the last sweep's, before the impulses are stored
         if (s.wideContactsOnly) {  // blocks without rows store into their contacts
             auto store = [&](int b, int e) { storeWideContacts(s, w.contacts, b, e); };
             w.runner.run(static_cast<int>(s.wideContacts.size()), kPackGrain, store);
