@@ -153,21 +153,26 @@ float turnBoundOf(Rot dq) { return dq.c >= 0.0f ? 1.5707964f * std::abs(dq.s) : 
 /// it moved less than the speculative distance (a surface it could reach was
 /// then within the speculative distance at the step's start and has a
 /// contact).
-bool makeMover(const WorldState& w, const Body& body, const BodyState& s, Mover& m) {
-    // A body whose points moved less than the speculative distance, both in
-    // the solver and in the impact stage's shift, met every surface it could
-    // reach through a contact made at the step's start (a landing box whose
-    // impact shifted it onto the ground is not swept).
+/// Whether some point of the body moved at least the speculative distance,
+/// in the solver or in the impact stage's shift: one that moved less met
+/// every surface it could reach through a contact made at the step's start
+/// (a landing box whose impact shifted it onto the ground is not swept).
+bool movedBeyondContacts(const WorldState& w, const Body& body, const BodyState& s) {
     const float spec = w.settings.speculativeDistance;
     const bool shifted = body.startStamp == w.stepStamp;
-    const Vec2 shiftedCenter = body.center - s.dp;
     const Rot shift = shifted ? invMulRot(body.startQ, invMulRot(s.dq, body.xf.q)) : Rot{};
     const float solverBound = length(s.dp) + turnBoundOf(s.dq) * body.reach;
-    const float shiftBound = shifted ? length(shiftedCenter - body.startCenter) + turnBoundOf(shift) * body.reach
+    const float shiftBound = shifted ? length((body.center - s.dp) - body.startCenter) + turnBoundOf(shift) * body.reach
                                      : 0.0f;
-    if (solverBound <= spec && shiftBound <= spec) return false;
+    return !(solverBound <= spec && shiftBound <= spec);
+}
+
+bool makeMover(const WorldState& w, const Body& body, const BodyState& s, Mover& m) {
+    if (!movedBeyondContacts(w, body, s)) return false;
     // Swept from the step's start: before the solver's motion (dp, dq), and
     // before the impact stage's shift when that moved the body.
+    const bool shifted = body.startStamp == w.stepStamp;
+    const Vec2 shiftedCenter = body.center - s.dp;
     const Vec2 c0 = shifted ? body.startCenter : shiftedCenter;
     const Rot dq = shifted ? invMulRot(body.startQ, body.xf.q) : s.dq;
     const Vec2 dc = body.center - c0;
@@ -344,9 +349,9 @@ void sweepBody(WorldState& w, Body& body, const Mover& m, Vec2 rewind) {
 }  // namespace
 
 bool needsSweep(const WorldState& w, const Body& body, const BodyState& s) {
-    if (body.type != BodyType::dynamic_body || body.reach < 0.0f) return false;
-    Mover m;
-    return makeMover(w, body, s, m);
+    // makeMover's test without its sweep (two atan2 per moving body, 2 % of a
+    // swinging joint grid's step when asked of every body).
+    return body.type == BodyType::dynamic_body && body.reach >= 0.0f && movedBeyondContacts(w, body, s);
 }
 
 void solveContinuous(WorldState& w, float dt) {
