@@ -227,7 +227,7 @@ Update updateManifold(WorldState& w, int c) {
     }
     if (!reused) {
         ct.framed = false;
-        if (ct.persists) recordManifoldFrame(ct, bodyA, bodyB);
+        if (ct.persists && m.pointCount > 0) recordManifoldFrame(ct, bodyA, bodyB);  // (no points: not framed)
     } else if (m.pointCount == 0) {
         ct.framed = false;  // switched off by the pre-solve callback
     }
