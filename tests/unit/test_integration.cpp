@@ -98,7 +98,7 @@ TEST(Integration, StopNonFiniteBodiesStopsThemAndDropsTheirRowsImpulses) {
         cc.points[0].normalImpulse = 3.0f;
         cc.points[0].tangentImpulse = 1.0f;
     }
-    s.constraints[0].a = 5, s.constraints[0].b = 6;  // on the non-finite body
+    s.constraints[0].a = 5, s.constraints[0].b = 6;        // on the non-finite body
     s.constraints[1].a = 1, s.constraints[1].b = kBodies;  // on body 1 and the zero state
     stopNonFiniteBodies(s);
     EXPECT_EQ(s.states[5].v.x, 0.0f);
