@@ -31,10 +31,12 @@ struct Body {
     int solverIndex = kNullIndex;  ///< index into the solver arrays during a step
     bool awake = true;
     bool enabled = true;  ///< false: out of the simulation and the broadphase (World::disableBody)
-    Vec2 v{};             ///< velocity of the centre of mass (m/s)
-    float w = 0.0f;       ///< angular velocity (rad/s)
-    Vec2 force{};         ///< accumulated for the next step (N)
-    float torque = 0.0f;  ///< N·m
+    bool fixedRotation = false;
+    bool isBullet = false;  ///< also swept against non-bullet dynamic bodies (continuous.cpp)
+    Vec2 v{};               ///< velocity of the centre of mass (m/s)
+    float w = 0.0f;         ///< angular velocity (rad/s)
+    Vec2 force{};           ///< accumulated for the next step (N)
+    float torque = 0.0f;    ///< N·m
     float mass = 0.0f;
     float inertia = 0.0f;  ///< about the centre of mass
     float linearDamping = 0.0f, angularDamping = 0.0f;
@@ -59,11 +61,16 @@ struct Body {
     int awakeIndex = kNullIndex;   ///< position in IslandSet::awakeBodies
     int sleepIsland = kNullIndex;  ///< sleeping island this body belongs to
     BodyType type = BodyType::static_body;
-    bool fixedRotation = false;
-    bool isBullet = false;  ///< also swept against non-bullet dynamic bodies (continuous.cpp)
     bool enableSleep = true;
     bool alive = false;
     int firstShape = kNullIndex, lastShape = kNullIndex;  ///< the body's shapes, in creation order (shape.hpp)
+    /// Where the body was (origin and rotation) when its shapes' boxes were
+    /// last measured inside their fat boxes, and the least room they had
+    /// there (m; 0: measure again). Until its shapes may have moved that far
+    /// the boxes still hold them, and leftFatBox computes none (broad_phase.cpp).
+    Vec2 boxOrigin{};
+    Rot boxRotation{};
+    float boxSlack = 0.0f;
     std::uintptr_t userData = 0;
     std::vector<int> contacts;  ///< contact slots
     std::vector<int> joints;    ///< joint slots, in creation order

@@ -80,9 +80,10 @@ void destroyProxy(WorldState& w, int shape);
 /// dt, a box that must move is stretched ahead along the body's velocity.
 void synchronizeProxies(WorldState& w, int body, float dt = 0.0f);
 /// Whether a shape of the body left its fat box (synchronizeProxies then
-/// moves it). Reads the world only: the solve's write-back asks it of every
-/// awake body on the workers, where the body is in the cache (proxyLeaves).
-bool leftFatBox(const WorldState& w, const Body& body);
+/// moves it). Reads the world and writes this body's Body::boxSlack and
+/// pose only: the solve's write-back asks it of every awake body on the
+/// workers, where the body is in the cache (proxyLeaves).
+bool leftFatBox(const WorldState& w, Body& body);
 /// synchronizeProxies for the awake bodies the step's write-back found
 /// outside their fat boxes (BroadPhase::proxyLeaves) or continuous collision
 /// moved since, in the awake list's order.

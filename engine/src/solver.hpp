@@ -26,7 +26,7 @@ struct ColourKey {
 
 /// What preparing a contact's row reads of one of its bodies (the arms and the
 /// inverse masses), kept per body slot for this step's states
-/// (SolverArrays::rowBodies): 32 bytes read in place of a 208-byte body,
+/// (SolverArrays::rowBodies): 32 bytes read in place of a 224-byte body,
 /// which in a large scene was a cache miss a contact.
 struct RowBody {
     Vec2 center{};       ///< centre of mass, world, at the step's start

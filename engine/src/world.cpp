@@ -82,6 +82,10 @@ void World::setSettings(const WorldSettings& s) {
     w.checkUnlocked();
     validateSettings(s);
     bool sleepTurnedOff = w.settings.enableSleep && !s.enableSleep;
+    // The room each body's shapes had in their fat boxes was measured with
+    // the old speculative distance (Body::boxSlack): measure it again.
+    if (s.speculativeDistance != w.settings.speculativeDistance)
+        for (int b = 0; b < w.bodies.capacity(); ++b) w.bodies[b].boxSlack = 0.0f;
     w.settings = s;
     if (sleepTurnedOff) {
         for (int b = 0; b < w.bodies.capacity(); ++b)

@@ -306,6 +306,7 @@ void World::setMassData(BodyId id, const MassData& md) {
     body.invInertia = (md.rotationalInertia > 0.0f && !body.fixedRotation) ? 1.0f / md.rotationalInertia : 0.0f;
     Vec2 oldCenter = body.center;
     body.localCenter = md.center;
+    body.reach = detail::solidReach(state(), body);  // measured from the centre of mass
     body.center = transformPoint(body.xf, body.localCenter);
     body.v += cross(body.w, body.center - oldCenter);
 }
