@@ -21,12 +21,12 @@ namespace {
 constexpr float kDt = 1.0f / 60.0f;
 
 struct Creep {
-    Vec2 velocity{0.06f, 0.0f};  ///< 1 mm a step
-    float spin = 0.0f;           ///< rad/s
+    Vec2 velocity{0.06f, 0.0f};                       ///< 1 mm a step
+    float spin = 0.0f;                                ///< rad/s
     std::optional<Vec2> centerOfMass = std::nullopt;  ///< local, set by setMassData; else the shape's own centre
-    bool plank = false;                ///< a 4 m plank standing on end at the origin, instead of a unit box
-    Vec2 boxCenter{};                  ///< where the unit box lies in the body (local)
-    float wallFace = 2.0f;  ///< x of the wall's left face (m)
+    bool plank = false;                 ///< a 4 m plank standing on end at the origin, instead of a unit box
+    Vec2 boxCenter{};                   ///< where the unit box lies in the body (local)
+    float wallFace = 2.0f;              ///< x of the wall's left face (m)
     float wallY = 0.0f;                 ///< the wall's centre, 10 m tall
     float speculativeDistance = 0.02f;  ///< the world's (m)
     int steps = 3500;
@@ -51,7 +51,8 @@ CreepResult creepIntoWall(const Creep& c) {
     BodyId wall = world.createBody({});
     world.createPolygonShape(wall, {}, makeOffsetBox(0.5f, 5.0f, {c.wallFace + 0.5f, c.wallY}, 0.0f));
     BodyId body = world.createBody({.type = BodyType::dynamic_body, .position = {0.0f, 0.0f}});
-    const Polygon shape = c.plank ? makeOffsetBox(0.05f, 1.95f, {0.0f, 0.0f}, 0.0f) : makeOffsetBox(0.5f, 0.5f, c.boxCenter, 0.0f);
+    const Polygon shape = c.plank ? makeOffsetBox(0.05f, 1.95f, {0.0f, 0.0f}, 0.0f)
+                                  : makeOffsetBox(0.5f, 0.5f, c.boxCenter, 0.0f);
     world.createPolygonShape(body, {.density = 1.0f, .friction = 0.0f}, shape);
     if (c.centerOfMass) world.setMassData(body, {.mass = 1.0f, .center = *c.centerOfMass, .rotationalInertia = 0.2f});
     world.setLinearVelocity(body, c.velocity);
@@ -88,8 +89,8 @@ TEST(BroadPhase, APlankTurningAboutItsOriginMeetsTheWall) {
     // 1 mm a step): its origin never moves, so only the turn in the bound
     // can tell that its box left the fat box. Its upper end meets the wall
     // 77° on.
-    const auto [past, touched, missed] = creepIntoWall(
-        {.velocity = {0.0f, 0.0f}, .spin = -0.03f, .plank = true, .wallFace = 1.9f});
+    const auto [past, touched,
+                missed] = creepIntoWall({.velocity = {0.0f, 0.0f}, .spin = -0.03f, .plank = true, .wallFace = 1.9f});
     EXPECT_TRUE(touched);
     EXPECT_EQ(missed, 0);
     EXPECT_LT(past, 0.005f);
