@@ -149,10 +149,6 @@ struct Mover {
 /// without atan2 for the many bodies that are not fast.
 float turnBoundOf(Rot dq) { return dq.c >= 0.0f ? 1.5707964f * std::abs(dq.s) : 3.1415927f; }
 
-/// The motion of an awake body over the step, or false when every point of
-/// it moved less than the speculative distance (a surface it could reach was
-/// then within the speculative distance at the step's start and has a
-/// contact).
 /// Whether some point of the body moved at least the speculative distance,
 /// in the solver or in the impact stage's shift: one that moved less met
 /// every surface it could reach through a contact made at the step's start
@@ -167,6 +163,10 @@ bool movedBeyondContacts(const WorldState& w, const Body& body, const BodyState&
     return !(solverBound <= spec && shiftBound <= spec);
 }
 
+/// The motion of an awake body over the step, or false when every point of
+/// it moved less than the speculative distance (a surface it could reach was
+/// then within the speculative distance at the step's start and has a
+/// contact).
 bool makeMover(const WorldState& w, const Body& body, const BodyState& s, Mover& m) {
     if (!movedBeyondContacts(w, body, s)) return false;
     // Swept from the step's start: before the solver's motion (dp, dq), and
