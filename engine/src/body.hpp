@@ -9,6 +9,7 @@
 //                    velocity integration, gathered once per step
 #pragma once
 
+#include <cmath>
 #include <cstdint>
 #include <limits>
 #include <vector>
@@ -75,6 +76,11 @@ struct Body {
     std::vector<int> contacts;  ///< contact slots
     std::vector<int> joints;    ///< joint slots, in creation order
 };
+
+/// A bound on |Δθ| for a rotation dq: |Δθ| ≤ (π/2)·|sin Δθ| while the turn
+/// is under a quarter, π beyond; without atan2, for the many bodies that
+/// hardly turn (continuous collision, the broadphase's fat boxes).
+inline float turnBoundOf(Rot dq) { return dq.c >= 0.0f ? 1.5707964f * std::abs(dq.s) : 3.1415927f; }
 
 /// Solver state of one awake body during a step. The constraint passes of
 /// every substep read and write only this array (and the constraint rows),

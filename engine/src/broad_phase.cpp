@@ -108,8 +108,7 @@ void synchronizeProxies(WorldState& w, int b, float dt) {
 bool leftFatBox(const WorldState& w, Body& body) {
     if (!body.enabled) return false;
     if (body.boxSlack > 0.0f) {
-        const Rot turn = invMulRot(body.boxRotation, body.xf.q);
-        const float angle = turn.c >= 0.0f ? 1.5707964f * std::abs(turn.s) : 3.1415927f;  // ≥ |Δθ|
+        const float angle = turnBoundOf(invMulRot(body.boxRotation, body.xf.q));
         const float moved = length(body.xf.p - body.boxOrigin) + angle * (body.reach + length(body.localCenter));
         if (moved < body.boxSlack) return false;
     }

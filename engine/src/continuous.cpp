@@ -145,10 +145,6 @@ struct Mover {
     float turnBound = 0.0f;  ///< |Δθ| bound (rad)
 };
 
-/// |Δθ| ≤ (π/2)·|sin Δθ| while the turn is under a quarter: a bound
-/// without atan2 for the many bodies that are not fast.
-float turnBoundOf(Rot dq) { return dq.c >= 0.0f ? 1.5707964f * std::abs(dq.s) : 3.1415927f; }
-
 /// Whether some point of the body moved at least the speculative distance,
 /// in the solver or in the impact stage's shift: one that moved less met
 /// every surface it could reach through a contact made at the step's start

@@ -8,6 +8,13 @@ namespace i2d::detail {
 
 namespace {
 
+/// The lanes of four bodies (their velocities transposed) where v.x, v.y or
+/// ω is not finite (as nonFiniteLanes: x·0 is NaN for a non-finite x).
+Mask4 nonFiniteVelocities(Float4 vx, Float4 vy, Float4 w) {
+    const Float4 zero = splat(0.0f);
+    return nonZero(vx * zero + vy * zero + w * zero);
+}
+
 /// integrateVelocities (without a lift to pay) for the four bodies at
 /// `states` and `in`, in Float4, when all four are moved by forces and none ends
 /// faster than maxSpeed (else false, nothing changed): the scalar loop's
@@ -30,8 +37,7 @@ bool integrateFourVelocities(BodyState* states, const BodyIntegration* in, float
     float* f = &states[0].v.x;
     Float4 vx = load4(f), vy = load4(f + 8), w = load4(f + 16), up = load4(f + 24);
     transpose(vx, vy, w, up);
-    const Float4 zero = splat(0.0f);
-    if (laneBits(nonZero(vx * zero + vy * zero + w * zero)) != 0) return false;  // not finite: the scalar loop says so
+    if (laneBits(nonFiniteVelocities(vx, vy, w)) != 0) return false;  // not finite: the scalar loop says so
     const Float4 step = splat(h);
     vx = (vx + step * ax) * linear;
     vy = (vy + step * ay) * linear;
@@ -57,11 +63,9 @@ bool integrateFourPositions(BodyState* states, float h, float maxSpeed2, float m
     Float4 vx = load4(f), vy = load4(f + 8), w = load4(f + 16), up = load4(f + 24);
     transpose(vx, vy, w, up);
     const Float4 fast = vx * vx + vy * vy;  // lengthSquared, as limitSpeed
-    const Float4 zero = splat(0.0f);
-    const Float4 absW = select(w < zero, -w, w);
+    const Float4 absW = select(w < splat(0.0f), -w, w);
     // Limited, or not finite (the scalar loop says so).
-    if (laneBits((fast > splat(maxSpeed2)) | (absW > splat(maxAngular)) | nonZero(vx * zero + vy * zero + w * zero)) !=
-        0)
+    if (laneBits((fast > splat(maxSpeed2)) | (absW > splat(maxAngular)) | nonFiniteVelocities(vx, vy, w)) != 0)
         return false;
     Float4 dpx = load4(f + 4), dpy = load4(f + 12), c = load4(f + 20), sn = load4(f + 28);
     transpose(dpx, dpy, c, sn);
