@@ -71,14 +71,20 @@ void packWideContactBlock(SolverArrays& s, int block, int start, int last) {
 }
 
 void prepareWideContactLanes(const WorldState& w, const RowContext& x, const WideLaneTarget* targets, int count) {
-    // What each lane reads of its contact and bodies, one lane at a time, as
-    // prepareContactRow reads it; unused lanes stay zero (their results are
-    // not written).
-    alignas(16) float nx[4]{}, ny[4]{}, mA[4]{}, iA[4]{}, mB[4]{}, iB[4]{}, biasRate[4]{};
-    alignas(16) float rAx[2][4]{}, rAy[2][4]{}, rBx[2][4]{}, rBy[2][4]{}, separation[2][4]{};
-    int a[4]{}, b[4]{}, pointCount[4]{};
-    float friction[4]{}, tangentSpeed[4]{}, normalImpulse[2][4]{}, tangentImpulse[2][4]{};
-    std::uint32_t flags[4]{};
+    // Each lane's contact and bodies are read one lane at a time, as
+    // prepareContactRow reads them; what the arithmetic below does not change
+    // goes straight to the lane, the rest to these arrays as well. Lanes past
+    // `count` stay zero (their results are not written).
+    alignas(16) float nx[4], ny[4], mA[4], iA[4], mB[4], iB[4], biasRate[4];
+    alignas(16) float rAx[2][4], rAy[2][4], rBx[2][4], rBy[2][4], separation[2][4];
+    std::uint32_t flags[4];
+    int pointCount[4];
+    if (count < 4) {
+        for (float* a : {nx, ny, mA, iA, mB, iB, biasRate}) std::fill_n(a, 4, 0.0f);
+        for (auto* a : {rAx, rAy, rBx, rBy, separation}) std::fill_n(&a[0][0], 8, 0.0f);
+        std::fill_n(flags, 4, 0u);
+        std::fill_n(pointCount, 4, 0);
+    }
     const std::vector<RowBody>& rowBodies = w.solver.rowBodies;
     // A body with a state is read from its RowBody, one without (static or
     // asleep: immovable this step, few and shared by many contacts) from
@@ -91,35 +97,52 @@ void prepareWideContactLanes(const WorldState& w, const RowContext& x, const Wid
         return immovable;
     };
     const bool shifted = w.startsShiftedAt == w.stepStamp;  // impactShift reads the bodies only then
+    const ContactSurface* surfaces = w.contactSurfaces.empty() ? nullptr : w.contactSurfaces.data();
     for (int i = 0; i < count; ++i) {
         const int c = targets[i].contact;
+        WideContactBlock& k = *targets[i].block;
+        WideContactCold& cold = *targets[i].cold;
+        const int lane = targets[i].lane;
         const Contact& ct = w.contacts[c];
         const RowBody bA = rowBody(ct.bodyA), bB = rowBody(ct.bodyB);
-        a[i] = bA.state, b[i] = bB.state;
-        mA[i] = bA.invMass, iA[i] = bA.invInertia, mB[i] = bB.invMass, iB[i] = bB.invInertia;
+        k.a[lane] = bA.state, k.b[lane] = bB.state;
+        cold.row[lane] = -1;
+        cold.contact[lane] = c;
+        mA[i] = k.mA[lane] = bA.invMass, iA[i] = k.iA[lane] = bA.invInertia;
+        mB[i] = k.mB[lane] = bB.invMass, iB[i] = k.iB[lane] = bB.invInertia;
         const Vec2 n = ct.manifold.normal;
-        nx[i] = n.x, ny[i] = n.y;
-        friction[i] = ct.friction;
-        const ContactSurface* surface = contactSurface(w, c);
-        tangentSpeed[i] = surface ? surface->tangentSpeed : 0.0f;
+        nx[i] = k.nx[lane] = n.x, ny[i] = k.ny[lane] = n.y;
+        k.friction[lane] = ct.friction;
+        k.tangentSpeed[lane] = surfaces ? surfaces[c].tangentSpeed : 0.0f;
         const bool immovable = againstImmovable(bA.invMass, bB.invMass);
         biasRate[i] = (immovable ? x.staticSoft : x.dynamicSoft).biasRate;
         std::uint32_t f = immovable ? kWideImmovableSide : 0u;
         if (ct.roundA) f |= kWideRoundA;
         if (ct.roundB) f |= kWideRoundB;
-        pointCount[i] = ct.manifold.pointCount;
+        const int points = pointCount[i] = ct.manifold.pointCount;
         const float deep = deepOverlapOf(ct);
-        for (int j = 0; j < pointCount[i]; ++j) {
+        for (int j = 0; j < 2; ++j) {
+            WideContactPoint& p = k.points[j];
+            cold.maxNormalImpulse[j][lane] = 0.0f;
+            if (j >= points) {
+                // No such point: zero in the lane, as in packLane.
+                rAx[j][i] = rAy[j][i] = rBx[j][i] = rBy[j][i] = separation[j][i] = 0.0f;
+                p.rAx[lane] = p.rAy[lane] = p.rBx[lane] = p.rBy[lane] = 0.0f;
+                p.adjustedSeparation[lane] = p.normalMass[lane] = p.tangentMass[lane] = 0.0f;
+                p.normalImpulse[lane] = p.tangentImpulse[lane] = 0.0f;
+                continue;
+            }
             const ManifoldPoint& mp = ct.manifold.points[j];
             if (mp.separation < -deep) f |= kWideDeep;
             f |= j == 0 ? kWidePoint0 : kWidePoint1;
             Vec2 rA, rB;
             contactArms(ct, bA, bB, j, rA, rB);
-            rAx[j][i] = rA.x, rAy[j][i] = rA.y, rBx[j][i] = rB.x, rBy[j][i] = rB.y;
+            rAx[j][i] = p.rAx[lane] = rA.x, rAy[j][i] = p.rAy[lane] = rA.y;
+            rBx[j][i] = p.rBx[lane] = rB.x, rBy[j][i] = p.rBy[lane] = rB.y;
             const float shift = shifted ? impactShift(w, c, w.bodies[ct.bodyA], w.bodies[ct.bodyB], mp.point, n) : 0.0f;
             separation[j][i] = mp.separation + shift;
-            normalImpulse[j][i] = x.warm * ct.normalImpulse[j];
-            tangentImpulse[j][i] = x.warm * ct.tangentImpulse[j];
+            p.normalImpulse[lane] = x.warm * ct.normalImpulse[j];
+            p.tangentImpulse[lane] = x.warm * ct.tangentImpulse[j];
         }
         flags[i] = f;
     }
@@ -162,38 +185,24 @@ void prepareWideContactLanes(const WorldState& w, const RowContext& x, const Wid
     }
     alignas(16) float outNormalMass[2][4], outTangentMass[2][4], outAdjusted[2][4], outPairScale[4];
     alignas(16) float outTogether[4];
-    for (int j = 0; j < 2; ++j) {
+    for (int j = 0; j < points; ++j) {
         store4(outNormalMass[j], normalMass[j]);
         store4(outTangentMass[j], tangentMass[j]);
         store4(outAdjusted[j], adjusted[j]);
     }
     store4(outPairScale, pairScale);
     store4(outTogether, togetherLanes);
-    // Each lane to its block, every field written (as packLane).
+    // What the arithmetic made, each lane to its block (the points it has).
     for (int i = 0; i < count; ++i) {
         WideContactBlock& k = *targets[i].block;
-        WideContactCold& cold = *targets[i].cold;
         const int lane = targets[i].lane;
-        k.a[lane] = a[i];
-        k.b[lane] = b[i];
-        cold.row[lane] = -1;
-        cold.contact[lane] = targets[i].contact;
-        k.nx[lane] = nx[i], k.ny[lane] = ny[i];
-        k.friction[lane] = friction[i];
-        k.tangentSpeed[lane] = tangentSpeed[i];
-        k.mA[lane] = mA[i], k.iA[lane] = iA[i], k.mB[lane] = mB[i], k.iB[lane] = iB[i];
         k.pairScale[lane] = outPairScale[i];
         k.flags[lane] = flags[i] | (outTogether[i] != 0.0f ? kWideTogether : 0u);
-        for (int j = 0; j < 2; ++j) {
+        for (int j = 0; j < pointCount[i]; ++j) {
             WideContactPoint& p = k.points[j];
-            const bool present = j < pointCount[i];
-            p.rAx[lane] = rAx[j][i], p.rAy[lane] = rAy[j][i], p.rBx[lane] = rBx[j][i], p.rBy[lane] = rBy[j][i];
-            p.adjustedSeparation[lane] = present ? outAdjusted[j][i] : 0.0f;
-            p.normalMass[lane] = present ? outNormalMass[j][i] : 0.0f;
-            p.tangentMass[lane] = present ? outTangentMass[j][i] : 0.0f;
-            p.normalImpulse[lane] = normalImpulse[j][i];
-            p.tangentImpulse[lane] = tangentImpulse[j][i];
-            cold.maxNormalImpulse[j][lane] = 0.0f;
+            p.adjustedSeparation[lane] = outAdjusted[j][i];
+            p.normalMass[lane] = outNormalMass[j][i];
+            p.tangentMass[lane] = outTangentMass[j][i];
         }
     }
 }
