@@ -130,9 +130,9 @@ ColourKey colourKey(const WorldState& w, std::size_t active, int zeroState) {
 
 /// Colours the rows of this step's active contacts (greedy, in activeContacts
 /// order, overflow group last) and leaves in colourOffsets the first row of
-/// each row group (kRowGroupCount): a stable counting sort, so within a group
-/// the rows keep the contacts' order. prepareContacts then writes each row at
-/// its place. What each contact's row is (the reading of the contact and its
+/// each row group (kRowGroupCount) and in rowContacts each contact's place in
+/// its group: a stable counting sort, so within a group the rows keep the
+/// contacts' order. prepareContacts then writes each row at its place. What each contact's row is (the reading of the contact and its
 /// bodies) is found on every worker; the greedy pass over those keys, which
 /// depends on the order, runs on the stepping thread.
 void colourContacts(WorldState& w) {
@@ -144,6 +144,7 @@ void colourContacts(WorldState& w) {
     std::vector<std::uint32_t>& masks = s.contactColourMasks;
     s.colourOffsets.assign(kRowGroupCount + 1, 0);
     s.contactColours.resize(count);
+    s.rowContacts.resizeForOverwrite(count);
     // On one worker the keys are found as the greedy pass goes (no array to
     // write and read back); the result is the same.
     const bool shared = w.runner.sharing();
@@ -162,6 +163,7 @@ void colourContacts(WorldState& w) {
         const ColourKey key = shared ? keys[i] : colourKey(w, i, zeroState);
         if (!(key.flags & kKeyRow)) {
             s.contactColours[i] = kNoRow;
+            s.rowContacts[i] = -1;
             continue;
         }
         ++rows;
@@ -181,7 +183,7 @@ void colourContacts(WorldState& w) {
             group = kWideGroupsPerColour * c + ((key.flags & kKeyOnePoint) ? 1 : 0);
         }
         s.contactColours[i] = static_cast<std::uint8_t>(group);
-        ++s.colourOffsets[static_cast<std::size_t>(group)];
+        s.rowContacts[i] = s.colourOffsets[static_cast<std::size_t>(group)]++;  // its place in its group
     }
     // Counts to first rows.
     int offset = 0;
@@ -259,16 +261,12 @@ void prepareContactRows(WorldState& w, float h, bool soft) {
     const int overflow = s.contactOverflowStart;
     s.contactOverflowStart = 0;  // the scalar rows are the overflow group's alone
     s.rolling.clear();
-    // Each active contact's row, as prepareContacts places them (a stable
-    // counting sort by colour), -1 without one.
+    // Each active contact's row is its group's first row plus its place in
+    // the group (colourContacts), as prepareContacts places them (a stable
+    // counting sort by colour).
     std::vector<int>& begin = s.colourBegin;
     begin.assign(s.colourOffsets.begin(), s.colourOffsets.end());
     const std::size_t activeCount = w.activeContacts.size();
-    s.rowContacts.resizeForOverwrite(activeCount);
-    for (std::size_t k = 0; k < activeCount; ++k) {
-        const std::uint8_t colour = s.contactColours[k];
-        s.rowContacts[k] = colour == kNoRow ? -1 : s.colourOffsets[colour]++;
-    }
     s.constraints.resizeForOverwrite(static_cast<std::size_t>(s.rowCount - overflow));
     // Contact by contact in slot order, which reads the contacts and bodies
     // in the order they lie in memory; each row goes to its lane (or the
@@ -286,17 +284,16 @@ void prepareContactRows(WorldState& w, float h, bool soft) {
         WideLaneTarget targets[4];
         int pending = 0;
         for (int k = first; k < last; ++k) {
-            const int row = s.rowContacts[static_cast<std::size_t>(k)];
-            if (row < 0) continue;
+            const int inGroup = s.rowContacts[static_cast<std::size_t>(k)];
+            if (inGroup < 0) continue;
             const int contact = w.activeContacts[static_cast<std::size_t>(k)];
-            if (row >= overflow) {
-                ContactConstraint& cc = s.constraints[static_cast<std::size_t>(row - overflow)];
+            const std::size_t group = s.contactColours[static_cast<std::size_t>(k)];
+            if (group == kRowGroupCount) {  // the overflow group's rows are scalar
+                ContactConstraint& cc = s.constraints[static_cast<std::size_t>(inGroup)];
                 prepareContactRow(w, x, contact, cc);
                 finishContactRow(x, slop, cc);
                 continue;
             }
-            const std::size_t group = s.contactColours[static_cast<std::size_t>(k)];
-            const int inGroup = row - begin[group];
             const std::size_t blk = static_cast<std::size_t>(s.wideContactColourStart[group] + inGroup / 4);
             targets[pending++] = {contact, &s.wideContacts[blk], &s.wideContactCold[blk], inGroup % 4};
             if (pending == 4) {

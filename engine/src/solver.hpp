@@ -89,11 +89,11 @@ struct SolverArrays {
     ScratchArray<WideContactCold> wideContactCold;  ///< what the sweeps do not read, block by block
     bool wideContactsActive = false;                ///< this step solves them so
     bool wideContactsOnly = false;                  ///< ... prepared without scalar rows (solver.cpp)
-    ScratchArray<int> rowContacts;                  ///< then: each active contact's row, −1 for none
-    std::vector<int> colourBegin;                   ///< then: each row group's first row
-    std::vector<int> wideContactColourStart;        ///< per row group: its first block; then the block count
-    std::vector<int> wideBlockRows;                 ///< per block: its first row and its group's end
-    int contactOverflowStart = 0;                   ///< the first row of the scalar rest (the overflow group)
+    ScratchArray<int> rowContacts;  ///< per active contact: its place in its row group (colourContacts), −1 for none
+    std::vector<int> colourBegin;   ///< then: each row group's first row
+    std::vector<int> wideContactColourStart;  ///< per row group: its first block; then the block count
+    std::vector<int> wideBlockRows;           ///< per block: its first row and its group's end
+    int contactOverflowStart = 0;             ///< the first row of the scalar rest (the overflow group)
 };
 
 /// limitSpeed for a velocity faster than maxSpeed (or not finite).
