@@ -4,6 +4,8 @@
 // when the engine is built for x86-64 (engine/CMakeLists.txt) and called only
 // when the CPU has AVX2 (wideLanes in wide_contact.cpp); everything
 // here that is compiled for AVX2 is private to this file.
+#include <type_traits>
+
 #include "wide_contact_kernel.hpp"
 #include "wide_revolute_kernel.hpp"
 
@@ -122,11 +124,18 @@ struct Lanes8 {
         _MM_TRANSPOSE4_PS(r0, r1, r2, r3);
         const __m128 rows[4] = {r0, r1, r2, r3};
         const int* index = sideA ? k.a : k.b;
-        const float* invMass = sideA ? k.mA : k.mB;
-        const float* invInertia = sideA ? k.iA : k.iB;
-        for (int i = 0; i < 4; ++i)
-            if (invMass[i] != 0.0f || invInertia[i] != 0.0f)
-                _mm_storeu_ps(reinterpret_cast<float*>(states + index[i]), rows[i]);
+        if constexpr (std::is_same_v<Block, WideContactBlock>) {
+            // A contact lane's flags say whether each side moves (the test below, made once when it was prepared).
+            const std::uint32_t moves = sideA ? kWideMovesA : kWideMovesB;
+            for (int i = 0; i < 4; ++i)
+                if (k.flags[i] & moves) _mm_storeu_ps(reinterpret_cast<float*>(states + index[i]), rows[i]);
+        } else {
+            const float* invMass = sideA ? k.mA : k.mB;
+            const float* invInertia = sideA ? k.iA : k.iB;
+            for (int i = 0; i < 4; ++i)
+                if (invMass[i] != 0.0f || invInertia[i] != 0.0f)
+                    _mm_storeu_ps(reinterpret_cast<float*>(states + index[i]), rows[i]);
+        }
     }
 };
 

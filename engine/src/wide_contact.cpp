@@ -41,6 +41,8 @@ inline void packLane(WideContactBlock& k, WideContactCold& cold, int lane, const
         if (againstImmovable(*cc)) flags |= kWideImmovableSide;
         if (cc->pointCount > 0) flags |= kWidePoint0;
         if (cc->pointCount > 1) flags |= kWidePoint1;
+        if (cc->invMassA != 0.0f || cc->invIA != 0.0f) flags |= kWideMovesA;
+        if (cc->invMassB != 0.0f || cc->invIB != 0.0f) flags |= kWideMovesB;
     }
     k.flags[lane] = flags;
     for (int j = 0; j < 2; ++j) {
@@ -119,6 +121,8 @@ void prepareWideContactLanes(const WorldState& w, const RowContext& x, const Wid
         std::uint32_t f = immovable ? kWideImmovableSide : 0u;
         if (ct.roundA) f |= kWideRoundA;
         if (ct.roundB) f |= kWideRoundB;
+        if (bA.invMass != 0.0f || bA.invInertia != 0.0f) f |= kWideMovesA;
+        if (bB.invMass != 0.0f || bB.invInertia != 0.0f) f |= kWideMovesB;
         const int points = pointCount[i] = ct.manifold.pointCount;
         const float deep = deepOverlapOf(ct);
         for (int j = 0; j < 2; ++j) {

@@ -44,6 +44,8 @@ enum WideContactFlag : std::uint32_t {
     kWideImmovableSide = 1u << 4,  ///< a side cannot move: the rows' stiffer softness (RowContext::staticSoft)
     kWidePoint0 = 1u << 5,         ///< the manifold has its first point
     kWidePoint1 = 1u << 6,         ///< and its second
+    kWideMovesA = 1u << 7,         ///< A can move (a nonzero inverse mass or inertia): the sweeps write its velocity
+    kWideMovesB = 1u << 8,         ///< the same for B
 };
 
 /// Four manifolds, structure of arrays. An empty lane names the zero state on
