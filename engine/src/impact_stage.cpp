@@ -155,6 +155,13 @@ void resolveImpacts(WorldState& w, float dt) {
         sweepStamp = static_cast<std::uint32_t>(sweep);
         for (std::size_t i = 0; i < activeCount; ++i) {
             if (sweep == 1 && stillPassedOver(i)) continue;
+            // A later sweep looks only at the contacts of bodies the last one
+            // struck, found from the narrowphase's look (its bodies) before the
+            // contact is read: in a large pile the later sweeps read every
+            // contact and both its bodies to pass over nearly all of them.
+            if (sweep > 1 && changed[static_cast<std::size_t>(looks[i].bodyA)] != sweepStamp - 1 &&
+                changed[static_cast<std::size_t>(looks[i].bodyB)] != sweepStamp - 1)
+                continue;
             const int c = w.activeContacts[i];
             Contact& ct = w.contacts[c];
             if (passedOver(ct)) continue;
@@ -162,9 +169,6 @@ void resolveImpacts(WorldState& w, float dt) {
             Body& B = w.bodies[ct.bodyB];
             if (A.type != BodyType::dynamic_body && B.type != BodyType::dynamic_body) continue;
             if (!A.awake && !B.awake) continue;
-            if (sweep > 1 && changed[static_cast<std::size_t>(ct.bodyA)] != sweepStamp - 1 &&
-                changed[static_cast<std::size_t>(ct.bodyB)] != sweepStamp - 1)
-                continue;
             const Vec2 n = ct.manifold.normal;  // from A to B
             const bool aMoves = A.type == BodyType::dynamic_body && A.awake;
             const bool bMoves = B.type == BodyType::dynamic_body && B.awake;
