@@ -132,9 +132,10 @@ ColourKey colourKey(const WorldState& w, std::size_t active, int zeroState) {
 /// order, overflow group last) and leaves in colourOffsets the first row of
 /// each row group (kRowGroupCount) and in rowContacts each contact's place in
 /// its group: a stable counting sort, so within a group the rows keep the
-/// contacts' order. prepareContacts then writes each row at its place. What each contact's row is (the reading of the contact and its
-/// bodies) is found on every worker; the greedy pass over those keys, which
-/// depends on the order, runs on the stepping thread.
+/// contacts' order. prepareContacts then writes each row at its place. What
+/// each contact's row is (the reading of the contact and its bodies) is found
+/// on every worker; the greedy pass over those keys, which depends on the
+/// order, runs on the stepping thread.
 void colourContacts(WorldState& w) {
     SolverArrays& s = w.solver;
     const std::size_t count = w.activeContacts.size();
