@@ -262,11 +262,10 @@ void prepareContactRows(WorldState& w, float h, bool soft) {
     const int overflow = s.contactOverflowStart;
     s.contactOverflowStart = 0;  // the scalar rows are the overflow group's alone
     s.rolling.clear();
-    // Each active contact's row is its group's first row plus its place in
-    // the group (colourContacts), as prepareContacts places them (a stable
-    // counting sort by colour).
-    std::vector<int>& begin = s.colourBegin;
-    begin.assign(s.colourOffsets.begin(), s.colourOffsets.end());
+    // Each active contact's row is its group's first row (colourOffsets,
+    // which this path leaves as it is) plus its place in the group
+    // (rowContacts), as prepareContacts places them (a stable counting sort
+    // by colour).
     const std::size_t activeCount = w.activeContacts.size();
     s.constraints.resizeForOverwrite(static_cast<std::size_t>(s.rowCount - overflow));
     // Contact by contact in slot order, which reads the contacts and bodies
@@ -307,7 +306,8 @@ void prepareContactRows(WorldState& w, float h, bool soft) {
     w.runner.run(static_cast<int>(activeCount), kPrepareGrain, prepare);
     // The lanes past each group's last row stay empty.
     for (int c = 0; c < kRowGroupCount; ++c) {
-        const int count = begin[static_cast<std::size_t>(c) + 1] - begin[static_cast<std::size_t>(c)];
+        const int count = s.colourOffsets[static_cast<std::size_t>(c) + 1] -
+                          s.colourOffsets[static_cast<std::size_t>(c)];
         if (count % 4 == 0) continue;
         const std::size_t k = static_cast<std::size_t>(s.wideContactColourStart[static_cast<std::size_t>(c) + 1] - 1);
         for (int lane = count % 4; lane < 4; ++lane)

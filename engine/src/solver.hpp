@@ -49,9 +49,9 @@ struct SolverArrays {
     std::vector<int> stateBodies;              ///< body slot of each state (awake bodies only)
     std::vector<Vec2> biasV;                   ///< split mode pseudo-velocities (zero entry last)
     std::vector<float> biasW;
-    ScratchArray<ContactConstraint> constraints;    ///< in colour order (solver.cpp)
-    std::vector<std::uint8_t> contactColours;       ///< per active contact: its row's group (solver.cpp), or kNoRow
-    std::vector<int> colourOffsets;                 ///< per row group: its first row (advanced as rows are placed)
+    ScratchArray<ContactConstraint> constraints;  ///< in colour order (solver.cpp)
+    std::vector<std::uint8_t> contactColours;     ///< per active contact: its row's group (solver.cpp), or kNoRow
+    std::vector<int> colourOffsets;  ///< per row group: its first row (advanced as prepareContacts places rows)
     std::vector<std::uint32_t> contactColourMasks;  ///< per body slot: the colours of its contact rows (solver.cpp)
     /// Per body slot: 1 for a body of this step's states that moves under an
     /// impulse (a non-zero inverse mass or inertia), what the colouring reads
@@ -90,7 +90,6 @@ struct SolverArrays {
     bool wideContactsActive = false;                ///< this step solves them so
     bool wideContactsOnly = false;                  ///< ... prepared without scalar rows (solver.cpp)
     ScratchArray<int> rowContacts;  ///< per active contact: its place in its row group (colourContacts), −1 for none
-    std::vector<int> colourBegin;   ///< then: each row group's first row
     std::vector<int> wideContactColourStart;  ///< per row group: its first block; then the block count
     std::vector<int> wideBlockRows;           ///< per block: its first row and its group's end
     int contactOverflowStart = 0;             ///< the first row of the scalar rest (the overflow group)

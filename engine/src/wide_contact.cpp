@@ -18,6 +18,13 @@ namespace i2d::detail {
 
 namespace {
 
+/// kWideMovesA and kWideMovesB for a lane with these inverse masses and
+/// inertias: a side moves (and the write-back writes it) when either is nonzero.
+std::uint32_t moveFlags(float invMassA, float invIA, float invMassB, float invIB) {
+    return (invMassA != 0.0f || invIA != 0.0f ? kWideMovesA : 0u) |
+           (invMassB != 0.0f || invIB != 0.0f ? kWideMovesB : 0u);
+}
+
 /// Lane `lane` of block k from row cc (null: an empty lane), every field written.
 inline void packLane(WideContactBlock& k, WideContactCold& cold, int lane, const ContactConstraint* cc, int row,
                      int zero) {
@@ -41,8 +48,7 @@ inline void packLane(WideContactBlock& k, WideContactCold& cold, int lane, const
         if (againstImmovable(*cc)) flags |= kWideImmovableSide;
         if (cc->pointCount > 0) flags |= kWidePoint0;
         if (cc->pointCount > 1) flags |= kWidePoint1;
-        if (cc->invMassA != 0.0f || cc->invIA != 0.0f) flags |= kWideMovesA;
-        if (cc->invMassB != 0.0f || cc->invIB != 0.0f) flags |= kWideMovesB;
+        flags |= moveFlags(cc->invMassA, cc->invIA, cc->invMassB, cc->invIB);
     }
     k.flags[lane] = flags;
     for (int j = 0; j < 2; ++j) {
@@ -121,8 +127,7 @@ void prepareWideContactLanes(const WorldState& w, const RowContext& x, const Wid
         std::uint32_t f = immovable ? kWideImmovableSide : 0u;
         if (ct.roundA) f |= kWideRoundA;
         if (ct.roundB) f |= kWideRoundB;
-        if (bA.invMass != 0.0f || bA.invInertia != 0.0f) f |= kWideMovesA;
-        if (bB.invMass != 0.0f || bB.invInertia != 0.0f) f |= kWideMovesB;
+        f |= moveFlags(bA.invMass, bA.invInertia, bB.invMass, bB.invInertia);
         const int points = pointCount[i] = ct.manifold.pointCount;
         const float deep = deepOverlapOf(ct);
         for (int j = 0; j < 2; ++j) {
