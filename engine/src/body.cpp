@@ -7,6 +7,7 @@
 namespace i2d::detail {
 
 void updateMass(WorldState& w, int b) {
+    w.solver.jointPlanStale = true;  // the joints' rows read the masses
     Body& body = w.bodies[b];
     body.mass = body.invMass = body.inertia = body.invInertia = 0.0f;
     body.localCenter = {};

@@ -8,6 +8,7 @@
 namespace i2d::detail {
 
 void linkJoint(WorldState& w, int j) {
+    w.solver.jointPlanStale = true;
     Joint& jt = w.joints[j];
     const int a = jt.bodyA, b = jt.bodyB;
     w.bodies[a].joints.push_back(j);
@@ -30,6 +31,7 @@ void destroyJoint(WorldState& w, int j) {
         const Joint& gear = w.joints[g];
         if (gear.alive && gear.type == JointType::gear && (gear.joint1 == j || gear.joint2 == j)) destroyJoint(w, g);
     }
+    w.solver.jointPlanStale = true;
     Joint& jt = w.joints[j];
     for (int b : {jt.bodyA, jt.bodyB}) {
         auto& list = w.bodies[b].joints;

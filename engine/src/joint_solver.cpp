@@ -50,7 +50,7 @@ void colourJoints(SolverArrays& s) {
     // Per body, the colours its rows took so far (bit c: colour c); a row
     // takes the lowest colour none of its movable bodies has.
     std::vector<std::uint32_t>& used = s.bodyColours;
-    used.assign(s.stateBodies.size(), 0u);
+    used.assign(slots.empty() ? 0 : s.stateBodies.size(), 0u);
     std::vector<std::uint8_t>& colours = s.jointColours;
     colours.resize(slots.size());
     int counts[2 * (kJointColours + 1)] = {};
@@ -95,6 +95,7 @@ void colourJoints(SolverArrays& s) {
 /// The wide blocks of each colour's wide slots, and where each colour's begin.
 void packWideRows(const WorldState& w, SolverArrays& s) {
     s.wideRevolutes.clear();
+    s.wideFrames.clear();
     s.wideBlockStart.resize(kJointColours + 2);
     for (int c = 0; c <= kJointColours; ++c) {
         s.wideBlockStart[static_cast<std::size_t>(c)] = static_cast<int>(s.wideRevolutes.size());
@@ -125,12 +126,12 @@ bool wideCandidate(const WorldState& w, const Joint& joint, const Body& bA, cons
     return bound < kSinglePrecisionBound;
 }
 
-}  // namespace
-
-void prepareJoints(WorldState& w, float dt) {
+/// The joint plan: a slot for every joint with an awake body, the joints
+/// solved exactly, the colouring and order, and the wide blocks' lanes
+/// (their anchors are the step's: refreshWideRevolutes). The order's scalar
+/// places name rows, which prepareJoints makes in slot order.
+void planJoints(WorldState& w) {
     SolverArrays& s = w.solver;
-    // What every joint with an awake body needs for the colouring and the
-    // tree search; its row is written afterwards (or its wide lane).
     std::vector<JointSlot>& slots = s.jointSlots;
     slots.clear();
     float leastInverseMass = INFINITY, mostInverseMass = 0.0f;
@@ -154,13 +155,6 @@ void prepareJoints(WorldState& w, float dt) {
         }
         slot.equalityRows = static_cast<std::uint8_t>(equalityRowCount(joint));
         slot.wide = wideCandidate(w, joint, bA, bB, slot);
-        if (slot.wide) {
-            // As setAnchors (joint_rows.hpp): from the centres of mass, in world axes.
-            const RevoluteJointDef& def = std::get<RevoluteJointDef>(joint.def);
-            slot.rA = rotate(bA.xf.q, def.localAnchorA - bA.localCenter);
-            slot.rB = rotate(bB.xf.q, def.localAnchorB - bB.localCenter);
-            slot.deltaCenter = bB.center - bA.center;
-        }
         for (float inverse : {slot.invMassA, slot.invMassB})
             if (inverse > 0.0f) {
                 leastInverseMass = std::min(leastInverseMass, inverse);
@@ -169,18 +163,48 @@ void prepareJoints(WorldState& w, float dt) {
     }
     selectTreeJoints(w, slots, leastInverseMass, mostInverseMass);
     colourJoints(s);
+    // The scalar places of the order name rows: the slots the wide path does
+    // not take, counted in slot order.
+    std::vector<int>& rowOfSlot = s.jointScratch;
+    rowOfSlot.assign(slots.size(), kNullIndex);
+    int rowCount = 0;
+    for (std::size_t i = 0; i < slots.size(); ++i)
+        if (!slots[i].wide) rowOfSlot[i] = rowCount++;
+    for (std::size_t c = 0; c + 1 < s.jointColourStart.size(); ++c)
+        for (int r = s.jointColourStart[c]; r < s.jointWideStart[c]; ++r) {
+            int& place = s.jointOrder[static_cast<std::size_t>(r)];
+            place = rowOfSlot[static_cast<std::size_t>(place)];
+        }
+    packWideRows(w, s);
+}
 
-    // The rows of the slots the wide path does not take, in slot order; the
-    // order's scalar places then name rows instead of slots.
+}  // namespace
+
+void prepareJoints(WorldState& w, float dt) {
+    SolverArrays& s = w.solver;
+    // The plan is what a joint's bodies being awake, their masses and the
+    // joint itself decide; in a jointed scene at rest or swinging, none of
+    // that changes from step to step, and making it was a quarter of a
+    // 1,742-joint grid's step. A world without joints keeps no plan (and no
+    // copy of the awake list).
+    const bool jointed = w.joints.count > 0;
+    if (!jointed || s.jointPlanStale || s.jointPlanBodies != s.stateBodies) {
+        planJoints(w);
+        if (jointed) {
+            s.jointPlanBodies = s.stateBodies;
+            s.jointPlanStale = false;
+        } else {
+            std::vector<int>().swap(s.jointPlanBodies);
+        }
+    }
+
+    // The rows of the slots the wide path does not take, in slot order.
+    const std::vector<JointSlot>& slots = s.jointSlots;
     std::vector<JointConstraint>& rows = s.joints;
     rows.clear();
     const bool warm = w.settings.enableWarmStarting;
-    std::vector<int>& rowOfSlot = s.jointScratch;
-    rowOfSlot.assign(slots.size(), kNullIndex);
-    for (std::size_t i = 0; i < slots.size(); ++i) {
-        const JointSlot& slot = slots[i];
+    for (const JointSlot& slot : slots) {
         if (slot.wide) continue;
-        rowOfSlot[i] = static_cast<int>(rows.size());
         const Joint& joint = w.joints[slot.joint];
         const Body& bA = w.bodies[joint.bodyA];
         const Body& bB = w.bodies[joint.bodyB];
@@ -215,13 +239,9 @@ void prepareJoints(WorldState& w, float dt) {
                              double(jc.invIB) * lengthSquared(jc.rB);
         jc.singlePrecision = bound < kSinglePrecisionBound;
     }
-    for (std::size_t c = 0; c + 1 < s.jointColourStart.size(); ++c)
-        for (int r = s.jointColourStart[c]; r < s.jointWideStart[c]; ++r) {
-            int& place = s.jointOrder[static_cast<std::size_t>(r)];
-            place = rowOfSlot[static_cast<std::size_t>(place)];
-        }
     buildJointTrees(w);
-    packWideRows(w, s);
+    auto refresh = [&](int b, int e) { refreshWideRevolutes(w, s, b, e); };
+    w.runner.run(static_cast<int>(s.wideRevolutes.size()), kWideGrain, refresh);
     s.wideFrameAt = -1;  // the blocks' kept anchors are made by the first pass
 }
 

@@ -65,11 +65,19 @@ struct SolverArrays {
     std::vector<JointSlot> jointSlots;    ///< every joint with an awake body, in the world's order
     std::vector<JointConstraint> joints;  ///< rows of the slots not solved wide, in slot order (joint_solver.cpp)
     std::vector<int> jointScratch;        ///< the row of each slot while the order is built
-    std::vector<int> jointOrder;          ///< by colour: rows, then each colour's wide slots
-    JointTrees trees;                     ///< joints solved exactly (joint_tree.cpp)
-    std::vector<int> jointColourStart;    ///< per joint colour: its first place in jointOrder; then the row count
-    std::vector<int> jointWideStart;      ///< per joint colour: its first place of the wide path
+    /// The joint plan (slots, tree choice, colouring, order, the wide blocks'
+    /// lanes) is kept from step to step while the awake bodies are the same
+    /// in the same order (jointPlanBodies) and nothing it was made from
+    /// changed: whatever changes a joint, its bodies' masses, types or
+    /// enabled flags, or the settings sets jointPlanStale (joint_solver.cpp).
+    bool jointPlanStale = true;
+    std::vector<int> jointPlanBodies;   ///< stateBodies when the plan was made (empty without joints)
+    std::vector<int> jointOrder;        ///< by colour: rows, then each colour's wide slots
+    JointTrees trees;                   ///< joints solved exactly (joint_tree.cpp)
+    std::vector<int> jointColourStart;  ///< per joint colour: its first place in jointOrder; then the row count
+    std::vector<int> jointWideStart;    ///< per joint colour: its first place of the wide path
     std::vector<WideRevoluteBlock> wideRevolutes;  ///< the wide rows, four to a block (wide_revolute.cpp)
+    std::vector<WideRevoluteFrame> wideFrames;     ///< per block: where its lanes' anchors come from
     int positionUpdates = 0;                       ///< position updates so far in this step (solver.cpp)
     int wideFrameAt = -1;                          ///< the positionUpdates the blocks' kept anchors and K were made at
     std::vector<int> wideBlockStart;               ///< per joint colour: its first block; then the block count

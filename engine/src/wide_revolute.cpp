@@ -16,6 +16,7 @@ void packWideRevolutes(const WorldState& w, SolverArrays& s, int first, int last
     const bool warm = w.settings.enableWarmStarting;
     for (int start = first; start < last; start += 4) {
         WideRevoluteBlock& block = s.wideRevolutes.emplace_back();
+        WideRevoluteFrame& frame = s.wideFrames.emplace_back();
         for (int lane = 0; lane < 4; ++lane) {
             const int place = start + lane;
             if (place >= last) {
@@ -25,20 +26,47 @@ void packWideRevolutes(const WorldState& w, SolverArrays& s, int first, int last
                 block.dcx[lane] = block.dcy[lane] = 0.0f;
                 block.mA[lane] = block.iA[lane] = block.mB[lane] = block.iB[lane] = 0.0f;
                 block.px[lane] = block.py[lane] = 0.0f;
+                frame.bodyA[lane] = frame.bodyB[lane] = kNullIndex;
+                frame.armAx[lane] = frame.armAy[lane] = frame.armBx[lane] = frame.armBy[lane] = 0.0f;
                 continue;
             }
             const JointSlot& slot =
                 s.jointSlots[static_cast<std::size_t>(s.jointOrder[static_cast<std::size_t>(place)])];
-            const Vec2 rA = slot.rA, rB = slot.rB, dc = slot.deltaCenter;
-            const Vec2 p = warm ? w.joints[slot.joint].impulses.linear : Vec2{};
+            const Joint& joint = w.joints[slot.joint];
+            const RevoluteJointDef& def = std::get<RevoluteJointDef>(joint.def);
+            const Vec2 p = warm ? joint.impulses.linear : Vec2{};
             block.a[lane] = slot.a >= 0 ? slot.a : zero;
             block.b[lane] = slot.b >= 0 ? slot.b : zero;
             block.joint[lane] = slot.joint;
-            block.rAx[lane] = rA.x, block.rAy[lane] = rA.y, block.rBx[lane] = rB.x, block.rBy[lane] = rB.y;
-            block.dcx[lane] = dc.x, block.dcy[lane] = dc.y;
             block.mA[lane] = slot.invMassA, block.iA[lane] = slot.invIA;
             block.mB[lane] = slot.invMassB, block.iB[lane] = slot.invIB;
             block.px[lane] = p.x, block.py[lane] = p.y;
+            // As setAnchors (joint_rows.hpp): from the centres of mass.
+            const Vec2 armA = def.localAnchorA - w.bodies[joint.bodyA].localCenter;
+            const Vec2 armB = def.localAnchorB - w.bodies[joint.bodyB].localCenter;
+            frame.bodyA[lane] = joint.bodyA, frame.bodyB[lane] = joint.bodyB;
+            frame.armAx[lane] = armA.x, frame.armAy[lane] = armA.y;
+            frame.armBx[lane] = armB.x, frame.armBy[lane] = armB.y;
+        }
+    }
+}
+
+void refreshWideRevolutes(const WorldState& w, SolverArrays& s, int firstBlock, int lastBlock) {
+    const bool warm = w.settings.enableWarmStarting;
+    for (int k = firstBlock; k < lastBlock; ++k) {
+        WideRevoluteBlock& block = s.wideRevolutes[static_cast<std::size_t>(k)];
+        const WideRevoluteFrame& frame = s.wideFrames[static_cast<std::size_t>(k)];
+        for (int lane = 0; lane < 4; ++lane) {
+            if (block.joint[lane] < 0) continue;
+            const Body& bA = w.bodies[frame.bodyA[lane]];
+            const Body& bB = w.bodies[frame.bodyB[lane]];
+            // In world axes (setAnchors).
+            const Vec2 rA = rotate(bA.xf.q, Vec2{frame.armAx[lane], frame.armAy[lane]});
+            const Vec2 rB = rotate(bB.xf.q, Vec2{frame.armBx[lane], frame.armBy[lane]});
+            const Vec2 dc = bB.center - bA.center;
+            block.rAx[lane] = rA.x, block.rAy[lane] = rA.y, block.rBx[lane] = rB.x, block.rBy[lane] = rB.y;
+            block.dcx[lane] = dc.x, block.dcy[lane] = dc.y;
+            if (!warm) block.px[lane] = block.py[lane] = 0.0f;
         }
     }
 }

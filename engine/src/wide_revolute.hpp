@@ -30,10 +30,27 @@ struct WideRevoluteBlock {
     float k11[4], k12[4], k22[4], invDet[4];
 };
 
+/// What a block's lanes are made from each step while the joint plan is kept
+/// (SolverArrays::jointPlanStale): the world's body slots and the anchors from
+/// the centres of mass in the bodies' frames (they change only with the
+/// masses or the joint, which make a new plan).
+struct WideRevoluteFrame {
+    int bodyA[4], bodyB[4];
+    float armAx[4], armAy[4], armBx[4], armBy[4];
+};
+
 /// Packs the slots at places [first, last) of s.jointOrder (all wide
-/// revolutes of one colour) into blocks appended to s.wideRevolutes, from
-/// their joints and bodies as prepareJoints writes rows.
+/// revolutes of one colour) into blocks appended to s.wideRevolutes (and
+/// their frames to s.wideFrames): the lanes' bodies, masses and impulses;
+/// refreshWideRevolutes writes the anchors.
 void packWideRevolutes(const WorldState& w, SolverArrays& s, int first, int last);
+/// The step's anchors and centre offsets of blocks [firstBlock, lastBlock)
+/// from their bodies' poses (as prepareJoints writes rows: setAnchors in
+/// joint_rows.hpp), and their impulses zeroed when warm starting is off. A
+/// lane keeps its impulse from the last step's store otherwise: it is the
+/// joint's (storeWideRevolutes wrote it, and nothing else writes a wide
+/// joint's impulse).
+void refreshWideRevolutes(const WorldState& w, SolverArrays& s, int firstBlock, int lastBlock);
 
 /// The warm start and one sweep in ctx's pass of blocks [firstBlock,
 /// lastBlock). A block's anchors turned to the current positions and its

@@ -87,6 +87,7 @@ void World::setSettings(const WorldSettings& s) {
     if (s.speculativeDistance != w.settings.speculativeDistance)
         for (int b = 0; b < w.bodies.capacity(); ++b) w.bodies[b].boxSlack = 0.0f;
     w.settings = s;
+    w.solver.jointPlanStale = true;  // the wide path and the exact trees depend on settings
     if (sleepTurnedOff) {
         for (int b = 0; b < w.bodies.capacity(); ++b)
             if (w.bodies[b].alive && !w.bodies[b].awake) detail::wakeBody(w, b);

@@ -101,6 +101,7 @@ void World::disableBody(BodyId id) {
     body.awake = false;
     body.sleepTime = 0.0f;
     body.enabled = false;
+    w.solver.jointPlanStale = true;  // its joints act on nothing now
 }
 
 void World::enableBody(BodyId id) {
@@ -110,6 +111,7 @@ void World::enableBody(BodyId id) {
     detail::Body& body = w.bodies[b];
     if (body.enabled) return;
     body.enabled = true;
+    w.solver.jointPlanStale = true;  // its joints act again
     for (int s : detail::bodyShapes(w.shapes, body)) detail::createProxy(w, s);
     detail::wakeBody(w, b);  // nothing for a static body: it stays "not awake"
     wakeJointPartners(w, b);
@@ -300,6 +302,7 @@ void World::setMassData(BodyId id, const MassData& md) {
     if (md.rotationalInertia < 0.0f) fail("rotational inertia must be >= 0");
     if (md.rotationalInertia > 0.0f && !isFinite(1.0f / md.rotationalInertia))
         fail("rotational inertia is too small (its inverse is not finite)");
+    state().solver.jointPlanStale = true;  // the joints' rows read the masses
     body.mass = md.mass;
     body.invMass = 1.0f / md.mass;
     body.inertia = md.rotationalInertia;

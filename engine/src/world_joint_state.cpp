@@ -37,8 +37,10 @@ const Def& defOf(const detail::Joint& jt) {
     return *def;
 }
 
-/// Wakes both bodies of a joint that was changed.
+/// Wakes both bodies of a joint that was changed, and has the next step plan
+/// the joints again (SolverArrays::jointPlanStale).
 void wakeJoint(detail::WorldState& w, const detail::Joint& jt) {
+    w.solver.jointPlanStale = true;
     detail::wakeBody(w, jt.bodyA);
     detail::wakeBody(w, jt.bodyB);
 }
