@@ -342,6 +342,39 @@ void sweepBody(WorldState& w, Body& body, const Mover& m, Vec2 rewind) {
     }
 }
 
+/// Whether a static shape may lie across a non-bullet body's sweep (which
+/// meets static shapes only): the box sweepBody queries, made from the
+/// step's start pose without the sweep's angles (makeMover's two atan2) and
+/// grown by far more than the rounding that tells the two start poses apart
+/// (a few 1e-7 of a rotation, of the coordinates). A body in the open (rain
+/// above the ground, a swinging grid) is then not swept at all.
+bool mayMeetStatic(const WorldState& w, const Body& body, const BodyState& s) {
+    const DynamicTree& statics = w.broadPhase.staticTree;
+    if (statics.proxyCount() == 0) return false;
+    const bool shifted = body.startStamp == w.stepStamp;  // as makeMover
+    const Vec2 c0 = shifted ? body.startCenter : body.center - s.dp;
+    const Rot q0 = shifted ? body.startQ : invMulRot(s.dq, body.xf.q);
+    const Rot dq = shifted ? invMulRot(body.startQ, body.xf.q) : s.dq;
+    const Transform xf0{c0 - rotate(q0, body.localCenter), q0};
+    const float scale = 1.0f + body.reach + std::abs(c0.x) + std::abs(c0.y) + std::abs(body.localCenter.x) +
+                        std::abs(body.localCenter.y);
+    const float grow = turnBoundOf(dq) * body.reach + 1e-5f * scale;
+    bool found = false;
+    for (int sh : bodyShapes(w.shapes, body)) {
+        const Shape& shape = w.shapes[sh];
+        if (shape.isSensor) continue;
+        AABB box = unionOf(shapeAABB(shape, xf0), shapeAABB(shape, body.xf));
+        box.lower -= Vec2{grow, grow};
+        box.upper += Vec2{grow, grow};
+        statics.query(box, [&](int) {
+            found = true;
+            return false;
+        });
+        if (found) return true;
+    }
+    return false;
+}
+
 }  // namespace
 
 bool needsSweep(const WorldState& w, const Body& body, const BodyState& s) {
@@ -362,6 +395,7 @@ void solveContinuous(WorldState& w, float dt) {
     for (std::size_t i = 0; i < w.solver.stateBodies.size(); ++i) {
         if (sweeps[i] == 0) continue;  // needsSweep said no in the write-back
         Body& body = w.bodies[w.solver.stateBodies[i]];
+        if (!body.isBullet && !mayMeetStatic(w, body, w.solver.states[i])) continue;
         Mover m;
         if (!makeMover(w, body, w.solver.states[i], m)) continue;
         // The velocity the free acceleration added over the whole step.

@@ -106,7 +106,10 @@ TEST(JointPlan, AKeptPlanStepsAsOneMadeEveryStep) {
     const std::vector<std::pair<int, std::function<void(Rig&)>>> changes = {
         // A mass like the other links' (0.12 kg): ten times theirs would make
         // the chain a tree solved exactly, off the wide path this test is about.
-        {10, [](Rig& r) { r.world.setMassData(r.links[3], {0.15f, {0.05f, 0.0f}, 0.002f}); }},
+        {10,
+         [](Rig& r) {
+             r.world.setMassData(r.links[3], {0.15f, {0.05f, 0.0f}, 0.002f});
+         }},
         {20, [](Rig& r) { r.world.setFixedRotation(r.links[5], true); }},
         {30,
          [](Rig& r) {
@@ -148,7 +151,10 @@ TEST(JointPlan, AKeptPlanStepsAsOneMadeEveryStep) {
              r.world.setRevoluteJointDef(r.hinges[10], def);
          }},
         {120, [](Rig& r) { r.world.setDensity(r.world.bodyShapes(r.links[11])[0], 4.0f); }},
-        {130, [](Rig& r) { r.world.createCircleShape(r.links[12], {.density = 2.0f}, Circle{{0.2f, 0.0f}, 0.1f}); }},
+        {130,
+         [](Rig& r) {
+             r.world.createCircleShape(r.links[12], {.density = 2.0f}, Circle{{0.2f, 0.0f}, 0.1f});
+         }},
         {140,
          [](Rig& r) {
              WorldSettings set = r.world.settings();
