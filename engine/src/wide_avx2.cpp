@@ -124,18 +124,16 @@ struct Lanes8 {
         _MM_TRANSPOSE4_PS(r0, r1, r2, r3);
         const __m128 rows[4] = {r0, r1, r2, r3};
         const int* index = sideA ? k.a : k.b;
-        if constexpr (std::is_same_v<Block, WideContactBlock>) {
-            // A contact lane's flags say whether each side moves (the test below, made once when it was prepared).
-            const std::uint32_t moves = sideA ? kWideMovesA : kWideMovesB;
-            for (int i = 0; i < 4; ++i)
-                if (k.flags[i] & moves) _mm_storeu_ps(reinterpret_cast<float*>(states + index[i]), rows[i]);
-        } else {
-            const float* invMass = sideA ? k.mA : k.mB;
-            const float* invInertia = sideA ? k.iA : k.iB;
-            for (int i = 0; i < 4; ++i)
-                if (invMass[i] != 0.0f || invInertia[i] != 0.0f)
-                    _mm_storeu_ps(reinterpret_cast<float*>(states + index[i]), rows[i]);
-        }
+        // A lane's flags say whether each side moves (the four-lane path's
+        // test of the inverse masses, made once when the lane was packed).
+        const std::uint32_t moves = sideA ? kWideMovesA : kWideMovesB;
+        const std::uint32_t* flags;
+        if constexpr (std::is_same_v<Block, WideContactBlock>)
+            flags = k.flags;
+        else
+            flags = k.moves;
+        for (int i = 0; i < 4; ++i)
+            if (flags[i] & moves) _mm_storeu_ps(reinterpret_cast<float*>(states + index[i]), rows[i]);
     }
 };
 

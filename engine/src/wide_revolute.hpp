@@ -5,6 +5,7 @@
 // the revolute joint's point block (revolute_joint.cpp) lane by lane.
 #pragma once
 
+#include <cstdint>
 #include <vector>
 
 #include "joint.hpp"
@@ -23,6 +24,10 @@ struct WideRevoluteBlock {
     float dcx[4], dcy[4];                  ///< centre B − centre A at the step's start
     float mA[4], iA[4], mB[4], iB[4];      ///< inverse masses and inertias
     float px[4], py[4];                    ///< accumulated impulse (N·s)
+    /// Which sides move (kWideMovesA, kWideMovesB as a contact lane's flags:
+    /// a nonzero inverse mass or inertia), what the eight-lane write-back
+    /// tests instead of the four inverse masses.
+    std::uint32_t moves[4];
     /// The anchors turned to the substep's positions and the point matrix
     /// K = [k11 k12; k12 k22] with 1/det K, kept by the warm start for the
     /// passes before the positions move (solveWideRevolutes).
