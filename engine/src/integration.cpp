@@ -85,7 +85,18 @@ bool integrateFourPositions(BodyState* states, float h, float maxSpeed2, float m
     return true;
 }
 
+#if defined(I2D_AVX2_KERNEL)
+bool avx2Lanes() { return wideLanes() == 8; }
+#endif
+
 }  // namespace
+
+#if defined(I2D_AVX2_KERNEL)
+// wide_avx2.cpp: the four-body functions above for eight bodies (bodies i
+// and i + 4 in the two halves of each register), the same bits.
+bool integrateEightVelocitiesAvx2(BodyState* states, const BodyIntegration* in, float h, float maxSpeed2);
+bool integrateEightPositionsAvx2(BodyState* states, float h, float maxSpeed2, float maxAngular);
+#endif
 
 /// Bodies [begin, end) of the solver arrays (each body on its own: a stage
 /// the workers may share). `payLift`: pay the last substep's push lift first
@@ -110,12 +121,21 @@ void integrateVelocities(SolverArrays& s, float h, float maxSpeed, std::size_t b
         st.v = limitSpeed(v, maxSpeed);
         st.w = av;
     };
+    auto four = [&](std::size_t i) {
+        if (integrateFourVelocities(&s.states[i], &s.integration[i], h, maxSpeed * maxSpeed)) return;
+        for (std::size_t k = i; k < i + 4; ++k) integrate(k);  // kinematic, or limited
+    };
     std::size_t i = begin;
     if (!payLift) {
-        for (; i + 4 <= end; i += 4) {
-            if (integrateFourVelocities(&s.states[i], &s.integration[i], h, maxSpeed * maxSpeed)) continue;
-            for (std::size_t k = i; k < i + 4; ++k) integrate(k);  // kinematic, or limited
-        }
+#if defined(I2D_AVX2_KERNEL)
+        if (avx2Lanes())
+            for (; i + 8 <= end; i += 8) {
+                if (integrateEightVelocitiesAvx2(&s.states[i], &s.integration[i], h, maxSpeed * maxSpeed)) continue;
+                four(i);
+                four(i + 4);
+            }
+#endif
+        for (; i + 4 <= end; i += 4) four(i);
     }
     for (; i < end; ++i) integrate(i);
 }
@@ -139,11 +159,20 @@ void integratePositions(SolverArrays& s, float h, float maxSpeed, std::size_t be
         st.dp = mulAdd(st.dp, h, st.v);
         st.dq = integrateRotation(st.dq, h * st.w);
     };
-    std::size_t i = begin;
-    for (; i + 4 <= end; i += 4) {
-        if (integrateFourPositions(&s.states[i], h, maxSpeed * maxSpeed, maxAngular)) continue;
+    auto four = [&](std::size_t i) {
+        if (integrateFourPositions(&s.states[i], h, maxSpeed * maxSpeed, maxAngular)) return;
         for (std::size_t k = i; k < i + 4; ++k) integrate(k);  // one of them is limited
-    }
+    };
+    std::size_t i = begin;
+#if defined(I2D_AVX2_KERNEL)
+    if (avx2Lanes())
+        for (; i + 8 <= end; i += 8) {
+            if (integrateEightPositionsAvx2(&s.states[i], h, maxSpeed * maxSpeed, maxAngular)) continue;
+            four(i);
+            four(i + 4);
+        }
+#endif
+    for (; i + 4 <= end; i += 4) four(i);
     for (; i < end; ++i) integrate(i);
 }
 

@@ -151,6 +151,92 @@ I2D_AVX Float8 clampv<Float8, Mask8>(Float8 a, Float8 lo, Float8 hi) {
     return select(a < lo, lo, Float8{_mm256_min_ps(hi.v, a.v)});
 }
 
+// ---- Integration, eight bodies at a time ------------------------------------
+// integrateFourVelocities and integrateFourPositions (integration.cpp) with
+// bodies i and i + 4 in the low and high halves: each half is transposed
+// as the four-lane path transposes its four bodies, and every lane sees the
+// same operations in the same order (no fused multiply-add: the engine is
+// built with -ffp-contract=off), so the results are the same bits.
+
+namespace {
+
+/// The four-float rows at lo[k·stride] (low half) and hi[k·stride] (high
+/// half), k = 0…3, transposed in each half as _MM_TRANSPOSE4_PS.
+I2D_AVX void loadTransposed(const float* lo, const float* hi, std::size_t stride, Float8& r0, Float8& r1, Float8& r2,
+                            Float8& r3) {
+    const __m256 a = load8(lo, hi).v, b = load8(lo + stride, hi + stride).v;
+    const __m256 c = load8(lo + 2 * stride, hi + 2 * stride).v, d = load8(lo + 3 * stride, hi + 3 * stride).v;
+    const __m256 t0 = _mm256_unpacklo_ps(a, b), t1 = _mm256_unpacklo_ps(c, d);
+    const __m256 t2 = _mm256_unpackhi_ps(a, b), t3 = _mm256_unpackhi_ps(c, d);
+    r0 = {_mm256_shuffle_ps(t0, t1, 0x44)};
+    r1 = {_mm256_shuffle_ps(t0, t1, 0xEE)};
+    r2 = {_mm256_shuffle_ps(t2, t3, 0x44)};
+    r3 = {_mm256_shuffle_ps(t2, t3, 0xEE)};
+}
+
+/// The inverse of loadTransposed.
+I2D_AVX void storeTransposed(float* lo, float* hi, std::size_t stride, Float8 r0, Float8 r1, Float8 r2, Float8 r3) {
+    const __m256 t0 = _mm256_unpacklo_ps(r0.v, r1.v), t1 = _mm256_unpacklo_ps(r2.v, r3.v);
+    const __m256 t2 = _mm256_unpackhi_ps(r0.v, r1.v), t3 = _mm256_unpackhi_ps(r2.v, r3.v);
+    store8(lo, hi, {_mm256_shuffle_ps(t0, t1, 0x44)});
+    store8(lo + stride, hi + stride, {_mm256_shuffle_ps(t0, t1, 0xEE)});
+    store8(lo + 2 * stride, hi + 2 * stride, {_mm256_shuffle_ps(t2, t3, 0x44)});
+    store8(lo + 3 * stride, hi + 3 * stride, {_mm256_shuffle_ps(t2, t3, 0xEE)});
+}
+
+I2D_AVX int laneBits8(Mask8 m) { return _mm256_movemask_ps(m.m); }
+
+/// nonFiniteVelocities of integration.cpp: x·0 is NaN for a non-finite x.
+I2D_AVX Mask8 nonFiniteVelocities8(Float8 vx, Float8 vy, Float8 w) {
+    const Float8 zero = Lanes8<WideRevoluteBlock>::splat(0.0f);
+    return nonZero(vx * zero + vy * zero + w * zero);
+}
+
+}  // namespace
+
+bool integrateEightVelocitiesAvx2(BodyState* states, const BodyIntegration* in, float h, float maxSpeed2) {
+    for (int i = 0; i < 8; ++i)
+        if (!in[i].movedByForces) return false;
+    constexpr std::size_t kRecord = sizeof(BodyIntegration) / sizeof(float);
+    static_assert(sizeof(BodyIntegration) % sizeof(float) == 0);
+    Float8 ax, ay, torque, invI, unused, linear, angular, flagWord;
+    loadTransposed(&in[0].linearAcceleration.x, &in[4].linearAcceleration.x, kRecord, ax, ay, torque, invI);
+    loadTransposed(&in[0].invInertia, &in[4].invInertia, kRecord, unused, linear, angular, flagWord);
+    float* f = &states[0].v.x;
+    Float8 vx, vy, w, up;
+    loadTransposed(f, f + 32, 8, vx, vy, w, up);
+    if (laneBits8(nonFiniteVelocities8(vx, vy, w)) != 0) return false;
+    const Float8 step = Lanes8<WideRevoluteBlock>::splat(h);
+    vx = (vx + step * ax) * linear;
+    vy = (vy + step * ay) * linear;
+    if (laneBits8(vx * vx + vy * vy > Lanes8<WideRevoluteBlock>::splat(maxSpeed2)) != 0) return false;
+    w = (w + step * invI * torque) * angular;
+    storeTransposed(f, f + 32, 8, vx, vy, w, up);
+    return true;
+}
+
+bool integrateEightPositionsAvx2(BodyState* states, float h, float maxSpeed2, float maxAngular) {
+    using L = Lanes8<WideRevoluteBlock>;
+    float* f = &states[0].v.x;
+    Float8 vx, vy, w, up;
+    loadTransposed(f, f + 32, 8, vx, vy, w, up);
+    const Float8 fast = vx * vx + vy * vy;
+    const Float8 absW = select(w < L::splat(0.0f), -w, w);
+    if (laneBits8((fast > L::splat(maxSpeed2)) | (absW > L::splat(maxAngular)) | nonFiniteVelocities8(vx, vy, w)) != 0)
+        return false;
+    Float8 dpx, dpy, c, sn;
+    loadTransposed(f + 4, f + 36, 8, dpx, dpy, c, sn);
+    const Float8 step = L::splat(h);
+    dpx = dpx + step * vx;
+    dpy = dpy + step * vy;
+    const Float8 angle = step * w;
+    const Float8 rc = c - angle * sn, rs = sn + angle * c;
+    const Float8 mag = {_mm256_sqrt_ps((rc * rc + rs * rs).v)};
+    const Float8 inv = select(mag > L::splat(0.0f), L::splat(1.0f) / mag, L::splat(0.0f));
+    storeTransposed(f + 4, f + 36, 8, dpx, dpy, rc * inv, rs * inv);
+    return true;
+}
+
 int warmStartWideContactsAvx2(WideContactBlock* blocks, BodyState* states, int first, int last, int points) {
     int i = first;
     withPointCount(points, [&](auto n) {
