@@ -22,8 +22,8 @@ namespace {
 
 constexpr int kJointColours = 16;  ///< colours tried before the overflow group
 /// Wide blocks per chunk a worker claims (a colour's blocks are shared among
-/// the workers: they touch no movable body twice).
-constexpr int kWideGrain = 64;
+/// the workers: they touch no movable body twice); 256 hinges.
+constexpr int kWideGrain = 32;
 
 /// The solver state of a body index, or a zero stand-in that is thrown away.
 BodyState& stateOf(SolverArrays& s, int index) {

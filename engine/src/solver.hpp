@@ -76,7 +76,7 @@ struct SolverArrays {
     JointTrees trees;                   ///< joints solved exactly (joint_tree.cpp)
     std::vector<int> jointColourStart;  ///< per joint colour: its first place in jointOrder; then the row count
     std::vector<int> jointWideStart;    ///< per joint colour: its first place of the wide path
-    std::vector<WideRevoluteBlock> wideRevolutes;  ///< the wide rows, four to a block (wide_revolute.cpp)
+    std::vector<WideRevoluteBlock> wideRevolutes;  ///< the wide rows, kHingeLanes to a block (wide_revolute.cpp)
     std::vector<WideRevoluteFrame> wideFrames;     ///< per block: where its lanes' anchors come from
     int positionUpdates = 0;                       ///< position updates so far in this step (solver.cpp)
     int wideFrameAt = -1;                          ///< the positionUpdates the blocks' kept anchors and K were made at

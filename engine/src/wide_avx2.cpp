@@ -54,6 +54,55 @@ I2D_AVX void store8(float* lo, float* hi, Float8 a) {
     _mm_storeu_ps(hi, _mm256_extractf128_ps(a.v, 1));
 }
 
+/// The eight bodies' states at i0[0…3] and i1[0…3] (two rows of four floats
+/// each, body.hpp), transposed so that each field is one register of eight
+/// lanes.
+I2D_AVX WideBodyT<Float8> gatherStates8(const BodyState* states, const int* i0, const int* i1) {
+    __m256 r[8];
+    for (int i = 0; i < 4; ++i) {
+        r[i] = _mm256_loadu_ps(reinterpret_cast<const float*>(states + i0[i]));
+        r[4 + i] = _mm256_loadu_ps(reinterpret_cast<const float*>(states + i1[i]));
+    }
+    const __m256 t0 = _mm256_unpacklo_ps(r[0], r[1]), t1 = _mm256_unpackhi_ps(r[0], r[1]);
+    const __m256 t2 = _mm256_unpacklo_ps(r[2], r[3]), t3 = _mm256_unpackhi_ps(r[2], r[3]);
+    const __m256 t4 = _mm256_unpacklo_ps(r[4], r[5]), t5 = _mm256_unpackhi_ps(r[4], r[5]);
+    const __m256 t6 = _mm256_unpacklo_ps(r[6], r[7]), t7 = _mm256_unpackhi_ps(r[6], r[7]);
+    const __m256 u0 = _mm256_shuffle_ps(t0, t2, 0x44), u1 = _mm256_shuffle_ps(t0, t2, 0xEE);
+    const __m256 u2 = _mm256_shuffle_ps(t1, t3, 0x44), u3 = _mm256_shuffle_ps(t1, t3, 0xEE);
+    const __m256 u4 = _mm256_shuffle_ps(t4, t6, 0x44), u5 = _mm256_shuffle_ps(t4, t6, 0xEE);
+    const __m256 u6 = _mm256_shuffle_ps(t5, t7, 0x44), u7 = _mm256_shuffle_ps(t5, t7, 0xEE);
+    WideBodyT<Float8> b;
+    b.vx = {_mm256_permute2f128_ps(u0, u4, 0x20)};
+    b.vy = {_mm256_permute2f128_ps(u1, u5, 0x20)};
+    b.w = {_mm256_permute2f128_ps(u2, u6, 0x20)};
+    b.reserved = {_mm256_permute2f128_ps(u3, u7, 0x20)};
+    b.dpx = {_mm256_permute2f128_ps(u0, u4, 0x31)};
+    b.dpy = {_mm256_permute2f128_ps(u1, u5, 0x31)};
+    b.qc = {_mm256_permute2f128_ps(u2, u6, 0x31)};
+    b.qs = {_mm256_permute2f128_ps(u3, u7, 0x31)};
+    return b;
+}
+
+/// Four lanes' velocity rows back to states + index[0…3], where flags[i] has
+/// `moves`; a side that cannot move is never written (wide_body.hpp says why).
+I2D_AVX void scatterHalf(BodyState* states, const int* index, const std::uint32_t* flags, std::uint32_t moves,
+                         __m128 r0, __m128 r1, __m128 r2, __m128 r3) {
+    _MM_TRANSPOSE4_PS(r0, r1, r2, r3);
+    const __m128 rows[4] = {r0, r1, r2, r3};
+    for (int i = 0; i < 4; ++i)
+        if (flags[i] & moves) _mm_storeu_ps(reinterpret_cast<float*>(states + index[i]), rows[i]);
+}
+
+/// The velocity rows of the eight lanes (the low half's at i0, the high
+/// half's at i1) of the bodies that can move.
+I2D_AVX void scatterStates8(BodyState* states, const int* i0, const std::uint32_t* f0, const int* i1,
+                            const std::uint32_t* f1, std::uint32_t moves, const WideBodyT<Float8>& b) {
+    scatterHalf(states, i0, f0, moves, _mm256_castps256_ps128(b.vx.v), _mm256_castps256_ps128(b.vy.v),
+                _mm256_castps256_ps128(b.w.v), _mm256_castps256_ps128(b.reserved.v));
+    scatterHalf(states, i1, f1, moves, _mm256_extractf128_ps(b.vx.v, 1), _mm256_extractf128_ps(b.vy.v, 1),
+                _mm256_extractf128_ps(b.w.v, 1), _mm256_extractf128_ps(b.reserved.v, 1));
+}
+
 /// Two blocks of one colour in the eight lanes of Float8.
 template <class Block>
 struct Lanes8 {
@@ -81,59 +130,32 @@ struct Lanes8 {
         return {_mm256_castsi256_ps(_mm256_cmpeq_epi32(_mm256_and_si256(f, b), b))};
     }
 
-    /// The eight bodies' states (two rows of four floats each, body.hpp),
-    /// transposed so that each field is one register of eight lanes.
     I2D_AVX WideBodyT<V> gather(const BodyState* states, bool sideA) const {
-        const int* i0 = sideA ? k0->a : k0->b;
-        const int* i1 = sideA ? k1->a : k1->b;
-        __m256 r[8];
-        for (int i = 0; i < 4; ++i) {
-            r[i] = _mm256_loadu_ps(reinterpret_cast<const float*>(states + i0[i]));
-            r[4 + i] = _mm256_loadu_ps(reinterpret_cast<const float*>(states + i1[i]));
-        }
-        const __m256 t0 = _mm256_unpacklo_ps(r[0], r[1]), t1 = _mm256_unpackhi_ps(r[0], r[1]);
-        const __m256 t2 = _mm256_unpacklo_ps(r[2], r[3]), t3 = _mm256_unpackhi_ps(r[2], r[3]);
-        const __m256 t4 = _mm256_unpacklo_ps(r[4], r[5]), t5 = _mm256_unpackhi_ps(r[4], r[5]);
-        const __m256 t6 = _mm256_unpacklo_ps(r[6], r[7]), t7 = _mm256_unpackhi_ps(r[6], r[7]);
-        const __m256 u0 = _mm256_shuffle_ps(t0, t2, 0x44), u1 = _mm256_shuffle_ps(t0, t2, 0xEE);
-        const __m256 u2 = _mm256_shuffle_ps(t1, t3, 0x44), u3 = _mm256_shuffle_ps(t1, t3, 0xEE);
-        const __m256 u4 = _mm256_shuffle_ps(t4, t6, 0x44), u5 = _mm256_shuffle_ps(t4, t6, 0xEE);
-        const __m256 u6 = _mm256_shuffle_ps(t5, t7, 0x44), u7 = _mm256_shuffle_ps(t5, t7, 0xEE);
-        WideBodyT<V> b;
-        b.vx = {_mm256_permute2f128_ps(u0, u4, 0x20)};
-        b.vy = {_mm256_permute2f128_ps(u1, u5, 0x20)};
-        b.w = {_mm256_permute2f128_ps(u2, u6, 0x20)};
-        b.reserved = {_mm256_permute2f128_ps(u3, u7, 0x20)};
-        b.dpx = {_mm256_permute2f128_ps(u0, u4, 0x31)};
-        b.dpy = {_mm256_permute2f128_ps(u1, u5, 0x31)};
-        b.qc = {_mm256_permute2f128_ps(u2, u6, 0x31)};
-        b.qs = {_mm256_permute2f128_ps(u3, u7, 0x31)};
-        return b;
+        return gatherStates8(states, sideA ? k0->a : k0->b, sideA ? k1->a : k1->b);
     }
-
-    /// The velocity rows of the bodies that can move; a side that cannot is
-    /// never written (wide_body.hpp says why).
     I2D_AVX void scatter(BodyState* states, bool sideA, const WideBodyT<V>& b) const {
-        scatterHalf(states, *k0, sideA, _mm256_castps256_ps128(b.vx.v), _mm256_castps256_ps128(b.vy.v),
-                    _mm256_castps256_ps128(b.w.v), _mm256_castps256_ps128(b.reserved.v));
-        scatterHalf(states, *k1, sideA, _mm256_extractf128_ps(b.vx.v, 1), _mm256_extractf128_ps(b.vy.v, 1),
-                    _mm256_extractf128_ps(b.w.v, 1), _mm256_extractf128_ps(b.reserved.v, 1));
+        // A contact lane's flags say whether each side moves (made once when it was prepared).
+        scatterStates8(states, sideA ? k0->a : k0->b, k0->flags, sideA ? k1->a : k1->b, k1->flags,
+                       sideA ? kWideMovesA : kWideMovesB, b);
     }
-    I2D_AVX static void scatterHalf(BodyState* states, const Block& k, bool sideA, __m128 r0, __m128 r1, __m128 r2,
-                                    __m128 r3) {
-        _MM_TRANSPOSE4_PS(r0, r1, r2, r3);
-        const __m128 rows[4] = {r0, r1, r2, r3};
-        const int* index = sideA ? k.a : k.b;
-        // A lane's flags say whether each side moves (the four-lane path's
-        // test of the inverse masses, made once when the lane was packed).
-        const std::uint32_t moves = sideA ? kWideMovesA : kWideMovesB;
-        const std::uint32_t* flags;
-        if constexpr (std::is_same_v<Block, WideContactBlock>)
-            flags = k.flags;
-        else
-            flags = k.moves;
-        for (int i = 0; i < 4; ++i)
-            if (flags[i] & moves) _mm_storeu_ps(reinterpret_cast<float*>(states + index[i]), rows[i]);
+};
+
+/// One block of hinges (kHingeLanes = 8) in the lanes of Float8: each field
+/// one load.
+struct HingeLanes8 {
+    using V = Float8;
+    using M = Mask8;
+    WideRevoluteBlock* k;
+    I2D_AVX static V splat(float x) { return {_mm256_set1_ps(x)}; }
+    I2D_AVX V load(HingeField f) const { return {_mm256_loadu_ps(k->*f)}; }
+    I2D_AVX void store(HingeField f, V x) const { _mm256_storeu_ps(k->*f, x.v); }
+    I2D_AVX WideBodyT<V> gather(const BodyState* states, bool sideA) const {
+        const int* index = sideA ? k->a : k->b;
+        return gatherStates8(states, index, index + 4);
+    }
+    I2D_AVX void scatter(BodyState* states, bool sideA, const WideBodyT<V>& b) const {
+        const int* index = sideA ? k->a : k->b;
+        scatterStates8(states, index, k->moves, index + 4, k->moves + 4, sideA ? kWideMovesA : kWideMovesB, b);
     }
 };
 
@@ -188,7 +210,7 @@ I2D_AVX int laneBits8(Mask8 m) { return _mm256_movemask_ps(m.m); }
 
 /// nonFiniteVelocities of integration.cpp: x·0 is NaN for a non-finite x.
 I2D_AVX Mask8 nonFiniteVelocities8(Float8 vx, Float8 vy, Float8 w) {
-    const Float8 zero = Lanes8<WideRevoluteBlock>::splat(0.0f);
+    const Float8 zero = HingeLanes8::splat(0.0f);
     return nonZero(vx * zero + vy * zero + w * zero);
 }
 
@@ -206,17 +228,17 @@ bool integrateEightVelocitiesAvx2(BodyState* states, const BodyIntegration* in, 
     Float8 vx, vy, w, up;
     loadTransposed(f, f + 32, 8, vx, vy, w, up);
     if (laneBits8(nonFiniteVelocities8(vx, vy, w)) != 0) return false;
-    const Float8 step = Lanes8<WideRevoluteBlock>::splat(h);
+    const Float8 step = HingeLanes8::splat(h);
     vx = (vx + step * ax) * linear;
     vy = (vy + step * ay) * linear;
-    if (laneBits8(vx * vx + vy * vy > Lanes8<WideRevoluteBlock>::splat(maxSpeed2)) != 0) return false;
+    if (laneBits8(vx * vx + vy * vy > HingeLanes8::splat(maxSpeed2)) != 0) return false;
     w = (w + step * invI * torque) * angular;
     storeTransposed(f, f + 32, 8, vx, vy, w, up);
     return true;
 }
 
 bool integrateEightPositionsAvx2(BodyState* states, float h, float maxSpeed2, float maxAngular) {
-    using L = Lanes8<WideRevoluteBlock>;
+    using L = HingeLanes8;
     float* f = &states[0].v.x;
     Float8 vx, vy, w, up;
     loadTransposed(f, f + 32, 8, vx, vy, w, up);
@@ -255,19 +277,13 @@ int solveWideContactsAvx2(WideContactBlock* blocks, WideContactCold* cold, BodyS
     return i;
 }
 
-int warmStartWideRevolutesAvx2(WideRevoluteBlock* blocks, BodyState* states, int first, int last, bool kept) {
-    int i = first;
-    for (; i + 1 < last; i += 2)
-        warmStartHingeBlock(Lanes8<WideRevoluteBlock>{blocks + i, blocks + i + 1}, states, kept);
-    return i;
+void warmStartWideRevolutesAvx2(WideRevoluteBlock* blocks, BodyState* states, int first, int last, bool kept) {
+    for (int i = first; i < last; ++i) warmStartHingeBlock(HingeLanes8{blocks + i}, states, kept);
 }
 
-int solveWideRevolutesAvx2(WideRevoluteBlock* blocks, BodyState* states, const HingeRates& rates, int first, int last,
-                           bool kept) {
-    int i = first;
-    for (; i + 1 < last; i += 2)
-        solveHingeBlock(Lanes8<WideRevoluteBlock>{blocks + i, blocks + i + 1}, states, rates, kept);
-    return i;
+void solveWideRevolutesAvx2(WideRevoluteBlock* blocks, BodyState* states, const HingeRates& rates, int first, int last,
+                            bool kept) {
+    for (int i = first; i < last; ++i) solveHingeBlock(HingeLanes8{blocks + i}, states, rates, kept);
 }
 
 }  // namespace i2d::detail

@@ -1,9 +1,10 @@
-// Four revolute point blocks at a time (see wide_revolute.hpp): packing the
+// Eight revolute point blocks at a time (see wide_revolute.hpp): packing the
 // slots into blocks, the four- or eight-lane sweeps (wide_revolute_kernel.hpp
 // holds them), the store of the impulses.
 #include "wide_revolute.hpp"
 
 #include "joint_rows.hpp"
+#include "wide_body.hpp"
 #include "wide_contact.hpp"
 #include "wide_lanes4.hpp"
 #include "wide_revolute_kernel.hpp"
@@ -14,10 +15,10 @@ namespace i2d::detail {
 void packWideRevolutes(const WorldState& w, SolverArrays& s, int first, int last) {
     const int zero = static_cast<int>(s.states.size()) - 1;
     const bool warm = w.settings.enableWarmStarting;
-    for (int start = first; start < last; start += 4) {
+    for (int start = first; start < last; start += kHingeLanes) {
         WideRevoluteBlock& block = s.wideRevolutes.emplace_back();
         WideRevoluteFrame& frame = s.wideFrames.emplace_back();
-        for (int lane = 0; lane < 4; ++lane) {
+        for (int lane = 0; lane < kHingeLanes; ++lane) {
             const int place = start + lane;
             if (place >= last) {
                 block.a[lane] = block.b[lane] = zero;
@@ -59,7 +60,7 @@ void refreshWideRevolutes(const WorldState& w, SolverArrays& s, int firstBlock, 
     for (int k = firstBlock; k < lastBlock; ++k) {
         WideRevoluteBlock& block = s.wideRevolutes[static_cast<std::size_t>(k)];
         const WideRevoluteFrame& frame = s.wideFrames[static_cast<std::size_t>(k)];
-        for (int lane = 0; lane < 4; ++lane) {
+        for (int lane = 0; lane < kHingeLanes; ++lane) {
             if (block.joint[lane] < 0) continue;
             const Body& bA = w.bodies[frame.bodyA[lane]];
             const Body& bB = w.bodies[frame.bodyB[lane]];
@@ -76,6 +77,30 @@ void refreshWideRevolutes(const WorldState& w, SolverArrays& s, int firstBlock, 
 
 namespace {
 
+/// Half of a block of hinges (lanes 4·half to 4·half + 3) in the lanes of
+/// Float4, as Lanes4 holds a contact block.
+struct HingeLanes4 {
+    using V = Float4;
+    using M = Mask4;
+    WideRevoluteBlock* k;
+    int half;
+    static V splat(float x) { return detail::splat(x); }
+    V load(HingeField f) const { return load4(k->*f + 4 * half); }
+    void store(HingeField f, V x) const { store4(k->*f + 4 * half, x); }
+    WideBodyT<V> gather(const BodyState* states, bool sideA) const {
+        const WideBody b = gatherBodies(states, (sideA ? k->a : k->b) + 4 * half);
+        return {b.vx, b.vy, b.w, b.reserved, b.dpx, b.dpy, b.qc, b.qs};
+    }
+    void scatter(BodyState* states, bool sideA, const WideBodyT<V>& b) const {
+        const WideBody w{b.vx, b.vy, b.w, b.reserved, b.dpx, b.dpy, b.qc, b.qs};
+        const int o = 4 * half;
+        if (sideA)
+            scatterVelocities(states, k->a + o, w, k->mA + o, k->iA + o);
+        else
+            scatterVelocities(states, k->b + o, w, k->mB + o, k->iB + o);
+    }
+};
+
 #if defined(I2D_AVX2_KERNEL)
 bool avx2Lanes() { return wideLanes() == 8; }
 #endif
@@ -83,21 +108,24 @@ bool avx2Lanes() { return wideLanes() == 8; }
 }  // namespace
 
 #if defined(I2D_AVX2_KERNEL)
-// wide_avx2.cpp: pairs of blocks from `first`; each returns the first block
-// it left (the odd one at the end, if any).
-int warmStartWideRevolutesAvx2(WideRevoluteBlock* blocks, BodyState* states, int first, int last, bool kept);
-int solveWideRevolutesAvx2(WideRevoluteBlock* blocks, BodyState* states, const HingeRates& rates, int first, int last,
-                           bool kept);
+// wide_avx2.cpp: blocks [first, last), each in one register's lanes.
+void warmStartWideRevolutesAvx2(WideRevoluteBlock* blocks, BodyState* states, int first, int last, bool kept);
+void solveWideRevolutesAvx2(WideRevoluteBlock* blocks, BodyState* states, const HingeRates& rates, int first, int last,
+                            bool kept);
 #endif
 
 void warmStartWideRevolutes(SolverArrays& s, int firstBlock, int lastBlock, bool kept) {
     BodyState* states = s.states.data();
 #if defined(I2D_AVX2_KERNEL)
-    if (avx2Lanes() && lastBlock > firstBlock)
-        firstBlock = warmStartWideRevolutesAvx2(&s.wideRevolutes[0], states, firstBlock, lastBlock, kept);
+    if (avx2Lanes()) {
+        if (lastBlock > firstBlock)
+            warmStartWideRevolutesAvx2(&s.wideRevolutes[0], states, firstBlock, lastBlock, kept);
+        return;
+    }
 #endif
     for (int i = firstBlock; i < lastBlock; ++i)
-        warmStartHingeBlock(Lanes4<WideRevoluteBlock>{&s.wideRevolutes[static_cast<std::size_t>(i)]}, states, kept);
+        for (int half = 0; half < 2; ++half)
+            warmStartHingeBlock(HingeLanes4{&s.wideRevolutes[static_cast<std::size_t>(i)], half}, states, kept);
 }
 
 void solveWideRevolutes(SolverArrays& s, const JointContext& ctx, int firstBlock, int lastBlock, bool kept) {
@@ -105,17 +133,21 @@ void solveWideRevolutes(SolverArrays& s, const JointContext& ctx, int firstBlock
     const HingeRates rates{rb.bias, rb.massScale, rb.impulseScale};
     BodyState* states = s.states.data();
 #if defined(I2D_AVX2_KERNEL)
-    if (avx2Lanes() && lastBlock > firstBlock)
-        firstBlock = solveWideRevolutesAvx2(&s.wideRevolutes[0], states, rates, firstBlock, lastBlock, kept);
+    if (avx2Lanes()) {
+        if (lastBlock > firstBlock)
+            solveWideRevolutesAvx2(&s.wideRevolutes[0], states, rates, firstBlock, lastBlock, kept);
+        return;
+    }
 #endif
     for (int i = firstBlock; i < lastBlock; ++i)
-        solveHingeBlock(Lanes4<WideRevoluteBlock>{&s.wideRevolutes[static_cast<std::size_t>(i)]}, states, rates, kept);
+        for (int half = 0; half < 2; ++half)
+            solveHingeBlock(HingeLanes4{&s.wideRevolutes[static_cast<std::size_t>(i)], half}, states, rates, kept);
 }
 
 void storeWideRevolutes(WorldState& w, float h) {
     const float invH = 1.0f / h;
     for (const WideRevoluteBlock& k : w.solver.wideRevolutes)
-        for (int lane = 0; lane < 4; ++lane) {
+        for (int lane = 0; lane < kHingeLanes; ++lane) {
             if (k.joint[lane] < 0) continue;
             Joint& joint = w.joints[k.joint[lane]];
             joint.impulses = JointImpulses{};
@@ -129,7 +161,7 @@ void storeWideRevolutes(WorldState& w, float h) {
 
 void dropWideImpulses(SolverArrays& s, const std::vector<char>& bad) {
     for (WideRevoluteBlock& k : s.wideRevolutes)
-        for (int lane = 0; lane < 4; ++lane)
+        for (int lane = 0; lane < kHingeLanes; ++lane)
             if (bad[static_cast<std::size_t>(k.a[lane])] || bad[static_cast<std::size_t>(k.b[lane])])
                 k.px[lane] = k.py[lane] = 0.0f;
 }

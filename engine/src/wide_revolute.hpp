@@ -1,8 +1,10 @@
 // Revolute joints without limit, motor or spring (a hinge's point rows only,
-// the bulk of chains, bridges and grids), solved four at a time: the rows of
-// one colour touch no movable body twice, so four of them are independent and
-// their arithmetic runs in the lanes of Float4 (SSE2 on x86-64). The maths is
-// the revolute joint's point block (revolute_joint.cpp) lane by lane.
+// the bulk of chains, bridges and grids), solved eight at a time: the rows of
+// one colour touch no movable body twice, so eight of them are independent
+// and their arithmetic runs in the lanes of an AVX register (where the CPU
+// has AVX2) or, half a block at a time, of Float4 (SSE2 on x86-64, portable
+// elsewhere). The maths is the revolute joint's point block
+// (revolute_joint.cpp) lane by lane.
 #pragma once
 
 #include <cstdint>
@@ -15,33 +17,39 @@ namespace i2d::detail {
 struct SolverArrays;
 struct WorldState;
 
-/// Four hinges' rows, structure of arrays. An empty lane names the zero state
-/// on both sides with zero inverse masses, so it changes nothing.
+/// Lanes of a block of hinges: eight, so that on CPUs with AVX2 each field
+/// is one register's load; the four-lane path solves a block as two halves.
+inline constexpr int kHingeLanes = 8;
+
+/// Eight hinges' rows, structure of arrays. An empty lane names the zero
+/// state on both sides with zero inverse masses, so it changes nothing.
 struct WideRevoluteBlock {
-    int a[4], b[4];                        ///< solver state indices (the zero state for a body that does not move)
-    int joint[4];                          ///< the world's joint slot, −1 for an empty lane
-    float rAx[4], rAy[4], rBx[4], rBy[4];  ///< anchors from the centres of mass at the step's start
-    float dcx[4], dcy[4];                  ///< centre B − centre A at the step's start
-    float mA[4], iA[4], mB[4], iB[4];      ///< inverse masses and inertias
-    float px[4], py[4];                    ///< accumulated impulse (N·s)
+    int a[kHingeLanes], b[kHingeLanes];  ///< solver state indices (the zero state for a body that does not move)
+    int joint[kHingeLanes];              ///< the world's joint slot, −1 for an empty lane
+    float rAx[kHingeLanes], rAy[kHingeLanes], rBx[kHingeLanes], rBy[kHingeLanes];  ///< anchors from the centres
+                                                                                   ///< of mass at the step's start
+    float dcx[kHingeLanes], dcy[kHingeLanes];  ///< centre B − centre A at the step's start
+    float mA[kHingeLanes], iA[kHingeLanes], mB[kHingeLanes], iB[kHingeLanes];  ///< inverse masses and inertias
+    float px[kHingeLanes], py[kHingeLanes];                                    ///< accumulated impulse (N·s)
     /// Which sides move (kWideMovesA, kWideMovesB as a contact lane's flags:
     /// a nonzero inverse mass or inertia), what the eight-lane write-back
     /// tests instead of the four inverse masses.
-    std::uint32_t moves[4];
+    std::uint32_t moves[kHingeLanes];
     /// The anchors turned to the substep's positions and the point matrix
     /// K = [k11 k12; k12 k22] with 1/det K, kept by the warm start for the
     /// passes before the positions move (solveWideRevolutes).
-    float turnedAx[4], turnedAy[4], turnedBx[4], turnedBy[4];
-    float k11[4], k12[4], k22[4], invDet[4];
+    float turnedAx[kHingeLanes], turnedAy[kHingeLanes], turnedBx[kHingeLanes], turnedBy[kHingeLanes];
+    float k11[kHingeLanes], k12[kHingeLanes], k22[kHingeLanes], invDet[kHingeLanes];
 };
+using HingeField = float (WideRevoluteBlock::*)[kHingeLanes];
 
 /// What a block's lanes are made from each step while the joint plan is kept
 /// (SolverArrays::jointPlanStale): the world's body slots and the anchors from
 /// the centres of mass in the bodies' frames (they change only with the
 /// masses or the joint, which make a new plan).
 struct WideRevoluteFrame {
-    int bodyA[4], bodyB[4];
-    float armAx[4], armAy[4], armBx[4], armBy[4];
+    int bodyA[kHingeLanes], bodyB[kHingeLanes];
+    float armAx[kHingeLanes], armAy[kHingeLanes], armBx[kHingeLanes], armBy[kHingeLanes];
 };
 
 /// Packs the slots at places [first, last) of s.jointOrder (all wide

@@ -1,4 +1,4 @@
-// Revolute point rows solved four at a time (wide_revolute.cpp) against the
+// Revolute point rows solved four or eight at a time (wide_revolute.cpp) against the
 // scalar row (revolute_joint.cpp) on the same random rows: the same
 // operations in the same order, so the velocities and impulses must agree
 // bit for bit, in every pass, on SSE2 and on the portable path (the
@@ -59,9 +59,9 @@ Case makeCase(unsigned seed, int n) {
     }
     for (SolverArrays* s : {&c.wide, &c.scalar}) s->states = states;
     // The blocks, as packWideRevolutes fills them (empty lanes on the zero state).
-    for (int start = 0; start < n; start += 4) {
+    for (int start = 0; start < n; start += kHingeLanes) {
         WideRevoluteBlock& k = c.wide.wideRevolutes.emplace_back();
-        for (int lane = 0; lane < 4; ++lane) {
+        for (int lane = 0; lane < kHingeLanes; ++lane) {
             const int r = start + lane;
             const JointConstraint* jc = r < n ? &c.rows[static_cast<std::size_t>(r)] : nullptr;
             k.a[lane] = jc && jc->a >= 0 ? jc->a : zero;
@@ -93,9 +93,9 @@ void expectSame(Case& c, const char* what) {
         ASSERT_EQ(a.w, b.w) << what << " body " << i;
     }
     for (int r = 0; r < n; ++r) {
-        const WideRevoluteBlock& k = c.wide.wideRevolutes[static_cast<std::size_t>(r / 4)];
-        ASSERT_EQ(k.px[r % 4], c.rows[static_cast<std::size_t>(r)].impulses.linear.x) << what << " row " << r;
-        ASSERT_EQ(k.py[r % 4], c.rows[static_cast<std::size_t>(r)].impulses.linear.y) << what << " row " << r;
+        const WideRevoluteBlock& k = c.wide.wideRevolutes[static_cast<std::size_t>(r / kHingeLanes)];
+        ASSERT_EQ(k.px[r % kHingeLanes], c.rows[static_cast<std::size_t>(r)].impulses.linear.x) << what << " row " << r;
+        ASSERT_EQ(k.py[r % kHingeLanes], c.rows[static_cast<std::size_t>(r)].impulses.linear.y) << what << " row " << r;
     }
 }
 
@@ -108,7 +108,7 @@ struct LaneLimit {
 void expectAgreement(int lanes) {
     const LaneLimit limit(lanes);
     for (unsigned seed = 1; seed <= 20; ++seed) {
-        Case c = makeCase(seed, 37);  // not a multiple of four: the last block has empty lanes
+        Case c = makeCase(seed, 37);  // not a multiple of four or eight: the last block has empty lanes
         const int blocks = static_cast<int>(c.wide.wideRevolutes.size());
         warmStartWideRevolutes(c.wide, 0, blocks, false);
         for (JointConstraint& jc : c.rows) warmStartRevoluteJoint(jc, stateOf(c.scalar, jc.a), stateOf(c.scalar, jc.b));
@@ -132,8 +132,9 @@ void expectAgreement(int lanes) {
 
 TEST(WideRevolute, AgreesBitForBitWithTheScalarRowInFourLanes) { expectAgreement(4); }
 
-// Two blocks at a time in eight lanes where the CPU has AVX2 (37 rows are 10
-// blocks: five pairs).
+// A block in one register's eight lanes where the CPU has AVX2 (37 rows are
+// five blocks, the last with three empty lanes); the four-lane path solves
+// each block as two halves.
 TEST(WideRevolute, AgreesBitForBitWithTheScalarRowInEightLanes) {
     limitWideLanes(8);
     if (wideLanes() != 8) GTEST_SKIP() << "no AVX2 on this CPU (or a portable build)";
