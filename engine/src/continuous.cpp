@@ -379,7 +379,9 @@ bool mayMeetStatic(const WorldState& w, const Body& body, const BodyState& s) {
 
 bool needsSweep(const WorldState& w, const Body& body, const BodyState& s) {
     // makeMover's test without its sweep (two atan2 per moving body, 2 % of a
-    // swinging joint grid's step when asked of every body).
+    // swinging joint grid's step when asked of every body). A body that is
+    // not a bullet is swept against static shapes only: none, no sweep.
+    if (!body.isBullet && w.broadPhase.staticTree.proxyCount() == 0) return false;
     return body.type == BodyType::dynamic_body && body.reach >= 0.0f && movedBeyondContacts(w, body, s);
 }
 

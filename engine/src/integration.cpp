@@ -140,11 +140,6 @@ void integrateVelocities(SolverArrays& s, float h, float maxSpeed, std::size_t b
     for (; i < end; ++i) integrate(i);
 }
 
-void clampVelocity(BodyState& s, float maxSpeed, float maxAngularSpeed) {
-    s.v = limitSpeed(s.v, maxSpeed);
-    if (std::abs(s.w) > maxAngularSpeed) s.w = s.w > 0.0f ? maxAngularSpeed : -maxAngularSpeed;
-}
-
 void integratePositions(SolverArrays& s, float h, float maxSpeed, std::size_t begin, std::size_t end,
                         std::atomic<bool>& nonFinite) {
     const float maxAngular = kMaxRotationPerStep / h;

@@ -6,6 +6,7 @@
 #pragma once
 
 #include <atomic>
+#include <cmath>
 #include <cstddef>
 
 #include "float4.hpp"
@@ -66,7 +67,10 @@ inline bool nonFiniteVelocity(const BodyState& st) { return (laneBits(nonFiniteL
 inline constexpr float kMaxRotationPerStep = 0.25f * 3.14159265f;
 
 /// Velocity limited to maxSpeed, angular speed to maxAngularSpeed.
-void clampVelocity(BodyState& s, float maxSpeed, float maxAngularSpeed);
+inline void clampVelocity(BodyState& s, float maxSpeed, float maxAngularSpeed) {
+    s.v = limitSpeed(s.v, maxSpeed);
+    if (std::abs(s.w) > maxAngularSpeed) s.w = s.w > 0.0f ? maxAngularSpeed : -maxAngularSpeed;
+}
 
 /// Velocities of bodies [begin, end) over a (sub)step h: forces, gravity and
 /// damping (Eq. 3.2.1-3.2.2), then the speed limit. `payLift`: pay the last
