@@ -146,7 +146,7 @@ struct JointSlot {
     bool movesC = false, movesD = false;  ///< gear: its joints' frames move
     std::uint8_t equalityRows = 0;        ///< rows the exact tree solve could take (joint_tree.cpp)
     bool inTree = false;
-    bool wide = false;  ///< solved four at a time (wide_revolute.cpp), with no JointConstraint
+    bool wide = false;  ///< solved eight at a time (wide_revolute.cpp), with no JointConstraint
 };
 
 /// What a joint's solve needs besides its row and its bodies' states.

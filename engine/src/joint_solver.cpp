@@ -114,7 +114,7 @@ void fillBody(const WorldState& w, int body, int& index, float& invMass, float& 
 }
 
 /// A revolute joint with its point rows only, in a step that may solve it
-/// four at a time (not split mode, whose push sweeps every row), with a point
+/// eight at a time (not split mode, whose push sweeps every row), with a point
 /// matrix that fits single precision (see solvePointRows).
 bool wideCandidate(const WorldState& w, const Joint& joint, const Body& bA, const Body& bB, const JointSlot& slot) {
     if (joint.type != JointType::revolute || w.settings.positionCorrection == PositionCorrection::split) return false;
