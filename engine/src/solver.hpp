@@ -17,8 +17,8 @@ namespace i2d::detail {
 
 struct WorldState;
 
-/// What the greedy colouring needs of one active contact, found on every
-/// worker (solver.cpp, colourContacts): its bodies, and flags.
+/// What the greedy colouring needs of one active contact (solver.cpp,
+/// colourContacts): its bodies, and flags.
 struct ColourKey {
     int a, b;  ///< body slots
     std::uint8_t flags;
@@ -60,7 +60,6 @@ struct SolverArrays {
     /// Per body slot: for a body of this step's states, what preparing the
     /// rows reads of it (state kNullIndex for the others).
     std::vector<RowBody> rowBodies;
-    std::vector<ColourKey> colourKeys;    ///< per active contact (solver.cpp)
     int rowCount = 0;                     ///< contact rows this step
     std::vector<JointSlot> jointSlots;    ///< every joint with an awake body, in the world's order
     std::vector<JointConstraint> joints;  ///< rows of the slots not solved wide, in slot order (joint_solver.cpp)
