@@ -38,9 +38,11 @@ const Def& defOf(const detail::Joint& jt) {
 }
 
 /// Wakes both bodies of a joint that was changed, and has the next step plan
-/// the joints again (SolverArrays::jointPlanStale).
-void wakeJoint(detail::WorldState& w, const detail::Joint& jt) {
-    w.solver.jointPlanStale = true;
+/// the joints again (SolverArrays::jointPlanStale) unless the change is to a
+/// value the rows read from the definition every step (`replan` false: a
+/// motor's speed, a mouse joint's target), which no plan depends on.
+void wakeJoint(detail::WorldState& w, const detail::Joint& jt, bool replan = true) {
+    if (replan) w.solver.jointPlanStale = true;
     detail::wakeBody(w, jt.bodyA);
     detail::wakeBody(w, jt.bodyB);
 }
@@ -94,14 +96,14 @@ void setDef(detail::WorldState& w, JointId id, const Def& def) {
 }
 
 /// Changes one field of the joint's definition through `edit`, which returns
-/// false when the joint's type has no such feature.
+/// false when the joint's type has no such feature. `replan` as wakeJoint's.
 template <class Edit>
-void editDef(detail::WorldState& w, JointId id, const char* feature, Edit edit) {
+void editDef(detail::WorldState& w, JointId id, const char* feature, Edit edit, bool replan = true) {
     w.checkUnlocked();
     detail::Joint& jt = w.joints[w.jointIndex(id)];
     const bool done = std::visit(edit, jt.def);
     if (!done) fail(std::string("a ") + typeName(jt.type) + " joint has no " + feature);
-    wakeJoint(w, jt);
+    wakeJoint(w, jt, replan);
 }
 
 Vec2 anchorOf(const detail::WorldState& w, int body, Vec2 local) { return transformPoint(w.bodies[body].xf, local); }
@@ -166,24 +168,30 @@ void World::enableJointSpring(JointId id, bool flag) {
 
 void World::setJointMotorSpeed(JointId id, float speed) {
     detail::requireBounded(speed, "joint motorSpeed");
-    editDef(state(), id, "motor", [&](auto& def) {
-        if constexpr (requires { def.motorSpeed; }) {
-            def.motorSpeed = speed;
-            return true;
-        }
-        return false;
-    });
+    editDef(
+        state(), id, "motor",
+        [&](auto& def) {
+            if constexpr (requires { def.motorSpeed; }) {
+                def.motorSpeed = speed;
+                return true;
+            }
+            return false;
+        },
+        false);  // a game sets this every frame: the plan stays
 }
 
 void World::setMouseJointTarget(JointId id, Vec2 target) {
     detail::requireBounded(target, "joint target");
-    editDef(state(), id, "target", [&](auto& def) {
-        if constexpr (std::is_same_v<std::decay_t<decltype(def)>, MouseJointDef>) {
-            def.target = target;
-            return true;
-        }
-        return false;
-    });
+    editDef(
+        state(), id, "target",
+        [&](auto& def) {
+            if constexpr (std::is_same_v<std::decay_t<decltype(def)>, MouseJointDef>) {
+                def.target = target;
+                return true;
+            }
+            return false;
+        },
+        false);  // a game sets this every frame: the plan stays
 }
 
 void World::setDistanceJointLength(JointId id, float length) {

@@ -23,7 +23,7 @@ struct Rig {
     BodyId ceiling{};
     std::vector<BodyId> links;
     std::vector<JointId> hinges;
-    JointId slider{}, spring{};
+    JointId slider{}, spring{}, mouse{};
 };
 
 /// A hanging chain of 16 alike hinged boxes (wide rows), a slider and a
@@ -128,7 +128,28 @@ TEST(JointPlan, AKeptPlanStepsAsOneMadeEveryStep) {
              r.world.setRevoluteJointDef(r.hinges[6], def);
              r.world.enableJointMotor(r.hinges[6], true);
          }},
+        // A motor's speed and a mouse joint's target, which games set every
+        // frame, keep the plan (the rows read them every step).
+        {46, [](Rig& r) { r.world.setJointMotorSpeed(r.hinges[6], -3.0f); }},
+        {47, [](Rig& r) { r.world.setJointMotorSpeed(r.hinges[6], 5.0f); }},
+        {48,
+         [](Rig& r) {
+             MouseJointDef def;
+             def.bodyA = r.ceiling;
+             def.bodyB = r.links[14];
+             def.target = r.world.worldCenterOfMass(r.links[14]);
+             def.maxForce = 20.0f;
+             r.mouse = r.world.createMouseJoint(def);
+         }},
+        {49,
+         [](Rig& r) {
+             r.world.setMouseJointTarget(r.mouse, {9.0f, 12.0f});
+         }},
         {50, [](Rig& r) { r.world.setBodyType(r.links[7], BodyType::kinematic_body); }},
+        {55,
+         [](Rig& r) {
+             r.world.setMouseJointTarget(r.mouse, {7.0f, 8.0f});
+         }},
         {60, [](Rig& r) { r.world.setBodyType(r.links[7], BodyType::dynamic_body); }},
         {70, [](Rig& r) { r.world.disableBody(r.links[9]); }},
         {75, [](Rig& r) { r.world.disableBody(r.ceiling); }},  // static: the awake bodies stay the same
