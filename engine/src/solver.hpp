@@ -67,8 +67,10 @@ struct SolverArrays {
     /// The joint plan (slots, tree choice, colouring, order, the wide blocks'
     /// lanes) is kept from step to step while the awake bodies are the same
     /// in the same order (jointPlanBodies) and nothing it was made from
-    /// changed: whatever changes a joint, its bodies' masses, types or
-    /// enabled flags, or the settings sets jointPlanStale (joint_solver.cpp).
+    /// changed: whatever changes a joint (but a motor's speed or a mouse
+    /// joint's target, which the rows read every step), its bodies' masses,
+    /// types or enabled flags, or the settings sets jointPlanStale
+    /// (joint_solver.cpp).
     bool jointPlanStale = true;
     std::vector<int> jointPlanBodies;   ///< stateBodies when the plan was made (empty without joints)
     std::vector<int> jointOrder;        ///< by colour: rows, then each colour's wide slots
