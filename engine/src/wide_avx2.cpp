@@ -1,6 +1,7 @@
-// The wide contact and hinge sweeps eight lanes at a time: two blocks of one
-// colour in an AVX register (wide_contact_kernel.hpp says why that is
-// bit-identical to four lanes and to the scalar rows). Compiled with -mavx2
+// The wide contact and hinge sweeps and the integrations eight lanes at a
+// time: two contact blocks of one colour, one hinge block (eight lanes of its
+// own) or eight bodies in an AVX register (wide_contact_kernel.hpp says why
+// that is bit-identical to four lanes and to the scalar rows). Compiled with -mavx2
 // when the engine is built for x86-64 (engine/CMakeLists.txt) and called only
 // when the CPU has AVX2 (wideLanes in wide_contact.cpp); everything
 // here that is compiled for AVX2 is private to this file.

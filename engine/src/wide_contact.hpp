@@ -120,8 +120,9 @@ void solveWideContacts(SolverArrays& s, const RowContext& x, float maxPush, Solv
 /// The accumulated impulses of blocks [firstBlock, lastBlock) back into their
 /// rows (for restitution and the store, which read the rows).
 void writeBackWideContacts(SolverArrays& s, int firstBlock, int lastBlock);
-/// How many lanes the wide contact and hinge sweeps use: 8 (two blocks at
-/// once) on an x86-64 CPU with AVX2, else 4. Both give bit-identical results.
+/// How many lanes the wide contact and hinge sweeps and the integrations
+/// use: 8 (two contact blocks, one hinge block or eight bodies at once) on an
+/// x86-64 CPU with AVX2, else 4. Both give bit-identical results.
 int wideLanes();
 /// At most this many lanes (4 or 8) from now on: for tests comparing the two.
 void limitWideLanes(int lanes);

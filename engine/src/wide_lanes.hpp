@@ -2,8 +2,9 @@
 // share whatever their lane count: a lane policy L gives the vector type
 // L::V and mask type L::M, splat, loads and stores of a block's fields, and
 // the gather and scatter of its bodies. Lanes4 (wide_lanes4.hpp) is one
-// block in Float4; Lanes8 (wide_avx2.cpp) two blocks of one colour in an AVX
-// register. The kernels are templates, always inlined into the function that
+// contact block in Float4, HingeLanes4 (wide_revolute.cpp) half a hinge
+// block; Lanes8 (wide_avx2.cpp) two contact blocks of one colour in an AVX
+// register, HingeLanes8 one hinge block. The kernels are templates, always inlined into the function that
 // runs them, so that they are compiled for the instruction set of that
 // function's file.
 #pragma once
