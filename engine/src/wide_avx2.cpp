@@ -5,7 +5,7 @@
 // when the engine is built for x86-64 (engine/CMakeLists.txt) and called only
 // when the CPU has AVX2 (wideLanes in wide_contact.cpp); everything
 // here that is compiled for AVX2 is private to this file.
-#include <type_traits>
+#include <cstddef>
 
 #include "wide_contact_kernel.hpp"
 #include "wide_revolute_kernel.hpp"
