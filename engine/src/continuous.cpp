@@ -159,18 +159,29 @@ bool movedBeyondContacts(const WorldState& w, const Body& body, const BodyState&
     return !(solverBound <= spec && shiftBound <= spec);
 }
 
+/// Where a body's sweep starts: its pose at the step's start, before the
+/// solver's motion (dp, dq), and before the impact stage's shift when that
+/// moved the body; and its turn since.
+struct SweepStart {
+    Vec2 center;
+    Rot rotation;
+    Rot turn;
+};
+
+SweepStart sweepStartOf(const WorldState& w, const Body& body, const BodyState& s) {
+    if (body.startStamp == w.stepStamp) return {body.startCenter, body.startQ, invMulRot(body.startQ, body.xf.q)};
+    return {body.center - s.dp, invMulRot(s.dq, body.xf.q), s.dq};
+}
+
 /// The motion of an awake body over the step, or false when every point of
 /// it moved less than the speculative distance (a surface it could reach was
 /// then within the speculative distance at the step's start and has a
 /// contact).
 bool makeMover(const WorldState& w, const Body& body, const BodyState& s, Mover& m) {
     if (!movedBeyondContacts(w, body, s)) return false;
-    // Swept from the step's start: before the solver's motion (dp, dq), and
-    // before the impact stage's shift when that moved the body.
-    const bool shifted = body.startStamp == w.stepStamp;
-    const Vec2 shiftedCenter = body.center - s.dp;
-    const Vec2 c0 = shifted ? body.startCenter : shiftedCenter;
-    const Rot dq = shifted ? invMulRot(body.startQ, body.xf.q) : s.dq;
+    const SweepStart start = sweepStartOf(w, body, s);
+    const Vec2 c0 = start.center;
+    const Rot dq = start.turn;
     const Vec2 dc = body.center - c0;
     m.turnBound = turnBoundOf(dq);
     m.bound = length(dc) + m.turnBound * body.reach;
@@ -347,15 +358,14 @@ void sweepBody(WorldState& w, Body& body, const Mover& m, Vec2 rewind) {
 /// step's start pose without the sweep's angles (makeMover's two atan2) and
 /// grown by far more than the rounding that tells the two start poses apart
 /// (a few 1e-7 of a rotation, of the coordinates). A body in the open (rain
-/// above the ground, a swinging grid) is then not swept at all.
+/// above the ground, a swinging grid) is then not swept at all. (In a world
+/// without static shapes needsSweep has said no already.)
 bool mayMeetStatic(const WorldState& w, const Body& body, const BodyState& s) {
     const DynamicTree& statics = w.broadPhase.staticTree;
-    if (statics.proxyCount() == 0) return false;
-    const bool shifted = body.startStamp == w.stepStamp;  // as makeMover
-    const Vec2 c0 = shifted ? body.startCenter : body.center - s.dp;
-    const Rot q0 = shifted ? body.startQ : invMulRot(s.dq, body.xf.q);
-    const Rot dq = shifted ? invMulRot(body.startQ, body.xf.q) : s.dq;
-    const Transform xf0{c0 - rotate(q0, body.localCenter), q0};
+    const SweepStart start = sweepStartOf(w, body, s);
+    const Vec2 c0 = start.center;
+    const Rot dq = start.turn;
+    const Transform xf0{c0 - rotate(start.rotation, body.localCenter), start.rotation};
     const float scale = 1.0f + body.reach + std::abs(c0.x) + std::abs(c0.y) + std::abs(body.localCenter.x) +
                         std::abs(body.localCenter.y);
     const float grow = turnBoundOf(dq) * body.reach + 1e-5f * scale;

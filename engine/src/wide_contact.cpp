@@ -18,13 +18,6 @@ namespace i2d::detail {
 
 namespace {
 
-/// kWideMovesA and kWideMovesB for a lane with these inverse masses and
-/// inertias: a side moves (and the write-back writes it) when either is nonzero.
-std::uint32_t moveFlags(float invMassA, float invIA, float invMassB, float invIB) {
-    return (invMassA != 0.0f || invIA != 0.0f ? kWideMovesA : 0u) |
-           (invMassB != 0.0f || invIB != 0.0f ? kWideMovesB : 0u);
-}
-
 /// Lane `lane` of block k from row cc (null: an empty lane), every field written.
 inline void packLane(WideContactBlock& k, WideContactCold& cold, int lane, const ContactConstraint* cc, int row,
                      int zero) {

@@ -48,6 +48,14 @@ enum WideContactFlag : std::uint32_t {
     kWideMovesB = 1u << 8,         ///< the same for B
 };
 
+/// kWideMovesA and kWideMovesB for a lane (a contact's or a hinge's) with
+/// these inverse masses and inertias: a side moves (and the eight-lane
+/// write-back writes it) when either is nonzero.
+inline std::uint32_t moveFlags(float invMassA, float invIA, float invMassB, float invIB) {
+    return (invMassA != 0.0f || invIA != 0.0f ? kWideMovesA : 0u) |
+           (invMassB != 0.0f || invIB != 0.0f ? kWideMovesB : 0u);
+}
+
 /// Four manifolds, structure of arrays. An empty lane names the zero state on
 /// both sides with zero masses and no points. The substeps' sweeps stream
 /// through every block several times, so a block holds only what they read:

@@ -43,8 +43,7 @@ void packWideRevolutes(const WorldState& w, SolverArrays& s, int first, int last
             block.mA[lane] = slot.invMassA, block.iA[lane] = slot.invIA;
             block.mB[lane] = slot.invMassB, block.iB[lane] = slot.invIB;
             block.px[lane] = p.x, block.py[lane] = p.y;
-            block.moves[lane] = (slot.invMassA != 0.0f || slot.invIA != 0.0f ? kWideMovesA : 0u) |
-                                (slot.invMassB != 0.0f || slot.invIB != 0.0f ? kWideMovesB : 0u);
+            block.moves[lane] = moveFlags(slot.invMassA, slot.invIA, slot.invMassB, slot.invIB);
             // As setAnchors (joint_rows.hpp): from the centres of mass.
             const Vec2 armA = def.localAnchorA - w.bodies[joint.bodyA].localCenter;
             const Vec2 armB = def.localAnchorB - w.bodies[joint.bodyB].localCenter;

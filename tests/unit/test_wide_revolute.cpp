@@ -73,8 +73,7 @@ Case makeCase(unsigned seed, int n) {
             k.mA[lane] = jc ? jc->invMassA : 0.0f, k.iA[lane] = jc ? jc->invIA : 0.0f;
             k.mB[lane] = jc ? jc->invMassB : 0.0f, k.iB[lane] = jc ? jc->invIB : 0.0f;
             k.px[lane] = jc ? jc->impulses.linear.x : 0.0f, k.py[lane] = jc ? jc->impulses.linear.y : 0.0f;
-            k.moves[lane] = (k.mA[lane] != 0.0f || k.iA[lane] != 0.0f ? kWideMovesA : 0u) |
-                            (k.mB[lane] != 0.0f || k.iB[lane] != 0.0f ? kWideMovesB : 0u);
+            k.moves[lane] = moveFlags(k.mA[lane], k.iA[lane], k.mB[lane], k.iB[lane]);
         }
     }
     return c;
