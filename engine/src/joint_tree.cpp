@@ -151,10 +151,21 @@ void selectTreeJoints(WorldState& w, std::vector<JointSlot>& slots, float leastI
     }
     if (treeJoints == 0) return;
 
-    // Which components could hold a tree worth solving exactly: those whose
-    // heaviest body is massRatio times their lightest (a component joined
-    // through the immovable bodies holds several trees; each is checked again
-    // below). Most worlds of alike bodies stop here.
+    // Which trees are worth solving exactly: those whose heaviest body is
+    // massRatio times their lightest. A tree is a component of the forest
+    // without the immovable node (each holds at most one joint to it: two
+    // would close a loop through it), so the trees are joined again without
+    // that node. Judged over the component joined through the immovable node,
+    // one heavy-ended chain made every chain hung beside it from the same
+    // ground leave the wide path for scalar rows.
+    std::iota(t.unionParent.begin(), t.unionParent.end(), 0);
+    for (const JointSlot& jc : slots) {
+        if (!jc.inTree) continue;
+        const int a = movingSide(jc.a, jc.invMassA, jc.invIA, ground);
+        const int b = movingSide(jc.b, jc.invMassB, jc.invIB, ground);
+        if (a == ground || b == ground) continue;
+        t.unionParent[static_cast<std::size_t>(findRoot(t.unionParent, a))] = findRoot(t.unionParent, b);
+    }
     const float massRatio = w.settings.exactJointMassRatio;
     t.lightest.assign(bodySlots, INFINITY);
     t.heaviest.assign(bodySlots, 0.0f);
@@ -167,8 +178,9 @@ void selectTreeJoints(WorldState& w, std::vector<JointSlot>& slots, float leastI
     }
     for (JointSlot& jc : slots) {
         if (!jc.inTree) continue;
-        const std::size_t root = static_cast<std::size_t>(
-            findRoot(t.unionParent, movingSide(jc.a, jc.invMassA, jc.invIA, ground)));
+        const int a = movingSide(jc.a, jc.invMassA, jc.invIA, ground);
+        const int side = a != ground ? a : movingSide(jc.b, jc.invMassB, jc.invIB, ground);
+        const std::size_t root = static_cast<std::size_t>(findRoot(t.unionParent, side));
         jc.inTree = t.heaviest[root] >= massRatio * t.lightest[root];
     }
 }
@@ -183,7 +195,6 @@ void buildJointTrees(WorldState& w) {
     int treeJoints = 0;
     for (const JointConstraint& jc : s.joints) treeJoints += jc.inTree;
     if (treeJoints == 0) return;
-    const float massRatio = w.settings.exactJointMassRatio;
     t.unionParent.resize(bodySlots);
 
     // Each body's tree joints (compressed rows).
@@ -211,7 +222,7 @@ void buildJointTrees(WorldState& w) {
     // then a body of each tree that has none. Parents come before children.
     std::vector<TreeNode>& nodes = t.nodes;
     nodes.reserve(static_cast<std::size_t>(2 * treeJoints + 1));
-    constexpr int kUnvisited = -1, kDropped = -2;
+    constexpr int kUnvisited = -1;
     t.nodeOfBody.assign(bodySlots, kUnvisited);
     std::vector<char> rowTaken(s.joints.size(), 0);
     auto addBody = [&](int body, int parent) {
@@ -244,29 +255,10 @@ void buildJointTrees(WorldState& w) {
             }
         }
     };
-    // A tree whose bodies' masses are alike is left to the sweep: Gauss-Seidel
-    // converges well there, at a third of the exact solve's cost.
-    auto keepOrDrop = [&](std::size_t head) {
-        float lightest = INFINITY, heaviest = 0.0f;
-        for (std::size_t k = head; k < nodes.size(); ++k) {
-            if (nodes[k].body < 0) continue;
-            const float invMass = w.bodies[s.stateBodies[static_cast<std::size_t>(nodes[k].body)]].invMass;
-            const float mass = invMass > 0.0f ? 1.0f / invMass : INFINITY;
-            lightest = std::min(lightest, mass);
-            heaviest = std::max(heaviest, mass);
-        }
-        if (heaviest >= massRatio * lightest) return;
-        for (std::size_t k = head; k < nodes.size(); ++k) {
-            if (nodes[k].row >= 0) s.joints[static_cast<std::size_t>(nodes[k].row)].inTree = false;
-            if (nodes[k].body >= 0) t.nodeOfBody[static_cast<std::size_t>(nodes[k].body)] = kDropped;
-        }
-        nodes.resize(head);
-    };
     for (int k = t.adjacencyStart[static_cast<std::size_t>(ground)]; k < t.adjacencyStart[bodySlots]; ++k) {
         const std::size_t head = nodes.size();
         addJoint(t.adjacency[static_cast<std::size_t>(k)], -1);
         expand(head);
-        keepOrDrop(head);
     }
     for (int body = 0; body < ground; ++body) {
         const std::size_t b = static_cast<std::size_t>(body);
@@ -274,7 +266,6 @@ void buildJointTrees(WorldState& w) {
         const std::size_t head = nodes.size();
         addBody(body, -1);
         expand(head);
-        keepOrDrop(head);
     }
     if (nodes.empty()) return;
 

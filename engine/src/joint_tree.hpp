@@ -42,13 +42,13 @@ struct JointTrees {
 /// Picks the joints whose equality rows are solved exactly (a spanning forest
 /// of the body–joint graph, every static body one node, so a loop such as a
 /// bridge's or a grid's keeps one or more joints in the Gauss-Seidel sweep;
-/// only components of unlike masses, WorldSettings::exactJointMassRatio) and
-/// marks them (JointSlot::inTree, false when called). The least and most
+/// only trees of unlike masses, WorldSettings::exactJointMassRatio, each
+/// judged by its own bodies: the trees hung from the same static bodies are
+/// judged apart) and marks them (JointSlot::inTree, false when called). The least and most
 /// inverse mass of the joints' movable bodies let a world of alike bodies
 /// skip the search.
 void selectTreeJoints(WorldState& w, std::vector<JointSlot>& slots, float leastInverseMass, float mostInverseMass);
-/// Orders the trees' nodes over the rows in their final order; a tree whose
-/// own bodies are alike after all is returned to the sweep (inTree cleared).
+/// Orders the trees' nodes over the rows in their final order.
 void buildJointTrees(WorldState& w);
 
 /// Solves the trees' equality rows exactly for the velocities now, in ctx's

@@ -12,6 +12,10 @@
 
 #include <impulse2d/impulse2d.hpp>
 
+#include "joint.hpp"
+#include "joint_tree.hpp"
+#include "world_state.hpp"
+
 namespace {
 
 using namespace i2d;
@@ -233,3 +237,38 @@ TEST(JointTree, SwingingChainsWithAHeavyEndKeepTheirEnergyUpTo200To1) {
 }
 
 }  // namespace
+
+// Trees hung from the same static bodies are judged by their own masses:
+// two hinge chains of alike links (1 kg) and one of alike links with a
+// 100 kg end, all three hung from the static node. Only the heavy-ended
+// chain's joints are solved exactly; judged over everything joined through
+// the static node, the alike chains were marked too, and so left the wide
+// path for scalar rows.
+TEST(JointTree, ChainsHungFromTheSameStaticBodyAreJudgedApart) {
+    detail::WorldState w({}, 1);
+    constexpr int kLinks = 4;
+    const float endMass[3] = {1.0f, 100.0f, 1.0f};
+    std::vector<detail::JointSlot> slots;
+    for (int chain = 0; chain < 3; ++chain) {
+        for (int link = 0; link < kLinks; ++link) {
+            const int slot = w.bodies.allocate();
+            detail::Body& b = w.bodies[slot];
+            b.type = BodyType::dynamic_body;
+            b.invMass = 1.0f / (link == kLinks - 1 ? endMass[chain] : 1.0f);
+            b.invInertia = 10.0f * b.invMass;
+            const int index = static_cast<int>(w.solver.stateBodies.size());
+            w.solver.stateBodies.push_back(slot);
+            detail::JointSlot& j = slots.emplace_back();
+            j.a = link == 0 ? detail::kNullIndex : index - 1;  // the first link hangs from the static node
+            j.b = index;
+            j.invMassA = link == 0 ? 0.0f : w.bodies[w.solver.stateBodies[static_cast<std::size_t>(index - 1)]].invMass;
+            j.invIA = 10.0f * j.invMassA;
+            j.invMassB = b.invMass;
+            j.invIB = b.invInertia;
+            j.equalityRows = 2;
+        }
+    }
+    detail::selectTreeJoints(w, slots, 0.01f, 1.0f);
+    for (std::size_t i = 0; i < slots.size(); ++i)
+        EXPECT_EQ(slots[i].inTree, i / kLinks == 1) << "joint " << i << " of chain " << i / kLinks;
+}
