@@ -78,6 +78,9 @@ private:
     int shares_ = 1;
     /// The current stage's epoch, published after its cursors are set.
     alignas(64) std::atomic<std::uint32_t> published_{0};
+    /// The epoch when the helpers were enqueued: every stage after it is
+    /// theirs to help with, however late they start.
+    std::atomic<std::uint32_t> begunAt_{0};
     alignas(64) std::atomic<int> done_{0};
     /// Stage descriptions by epoch parity: the caller writes stage E + 1's
     /// while a late helper may still read stage E's.
