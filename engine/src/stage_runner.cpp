@@ -51,7 +51,7 @@ void StageRunner::begin(TaskSystem* tasks) {
     exit_.store(false, std::memory_order_relaxed);
     caller_ = std::this_thread::get_id();
     // Helpers take part in every stage published after this one.
-    begunAt_.store(epoch_, std::memory_order_relaxed);
+    begunAt_.store(epoch_, std::memory_order_release);
     published_.store(epoch_, std::memory_order_release);
     // Helper i (of workerCount − 1, one item each) is worker i + 1.
     handle_ = tasks->enqueue(&StageRunner::helper, tasks->workerCount() - 1, 1, this);
