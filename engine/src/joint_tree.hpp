@@ -44,9 +44,9 @@ struct JointTrees {
 /// bridge's or a grid's keeps one or more joints in the Gauss-Seidel sweep;
 /// only trees of unlike masses, WorldSettings::exactJointMassRatio, each
 /// judged by its own bodies: the trees hung from the same static bodies are
-/// judged apart) and marks them (JointSlot::inTree, false when called). The least and most
-/// inverse mass of the joints' movable bodies let a world of alike bodies
-/// skip the search.
+/// judged apart) and marks them (JointSlot::inTree, false when called). The
+/// least and most inverse mass of the joints' movable bodies let a world of
+/// alike bodies skip the search.
 void selectTreeJoints(WorldState& w, std::vector<JointSlot>& slots, float leastInverseMass, float mostInverseMass);
 /// Orders the trees' nodes over the rows in their final order.
 void buildJointTrees(WorldState& w);

@@ -4,9 +4,9 @@
 // the gather and scatter of its bodies. Lanes4 (wide_lanes4.hpp) is one
 // contact block in Float4, HingeLanes4 (wide_revolute.cpp) half a hinge
 // block; Lanes8 (wide_avx2.cpp) two contact blocks of one colour in an AVX
-// register, HingeLanes8 one hinge block. The kernels are templates, always inlined into the function that
-// runs them, so that they are compiled for the instruction set of that
-// function's file.
+// register, HingeLanes8 one hinge block. The kernels are templates, always
+// inlined into the function that runs them, so that they are compiled for
+// the instruction set of that function's file.
 #pragma once
 
 #include "body.hpp"
