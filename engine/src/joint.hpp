@@ -49,6 +49,11 @@ struct Joint {
     JointType type = JointType::distance;
     bool collideConnected = false;
     bool alive = false;
+    /// A hinge the wide path would take that was a deep joint when a step
+    /// last looked (isDeepJoint): the joint plan keeps it off the wide path.
+    /// Kept here, not in the plan, so that a kept plan and one made again
+    /// decide alike; a change makes the plan again for the next step.
+    bool deepHinge = false;
     std::uintptr_t userData = 0;
 };
 
@@ -124,6 +129,9 @@ struct JointConstraint {
     /// The entries of its anchors' point matrix fit single precision with room
     /// for their products (solvePointRows in joint_rows.hpp).
     bool singlePrecision = false;
+    /// A deep joint this step (isDeepJoint, world_state.hpp): rigid in the
+    /// soft step's biased pass, its error pushed on pseudo-velocities.
+    bool deep = false;
     int a = kNullIndex, b = kNullIndex;  ///< solver body indices; kNullIndex for a body that does not move
     int c = kNullIndex, d = kNullIndex;  ///< gear only: the frames of its two joints
     float invMassA = 0, invIA = 0, invMassB = 0, invIB = 0;
@@ -146,7 +154,9 @@ struct JointSlot {
     bool movesC = false, movesD = false;  ///< gear: its joints' frames move
     std::uint8_t equalityRows = 0;        ///< rows the exact tree solve could take (joint_tree.cpp)
     bool inTree = false;
-    bool wide = false;  ///< solved eight at a time (wide_revolute.cpp), with no JointConstraint
+    bool wide = false;
+    bool deepHinge =
+        false;  ///< kept off the wide path as a deep joint (Joint::deepHinge)  ///< solved eight at a time (wide_revolute.cpp), with no JointConstraint
 };
 
 /// What a joint's solve needs besides its row and its bodies' states.

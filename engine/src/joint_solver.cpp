@@ -105,6 +105,16 @@ void packWideRows(const WorldState& w, SolverArrays& s) {
     s.wideBlockStart[kJointColours + 1] = static_cast<int>(s.wideRevolutes.size());
 }
 
+/// Whether a joint's point may make it a deep joint (isDeepJoint): a
+/// revolute joint's, or a weld's without springs. The rows of other joints
+/// are soft or judged along their own axes.
+bool pointJudged(const Joint& joint) {
+    if (joint.type == JointType::revolute) return true;
+    if (joint.type != JointType::weld) return false;
+    const WeldJointDef& def = std::get<WeldJointDef>(joint.def);
+    return def.linearHertz == 0.0f && def.angularHertz == 0.0f;
+}
+
 void fillBody(const WorldState& w, int body, int& index, float& invMass, float& invI) {
     const Body& b = w.bodies[body];
     // Awake bodies have a solver state; a static or sleeping body does not move.
@@ -155,6 +165,7 @@ void planJoints(WorldState& w) {
         }
         slot.equalityRows = static_cast<std::uint8_t>(equalityRowCount(joint));
         slot.wide = wideCandidate(w, joint, bA, bB, slot);
+        if (slot.wide && joint.deepHinge) slot.wide = false, slot.deepHinge = true;
         for (float inverse : {slot.invMassA, slot.invMassB})
             if (inverse > 0.0f) {
                 leastInverseMass = std::min(leastInverseMass, inverse);
@@ -202,6 +213,7 @@ void prepareJoints(WorldState& w, float dt) {
     const std::vector<JointSlot>& slots = s.jointSlots;
     std::vector<JointConstraint>& rows = s.joints;
     rows.clear();
+    s.anyDeepJoint = false;
     const bool warm = w.settings.enableWarmStarting;
     for (const JointSlot& slot : slots) {
         if (slot.wide) continue;
@@ -238,10 +250,32 @@ void prepareJoints(WorldState& w, float dt) {
         const double bound = double(jc.invMassA) + jc.invMassB + double(jc.invIA) * lengthSquared(jc.rA) +
                              double(jc.invIB) * lengthSquared(jc.rB);
         jc.singlePrecision = bound < kSinglePrecisionBound;
+        jc.deep = !jc.inTree && pointJudged(joint) && isDeepJoint(w, joint, jc.deltaCenter + jc.rB - jc.rA);
+        s.anyDeepJoint = s.anyDeepJoint || jc.deep;
+        if (slot.deepHinge && !jc.deep) {  // back on the wide path from the next step
+            w.joints[slot.joint].deepHinge = false;
+            s.jointPlanStale = true;
+        }
     }
     buildJointTrees(w);
+    s.wideDeep.assign(s.wideRevolutes.size(), 0);
     auto refresh = [&](int b, int e) { refreshWideRevolutes(w, s, b, e); };
     w.runner.run(static_cast<int>(s.wideRevolutes.size()), kWideGrain, refresh);
+    // A hinge that became a deep joint leaves the wide path with the next
+    // step's plan (a step late: it is solved as before in this one).
+    for (std::size_t k = 0; k < s.wideDeep.size(); ++k) {
+        if (!s.wideDeep[k]) continue;
+        const WideRevoluteBlock& block = s.wideRevolutes[k];
+        for (int lane = 0; lane < kHingeLanes; ++lane) {
+            if (block.joint[lane] < 0) continue;
+            const Vec2 separation{block.dcx[lane] + block.rBx[lane] - block.rAx[lane],
+                                  block.dcy[lane] + block.rBy[lane] - block.rAy[lane]};
+            Joint& joint = w.joints[block.joint[lane]];
+            if (!isDeepJoint(w, joint, separation)) continue;
+            joint.deepHinge = true;
+            s.jointPlanStale = true;
+        }
+    }
     s.wideFrameAt = -1;  // the blocks' kept anchors are made by the first pass
 }
 
@@ -283,12 +317,17 @@ void warmStartJoints(WorldState& w) {
     clearZeroState(s);
 }
 
-void solveJoints(WorldState& w, const JointContext& ctx) {
+void solveJoints(WorldState& w, const JointContext& pass) {
     SolverArrays& s = w.solver;
     const bool kept = s.wideFrameAt == s.positionUpdates;
+    // A deep joint's rows are rigid and without push in the biased pass
+    // (isDeepJoint); pushJoints closes its error on pseudo-velocities.
+    JointContext rigid = pass;
+    rigid.pass = SolvePass::no_push;
     sweepColours(
         s,
         [&](JointConstraint& jc) {
+            const JointContext& ctx = jc.deep && pass.pass == SolvePass::soft_bias ? rigid : pass;
             BodyState& sA = stateOf(s, jc.a);
             BodyState& sB = stateOf(s, jc.b);
             switch (jc.type) {
@@ -304,16 +343,16 @@ void solveJoints(WorldState& w, const JointContext& ctx) {
             }
         },
         [&](int first, int last) {
-            auto range = [&](int b, int e) { solveWideRevolutes(s, ctx, first + b, first + e, kept); };
+            auto range = [&](int b, int e) { solveWideRevolutes(s, pass, first + b, first + e, kept); };
             w.runner.run(last - first, kWideGrain, range);
         });
     s.wideFrameAt = s.positionUpdates;
     clearZeroState(s);
-    solveJointTrees(w, ctx, s.positionUpdates);
+    solveJointTrees(w, pass, s.positionUpdates);
     clearZeroState(s);
 }
 
-void pushJoints(WorldState& w, const JointContext& ctx) {
+void pushJoints(WorldState& w, const JointContext& ctx, bool deepOnly) {
     SolverArrays& s = w.solver;
     // A pseudo-velocity state: the motion since the step began from the real
     // state, the velocity from the push arrays.
@@ -336,6 +375,7 @@ void pushJoints(WorldState& w, const JointContext& ctx) {
     sweepColours(
         s,
         [&](const JointConstraint& jc) {
+            if (deepOnly && !jc.deep) return;
             BodyState pA = pseudo(jc.a), pB = pseudo(jc.b);
             if (jc.type == JointType::distance) {
                 pushDistanceJoint(jc, ctx, stateOf(s, jc.a), stateOf(s, jc.b), pA, pB);

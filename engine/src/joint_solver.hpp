@@ -14,8 +14,9 @@ void warmStartJoints(WorldState& w);
 /// One Gauss-Seidel sweep over the joint rows in ctx's pass.
 void solveJoints(WorldState& w, const JointContext& ctx);
 /// Split mode (Tamis and Maggiore (2015) §8.1): the joints' position error on
-/// the pseudo-velocities (SolverArrays::biasV, biasW).
-void pushJoints(WorldState& w, const JointContext& ctx);
+/// the pseudo-velocities (SolverArrays::biasV, biasW); with `deepOnly`, the
+/// soft step's deep joints' alone (isDeepJoint, world_state.hpp).
+void pushJoints(WorldState& w, const JointContext& ctx, bool deepOnly = false);
 /// Impulses back into the joints for the next warm start; reaction force,
 /// torque and motor effort. `h` is the interval the accumulated impulses act
 /// over: the substep in soft_step (each substep re-solves from the warm

@@ -466,11 +466,23 @@ void solve(WorldState& w, float dt) {
             warmStart();
             for (int pass = 0; pass < kJointSolvePasses; ++pass) joints(SolvePass::soft_bias);
             contacts(SolvePass::soft_bias, h);
-            if (s.anyDeepOverlap) {
+            if (s.anyDeepOverlap || s.anyDeepJoint) {
                 stopNonFiniteBodies(s);  // (integratePositionsPushed does not look)
-                // The push reads the load its rows carry (deep_overlap.cpp).
-                if (s.wideContactsActive) readWideNormalImpulses(s, s.deepRows);
-                pushDeepOverlaps(w, h);
+                if (s.anyDeepOverlap) {
+                    // The push reads the load its rows carry (deep_overlap.cpp).
+                    if (s.wideContactsActive) readWideNormalImpulses(s, s.deepRows);
+                    pushDeepOverlaps(w, h);
+                } else {
+                    s.biasV.assign(s.states.size(), Vec2{});
+                    s.biasW.assign(s.states.size(), 0.0f);
+                }
+                // The deep joints' error (isDeepJoint, world_state.hpp), one
+                // sweep at the soft rows' own rate: biasRate·C = β·C/h.
+                if (s.anyDeepJoint) {
+                    JointContext push = jointCtx;
+                    push.pushFactor = jointCtx.jointSoft.biasRate * h;
+                    pushJoints(w, push, true);
+                }
                 dropNonFinitePush(s);
                 integratePositionsPushed(s, h, maxSpeed, up);
             } else {

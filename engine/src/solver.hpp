@@ -85,13 +85,16 @@ struct SolverArrays {
     std::vector<std::uint8_t> jointColours;
     std::vector<std::uint32_t> bodyColours;  ///< per state: the joint colours its rows took (joint_solver.cpp)
     std::vector<int> deepContactCount;       ///< per state: contacts overlapping deeper than kDeepOverlap
-    bool anyDeepOverlap = false;             ///< some row overlaps deeper than kDeepOverlap this step
-    bool anyRollingRow = false;              ///< some row gets a rolling-resistance row this step
-    std::vector<int> deepRows;               ///< the rows that do, ascending (contact_solver.cpp)
-    std::vector<SidePush> sidePushes;        ///< deep rows pushed sideways, in row order (deep_overlap.cpp)
-    std::vector<DeepCarry> deepCarry;        ///< per deep row, in deepRows' order (contact_solver.cpp)
-    std::vector<std::uint8_t> supported;     ///< per state: rests on something immovable (deep_overlap.cpp)
-    std::vector<std::uint8_t> sweeps;        ///< per state: 1 when continuous collision sweeps it (needsSweep)
+    bool anyDeepJoint = false;               ///< some joint row is a deep joint this step (isDeepJoint)
+    /// Per wide block: a hinge of it became a deep joint (refreshWideRevolutes).
+    std::vector<std::uint8_t> wideDeep;
+    bool anyDeepOverlap = false;          ///< some row overlaps deeper than kDeepOverlap this step
+    bool anyRollingRow = false;           ///< some row gets a rolling-resistance row this step
+    std::vector<int> deepRows;            ///< the rows that do, ascending (contact_solver.cpp)
+    std::vector<SidePush> sidePushes;     ///< deep rows pushed sideways, in row order (deep_overlap.cpp)
+    std::vector<DeepCarry> deepCarry;     ///< per deep row, in deepRows' order (contact_solver.cpp)
+    std::vector<std::uint8_t> supported;  ///< per state: rests on something immovable (deep_overlap.cpp)
+    std::vector<std::uint8_t> sweeps;     ///< per state: 1 when continuous collision sweeps it (needsSweep)
     std::vector<int> supportStart, supportAbove, supportQueue;  ///< deep_overlap.cpp's lists of what rests on what
     std::vector<RollingConstraint> rolling;         ///< contacts with rolling resistance (contact_solver.cpp)
     ScratchArray<WideContactBlock> wideContacts;    ///< the coloured contact rows four at a time (wide_contact.cpp)

@@ -69,6 +69,7 @@ void refreshWideRevolutes(const WorldState& w, SolverArrays& s, int firstBlock, 
             const Vec2 dc = bB.center - bA.center;
             block.rAx[lane] = rA.x, block.rAy[lane] = rA.y, block.rBx[lane] = rB.x, block.rBy[lane] = rB.y;
             block.dcx[lane] = dc.x, block.dcy[lane] = dc.y;
+            if (isDeepJoint(w, w.joints[block.joint[lane]], dc + rB - rA)) s.wideDeep[static_cast<std::size_t>(k)] = 1;
             if (!warm) block.px[lane] = block.py[lane] = 0.0f;
         }
     }

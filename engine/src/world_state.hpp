@@ -111,6 +111,39 @@ struct WorldState {
     int jointIndex(JointId id) const { return require(id, joints, "joint"); }
 };
 
+/// A joint's anchors further apart than this (m), while one of its bodies
+/// touches something through a contact, make it a deep joint (isDeepJoint).
+/// The depth at which a contact's overlap is pushed on pseudo-velocities.
+inline constexpr float kDeepJointError = kDeepOverlap;
+
+/// Whether `body` touches a shape of another body through a (solid) contact.
+inline bool touchesThroughContact(const WorldState& w, int body) {
+    for (int c : w.bodies[body].contacts) {
+        const Contact& ct = w.contacts[c];
+        if (ct.touching && !ct.isSensor) return true;
+    }
+    return false;
+}
+
+/// Whether a joint whose anchors are `separation` apart is a deep joint
+/// this step: in soft_step, anchors more than kDeepJointError apart while
+/// one of its bodies touches something through a contact. The soft push
+/// that closes such a joint is a velocity given to its bodies, which the
+/// relax pass takes back from the joint's rows but not from a body the
+/// contact handed it on to: a heavy body landing on a light one pinned to
+/// the world drags the pin open, and the stretched joint's push threw the
+/// heavy body back up faster than it came (docs/joints.md, "A stretched
+/// joint beside a contact"). A deep joint's rows are rigid in the biased
+/// pass and its error is pushed on pseudo-velocities, which move the bodies
+/// for the substep only (joint_solver.cpp, pushJoints). Only the point of
+/// a revolute joint or a rigid weld is judged (the callers); a joint solved
+/// with an exact tree never is (joint_tree.cpp solves its rows together).
+inline bool isDeepJoint(const WorldState& w, const Joint& joint, Vec2 separation) {
+    return w.settings.positionCorrection == PositionCorrection::soft_step &&
+           lengthSquared(separation) > kDeepJointError * kDeepJointError &&
+           (touchesThroughContact(w, joint.bodyA) || touchesThroughContact(w, joint.bodyB));
+}
+
 /// A contact as the API reports it (World::contacts, World::bodyContacts).
 inline ContactData contactData(const WorldState& w, int c) {
     const Contact& ct = w.contacts[c];
