@@ -25,6 +25,22 @@ JointFrame currentFrame(const JointConstraint& jc, const BodyState& sA, const Bo
     return f;
 }
 
+/// The effective mass along the axis at the frame's point of the step,
+/// 1/(m_A⁻¹ + m_B⁻¹ + I_A⁻¹(r_A × n)² + I_B⁻¹(r_B × n)²). It is the frame's,
+/// not the step start's: the lever arms r × n of a body that turns within
+/// the step change with it, and for a small body hung by a point far from
+/// its centre they are most of the sum (a 0.12 m disc hung 0.87 m off its
+/// centre: I⁻¹(r × n)² is 110 times m⁻¹ across the arm and 0 along it). With
+/// the mass of the step's start, a row prepared with the arm along the axis
+/// took the body's whole mass where, a substep later, a hundredth of it
+/// moved the anchor: each pass overshot a hundredfold and the disc spun up to
+/// the rotation limit, 2,700 times its energy.
+float axialMassOf(const JointConstraint& jc, const JointFrame& f) {
+    const float crA = cross(f.rA, f.axis), crB = cross(f.rB, f.axis);
+    const float k = jc.invMassA + jc.invMassB + jc.invIA * crA * crA + jc.invIB * crB * crB;
+    return k > 0.0f ? 1.0f / k : 0.0f;
+}
+
 void applyAxial(const JointConstraint& jc, const JointFrame& f, float impulse, BodyState& sA, BodyState& sB) {
     Vec2 P = impulse * f.axis;
     sA.v = mulSub(sA.v, jc.invMassA, P);
@@ -41,10 +57,6 @@ void prepareDistanceJoint(const WorldState& w, const Joint& joint, JointConstrai
     const Body& bB = w.bodies[joint.bodyB];
     DistanceRow& row = jc.row.distance;
     setAnchors(bA, bB, def.localAnchorA, def.localAnchorB, jc);
-    Vec2 axis = normalize(jc.deltaCenter + jc.rB - jc.rA);
-    float crA = cross(jc.rA, axis), crB = cross(jc.rB, axis);
-    float k = jc.invMassA + jc.invMassB + jc.invIA * crA * crA + jc.invIB * crB * crB;
-    row.axialMass = k > 0.0f ? 1.0f / k : 0.0f;
     row.length = def.length;
     row.minLength = def.minLength;
     row.maxLength = def.maxLength;
@@ -62,11 +74,12 @@ void warmStartDistanceJoint(const JointConstraint& jc, BodyState& sA, BodyState&
 void solveDistanceJoint(JointConstraint& jc, const JointContext& ctx, BodyState& sA, BodyState& sB) {
     const DistanceRow& row = jc.row.distance;
     JointFrame f = currentFrame(jc, sA, sB);
+    const float mass = axialMassOf(jc, f);
     // A joint's impulse per (sub)step never needs to exceed what changes
     // the relative speed along it by twice the speed limit; bounding it
     // keeps a diverging row (a fuzzed, stretched 600:1 joint reached
     // 1e36 N·s, then NaN) finite.
-    const float maxImpulse = 2.0f * ctx.maxLinearSpeed * row.axialMass;
+    const float maxImpulse = 2.0f * ctx.maxLinearSpeed * mass;
     auto cdot = [&]() {
         Vec2 dv = (sB.v + cross(sB.w, f.rB)) - (sA.v + cross(sA.w, f.rA));
         return dot(dv, f.axis);
@@ -75,13 +88,13 @@ void solveDistanceJoint(JointConstraint& jc, const JointContext& ctx, BodyState&
         // the length is solved with its tree (joint_tree.cpp)
     } else if (row.rigid) {
         const RowBias rb = rigidBias(ctx, f.length - row.length);
-        float impulse = -rb.massScale * row.axialMass * (cdot() + rb.bias) - rb.impulseScale * jc.impulses.axial;
+        float impulse = -rb.massScale * mass * (cdot() + rb.bias) - rb.impulseScale * jc.impulses.axial;
         impulse = boundedIncrement(jc.impulses.axial, impulse, -maxImpulse, maxImpulse);
         applyAxial(jc, f, impulse, sA, sB);
     } else if (row.hertz > 0.0f) {
         // A spring: its softness is physical, so it applies in every pass.
         const RowBias rb = springBias(makeSoft(row.hertz, row.dampingRatio, ctx.h), f.length - row.length);
-        float impulse = -rb.massScale * row.axialMass * (cdot() + rb.bias) - rb.impulseScale * jc.impulses.axial;
+        float impulse = -rb.massScale * mass * (cdot() + rb.bias) - rb.impulseScale * jc.impulses.axial;
         impulse = boundedIncrement(jc.impulses.axial, impulse, -maxImpulse, maxImpulse);
         applyAxial(jc, f, impulse, sA, sB);
     }
@@ -90,7 +103,7 @@ void solveDistanceJoint(JointConstraint& jc, const JointContext& ctx, BodyState&
         // when positive), the accumulated impulse stays ≥ 0.
         auto limitRow = [&](float C, float sign, float& accumulated) {
             const RowBias rb = limitBias(ctx, C);
-            float impulse = -rb.massScale * row.axialMass * (sign * cdot() + rb.bias) - rb.impulseScale * accumulated;
+            float impulse = -rb.massScale * mass * (sign * cdot() + rb.bias) - rb.impulseScale * accumulated;
             impulse = boundedIncrement(accumulated, impulse, 0.0f, maxImpulse);
             applyAxial(jc, f, sign * impulse, sA, sB);
         };
@@ -126,7 +139,7 @@ void pushDistanceJoint(const JointConstraint& jc, const JointContext& ctx, const
     }
     Vec2 dv = (pB.v + cross(pB.w, f.rB)) - (pA.v + cross(pA.w, f.rA));
     float target = -ctx.pushFactor * ctx.invH * C;
-    float impulse = -row.axialMass * (dot(dv, f.axis) - target);
+    float impulse = -axialMassOf(jc, f) * (dot(dv, f.axis) - target);
     applyAxial(jc, f, impulse, pA, pB);
 }
 

@@ -61,8 +61,8 @@ struct Joint {
 // Each type's row data; plain values, written by the type's prepare.
 
 struct DistanceRow {
-    float axialMass, length, minLength, maxLength, hertz, dampingRatio;
-    bool rigid;  ///< not a spring (or a spring pinned by equal limits)
+    float length, minLength, maxLength, hertz, dampingRatio;  ///< (the axial mass is the frame's: axialMassOf)
+    bool rigid;                                               ///< not a spring (or a spring pinned by equal limits)
     bool enableLimit;
 };
 struct RevoluteRow {

@@ -31,9 +31,9 @@ struct ShapeSpec {
 };
 
 struct Layout {
-    ShapeSpec light;   ///< its centre at (0, 3), level
-    float pinX;        ///< the pin, at (pinX, 3), through the light body's point (pinX, 0)
-    ShapeSpec heavy;   ///< dropped from rest
+    ShapeSpec light;  ///< its centre at (0, 3), level
+    float pinX;       ///< the pin, at (pinX, 3), through the light body's point (pinX, 0)
+    ShapeSpec heavy;  ///< dropped from rest
     Vec2 heavyAt;
     float heavyAngle;
 };
@@ -81,8 +81,7 @@ Outcome run(const Layout& l, int substeps) {
     addShape(w, light, l.light);
     const BodyId pin = w.createBody({.position = {l.pinX, 3.0f}});
     w.createRevoluteJoint({.bodyA = pin, .bodyB = light, .localAnchorB = {l.pinX, 0.0f}});
-    const BodyId heavy =
-        w.createBody({.type = BodyType::dynamic_body, .position = l.heavyAt, .angle = l.heavyAngle});
+    const BodyId heavy = w.createBody({.type = BodyType::dynamic_body, .position = l.heavyAt, .angle = l.heavyAngle});
     addShape(w, heavy, l.heavy);
     double lowest = 1e30;
     for (BodyId b : w.bodies()) lowest = std::min(lowest, double(w.position(b).y));
