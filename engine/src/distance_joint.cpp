@@ -93,7 +93,8 @@ void solveDistanceJoint(JointConstraint& jc, const JointContext& ctx, BodyState&
         applyAxial(jc, f, impulse, sA, sB);
     } else if (row.hertz > 0.0f) {
         // A spring: its softness is physical, so it applies in every pass.
-        const RowBias rb = springBias(makeSoft(row.hertz, row.dampingRatio, ctx.h), f.length - row.length);
+        const RowBias rb = springBias(makeSpring(row.hertz, row.dampingRatio, ctx.h, springMassRatio(jc, mass)),
+                                      f.length - row.length);
         float impulse = -rb.massScale * mass * (cdot() + rb.bias) - rb.impulseScale * jc.impulses.axial;
         impulse = boundedIncrement(jc.impulses.axial, impulse, -maxImpulse, maxImpulse);
         applyAxial(jc, f, impulse, sA, sB);

@@ -42,6 +42,15 @@ inline RowBias limitBias(const JointContext& ctx, float C) {
 /// the same softness in every pass, since it is physical, not a correction.
 inline RowBias springBias(const Softness& s, float C) { return {s.biasRate * C, s.massScale, s.impulseScale}; }
 
+/// m/m_eff for makeSpring: the bodies' reduced mass over the row's effective
+/// mass `effectiveMass` (1 when neither body translates or the row is empty).
+inline float springMassRatio(const JointConstraint& jc, float effectiveMass) {
+    const float sum = jc.invMassA + jc.invMassB;
+    if (!(sum > 0.0f) || !(effectiveMass > 0.0f)) return 1.0f;
+    const float ratio = (1.0f / sum) / effectiveMass;
+    return ratio > 1.0f && ratio < INFINITY ? ratio : 1.0f;
+}
+
 /// Adds `impulse` to `accumulated` within [lo, hi]; returns the part applied.
 inline float boundedIncrement(float& accumulated, float impulse, float lo, float hi) {
     const float total = clamp(accumulated + impulse, lo, hi);

@@ -50,7 +50,8 @@ void solvePrismaticJoint(JointConstraint& jc, const JointContext& ctx, BodyState
     const float mass = axialMass(jc, f);
 
     if (row.enableSpring && row.hertz > 0.0f) {
-        const RowBias rb = springBias(makeSoft(row.hertz, row.dampingRatio, ctx.h), f.translation);
+        const RowBias rb = springBias(makeSpring(row.hertz, row.dampingRatio, ctx.h, springMassRatio(jc, mass)),
+                                      f.translation);
         const float impulse = -rb.massScale * mass * (axialSpeed(f, sA, sB) + rb.bias) - rb.impulseScale * acc.spring;
         acc.spring += impulse;
         applySliderImpulse(jc, f, impulse, 0.0f, 0.0f, sA, sB);

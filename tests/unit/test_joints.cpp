@@ -428,6 +428,85 @@ TEST(Joints, ADiscHungFarOffItsCentreKeepsItsEnergy) {
     }
 }
 
+// A spring along a joint's axis on a disc held by a point 1.5 m off its
+// centre (a wheel, a slider, a springy rope): the row's effective mass
+// along the axis changes a hundredfold as the arm turns. The spring took its
+// stiffness m_eff·ω² from it, so it was far stiffer stretched than where it
+// was released, and gave back more than it took: energy 200 to 3,600,000
+// times the release's own scale. Its stiffness is now the bodies' reduced
+// mass times ω² (makeSpring), a constant, and the energy with the spring's
+// own, ½·k·C², never rises. Not yet met, so not held here: the rope at one
+// substep, whose disc turns up to a radian a step (docs/validation.md).
+TEST(Joints, ASpringOnALongArmNeverGainsEnergy) {
+    enum class Kind { wheel, slider, rope };
+    for (Kind kind : {Kind::wheel, Kind::slider, Kind::rope})
+        for (int substeps : {4, 2, 1})
+            for (auto [hertz, zeta] : {std::pair{3.6f, 0.0f}, std::pair{1.0f, 0.7f}}) {
+                if (kind == Kind::rope && substeps == 1) continue;
+                WorldSettings s;
+                s.enableSleep = false;  // sleep would hide a gain
+                s.substeps = substeps;
+                World w(s);
+                const BodyId frame = w.createBody({});
+                const BodyId disc = dynamicDisc(w, {-1.5f, 0.0f}, 0.17f, 9.3f);
+                const Vec2 arm{1.5f, 0.0f};  // the disc's anchor, at the frame's origin
+                if (kind == Kind::wheel) {
+                    w.createWheelJoint({.bodyA = frame,
+                                        .bodyB = disc,
+                                        .localAnchorB = arm,
+                                        .localAxisA = {0.0f, 1.0f},
+                                        .enableSpring = true,
+                                        .hertz = hertz,
+                                        .dampingRatio = zeta});
+                } else if (kind == Kind::slider) {
+                    w.createPrismaticJoint({.bodyA = frame,
+                                            .bodyB = disc,
+                                            .localAnchorB = arm,
+                                            .localAxisA = {0.0f, 1.0f},
+                                            .enableSpring = true,
+                                            .hertz = hertz,
+                                            .dampingRatio = zeta});
+                } else {
+                    w.createDistanceJoint({.bodyA = frame,
+                                           .bodyB = disc,
+                                           .localAnchorA = {0.0f, 1.0f},
+                                           .localAnchorB = arm,
+                                           .length = 1.0f,
+                                           .enableSpring = true,
+                                           .hertz = hertz,
+                                           .dampingRatio = zeta});
+                }
+                const float m = w.mass(disc);
+                const float k = m * (2.0f * kPi * hertz) * (2.0f * kPi * hertz);
+                // The spring's extension: along the axis (the anchor's height),
+                // or the rope's length over its rest length.
+                auto extension = [&] {
+                    const Vec2 anchor = w.position(disc) + rotate(makeRot(w.angle(disc)), arm);
+                    return kind == Kind::rope ? distance(anchor, Vec2{0.0f, 1.0f}) - 1.0f : anchor.y;
+                };
+                auto energy = [&] {
+                    const Vec2 v = w.linearVelocity(disc);
+                    const float om = w.angularVelocity(disc), c = extension();
+                    return 0.5 * m * dot(v, v) + 0.5 * w.rotationalInertia(disc) * om * om +
+                           m * kG * w.worldCenterOfMass(disc).y + 0.5 * k * c * c;
+                };
+                const double start = energy();
+                double peak = start;
+                for (int i = 0; i < 600; ++i) {
+                    w.step(1.0f / 60.0f);
+                    peak = std::max(peak, energy());
+                }
+                // The energy a release from rest at the rest length exchanges:
+                // the spring's at twice the static sag s = m·g/k, ½·k·(2s)².
+                const double sag = m * kG / k, scale = 2.0 * k * sag * sag;
+                std::printf(
+                    "[figure] spring %d, %d substeps, %.1f Hz, zeta %.1f: energy at most %+.4f of the release's\n",
+                    static_cast<int>(kind), substeps, double(hertz), double(zeta), (peak - start) / scale);
+                // The hard-cases issue's bound, 1 %, of that scale (measured: never above the start).
+                EXPECT_LE(peak - start, 0.01 * scale) << static_cast<int>(kind) << " at " << substeps << " substeps";
+            }
+}
+
 TEST(Joints, BadInputIsRefused) {
     World w;
     BodyId ground = w.createBody({});
