@@ -125,13 +125,19 @@ struct JointConstraint {
     JointType type = JointType::distance;
     /// Its equality rows are solved exactly with its tree (joint_tree.cpp),
     /// not in the Gauss-Seidel sweep.
-    bool inTree = false;
+    bool inTree : 1 = false;
     /// The entries of its anchors' point matrix fit single precision with room
     /// for their products (solvePointRows in joint_rows.hpp).
-    bool singlePrecision = false;
+    bool singlePrecision : 1 = false;
     /// A deep joint this step (isDeepJoint, world_state.hpp): rigid in the
     /// soft step's biased pass, its error pushed on pseudo-velocities.
-    bool deep = false;
+    bool deep : 1 = false;
+    /// Its limit pulled in this position's solve and was let go until the
+    /// positions change (the tree's active set, joint_tree.cpp).
+    bool limitReleased : 1 = false;
+    /// A revolute joint solved with its tree whose limit is held by the tree
+    /// in this factorization: −1 the lower, +1 the upper, 0 none (joint_tree.cpp).
+    std::int8_t treeLimit = 0;
     int a = kNullIndex, b = kNullIndex;  ///< solver body indices; kNullIndex for a body that does not move
     int c = kNullIndex, d = kNullIndex;  ///< gear only: the frames of its two joints
     float invMassA = 0, invIA = 0, invMassB = 0, invIB = 0;

@@ -246,6 +246,8 @@ inline void pointRows(Vec2 rA, Vec2 rB, Vec2 separation, EqualityRows& rows) {
     rows.error[1] = separation.y;
 }
 void revoluteEqualityRows(const JointConstraint& jc, const BodyState& sA, const BodyState& sB, EqualityRows& rows);
+/// A revolute joint's limit at or beyond its angle now: −1 the lower, +1 the upper, 0 neither (or none).
+int revoluteLimitReached(const JointConstraint& jc, const BodyState& sA, const BodyState& sB);
 void weldEqualityRows(const JointConstraint& jc, const BodyState& sA, const BodyState& sB, EqualityRows& rows);
 void distanceEqualityRows(const JointConstraint& jc, const BodyState& sA, const BodyState& sB, EqualityRows& rows);
 

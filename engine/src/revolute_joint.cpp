@@ -61,6 +61,10 @@ struct LimitThroughPoint {
 };
 
 LimitThroughPoint limitThroughPoint(const JointConstraint& jc, Vec2 rA, Vec2 rB) {
+    // A joint of an exact tree has its point solved with the tree, and its
+    // limit too while it holds (joint_tree.cpp): a point impulse from this
+    // joint's own K alone would not pair with the tree's.
+    if (jc.inTree) return {jc.row.revolute.axialMass, {}};
     const float iA = jc.invIA, iB = jc.invIB;
     const Vec2 k = iA * leftPerp(rA) + iB * leftPerp(rB);
     const Vec2 kInvK = solvePointRows(jc, rA, rB, k);
@@ -129,7 +133,7 @@ void solveRevoluteJoint(JointConstraint& jc, const JointContext& ctx, BodyState&
         acc.linear += impulse;
         applyImpulse(jc, rA, rB, impulse, 0.0f, sA, sB);
     }
-    if (row.enableLimit && turns) {
+    if (row.enableLimit && turns && jc.treeLimit == 0) {  // (else the tree holds it)
         const LimitThroughPoint through = limitThroughPoint(jc, rA, rB);
         auto applyLimit = [&](float impulse) { applyImpulse(jc, rA, rB, impulse * through.follow, impulse, sA, sB); };
         // Lower: θ − lower ≥ 0, along +(ω_B − ω_A).
@@ -149,10 +153,30 @@ void solveRevoluteJoint(JointConstraint& jc, const JointContext& ctx, BodyState&
     }
 }
 
+int revoluteLimitReached(const JointConstraint& jc, const BodyState& sA, const BodyState& sB) {
+    const RevoluteRow& row = jc.row.revolute;
+    if (!row.enableLimit || !(jc.invIA + jc.invIB > 0.0f)) return 0;
+    const float angle = unwindAngle(relativeAngle(jc, sA, sB) - row.referenceAngle);
+    if (angle <= row.lowerAngle) return -1;
+    if (angle >= row.upperAngle) return 1;
+    return 0;
+}
+
 void revoluteEqualityRows(const JointConstraint& jc, const BodyState& sA, const BodyState& sB, EqualityRows& rows) {
     const Vec2 rA = rotate(sA.dq, jc.rA), rB = rotate(sB.dq, jc.rB);
     rows.count = 2;
     pointRows(rA, rB, (sB.dp - sA.dp) + (rB - rA) + jc.deltaCenter, rows);
+    if (jc.treeLimit == 0) return;
+    // The limit the tree holds, as an equality row on ω_B − ω_A whose error is
+    // the angle beyond it (the sign check in joint_tree.cpp lets it go when it
+    // would pull).
+    const RevoluteRow& row = jc.row.revolute;
+    const float angle = unwindAngle(relativeAngle(jc, sA, sB) - row.referenceAngle);
+    rows.count = 3;
+    rows.jA[2][0] = rows.jA[2][1] = rows.jB[2][0] = rows.jB[2][1] = 0.0f;
+    rows.jA[2][2] = -1.0f;
+    rows.jB[2][2] = 1.0f;
+    rows.error[2] = angle - (jc.treeLimit < 0 ? row.lowerAngle : row.upperAngle);
 }
 
 }  // namespace i2d::detail
