@@ -480,19 +480,27 @@ void solveJointTrees(WorldState& w, const JointContext& ctx, int positions) {
     // An active set: a limit held as an equality may come out pulling (the
     // joint leaving it); then the solve is made again from the same start
     // without that limit, which the sweep then treats as before.
+    // What a solve changes: the trees' bodies' velocities, their joints' impulses.
     std::vector<BodyState>& saved = t.savedStates;
     std::vector<JointImpulses>& savedImpulses = t.savedImpulses;
-    saved.assign(s.states.begin(), s.states.end());
+    saved.clear();
     savedImpulses.clear();
-    for (const TreeNode& node : t.nodes)
-        if (node.row >= 0) savedImpulses.push_back(s.joints[static_cast<std::size_t>(node.row)].impulses);
+    for (const TreeNode& node : t.nodes) {
+        if (node.row >= 0)
+            savedImpulses.push_back(s.joints[static_cast<std::size_t>(node.row)].impulses);
+        else
+            saved.push_back(s.states[static_cast<std::size_t>(node.body)]);
+    }
     for (int attempt = 0;; ++attempt) {
         solveFactored(s, t, rb);
         if (attempt == 2 || !releasePullingLimits(s, t)) break;
-        std::copy(saved.begin(), saved.end(), s.states.begin());
-        std::size_t k = 0;
-        for (const TreeNode& node : t.nodes)
-            if (node.row >= 0) s.joints[static_cast<std::size_t>(node.row)].impulses = savedImpulses[k++];
+        std::size_t body = 0, joint = 0;
+        for (const TreeNode& node : t.nodes) {
+            if (node.row >= 0)
+                s.joints[static_cast<std::size_t>(node.row)].impulses = savedImpulses[joint++];
+            else
+                s.states[static_cast<std::size_t>(node.body)] = saved[body++];
+        }
         factor(w, s, t, gammaScale, false);
     }
     // A limit that still pulls after the third solve keeps no pull.

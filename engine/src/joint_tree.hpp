@@ -37,8 +37,9 @@ struct JointTrees {
     /// What the factorization in `nodes` was made for (see solveJointTrees).
     int factoredPositions = -1;
     bool factoredSoft = false;
-    /// The states and the trees' joint impulses before a solve that holds
-    /// limits, to solve again from when one pulls (solveJointTrees).
+    /// The trees' bodies' states and joints' impulses before a solve that
+    /// holds limits, in node order, to solve again from when one pulls
+    /// (solveJointTrees).
     std::vector<BodyState> savedStates;
     std::vector<JointImpulses> savedImpulses;
 };
