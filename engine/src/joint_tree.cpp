@@ -297,6 +297,7 @@ namespace {
 void factor(const WorldState& w, SolverArrays& s, JointTrees& t, double gammaScale, bool newPositions) {
     std::vector<TreeNode>& nodes = t.nodes;
     BodyState& zero = s.states.back();
+    t.holdsLimits = false;
     for (TreeNode& node : nodes) {
         if (node.row >= 0) continue;
         const Body& b = w.bodies[s.stateBodies[static_cast<std::size_t>(node.body)]];
@@ -321,6 +322,7 @@ void factor(const WorldState& w, SolverArrays& s, JointTrees& t, double gammaSca
             // that pulls is let go until the positions change, solveJointTrees).
             if (newPositions) jc.limitReleased = false;
             jc.treeLimit = static_cast<std::int8_t>(jc.limitReleased ? 0 : revoluteLimitReached(jc, sA, sB));
+            t.holdsLimits = t.holdsLimits || jc.treeLimit != 0;
         }
         EqualityRows& rows = node.rows;
         equalityRows(jc, sA, sB, rows);
@@ -470,10 +472,7 @@ void solveJointTrees(WorldState& w, const JointContext& ctx, int positions) {
         t.factoredPositions = positions;
         t.factoredSoft = soft;
     }
-    bool holdsLimits = false;
-    for (const TreeNode& node : t.nodes)
-        holdsLimits = holdsLimits || (node.row >= 0 && s.joints[static_cast<std::size_t>(node.row)].treeLimit != 0);
-    if (!holdsLimits) {
+    if (!t.holdsLimits) {
         solveFactored(s, t, rb);
         return;
     }

@@ -37,6 +37,7 @@ struct JointTrees {
     /// What the factorization in `nodes` was made for (see solveJointTrees).
     int factoredPositions = -1;
     bool factoredSoft = false;
+    bool holdsLimits = false;  ///< some joint's limit is held in that factorization (JointConstraint::treeLimit)
     /// The trees' bodies' states and joints' impulses before a solve that
     /// holds limits, in node order, to solve again from when one pulls
     /// (solveJointTrees).
