@@ -84,6 +84,24 @@ Manifold singlePoint(Vec2 pA, Vec2 pB, Vec2 n, float dist, float rA, float rB, s
     return m;
 }
 
+// singlePoint computed in `frame` and put in world space, as
+// toWorld(singlePoint(...), frame) with the same operations in the same
+// order, but written once into the result: the local manifold copied into
+// the world one (and that into the contact) was written in 4-byte pieces and
+// read back in 16-byte ones, a store-forwarding stall per circle contact.
+Manifold singlePointInWorld(Vec2 pA, Vec2 pB, Vec2 n, float dist, float rA, float rB, std::uint16_t id,
+                            const Transform& frame) {
+    Manifold m;
+    m.normal = rotate(frame.q, n);
+    const Vec2 cA = mulAdd(pA, rA, n);
+    const Vec2 cB = mulSub(pB, rB, n);
+    m.points[0].point = transformPoint(frame, lerp(cA, cB, 0.5f));
+    m.points[0].separation = dist - rA - rB;
+    m.points[0].id = id;
+    m.pointCount = 1;
+    return m;
+}
+
 // Clips the incident segment inc1–inc2 (radius rad2) against the side planes
 // of the reference segment ref1–ref2 (radius rad1). `n` is the reference
 // normal pointing towards the incident shape and ref2 − ref1 must point along
@@ -483,7 +501,7 @@ Manifold collideCircles(const Circle& a, const Transform& xfA, const Circle& b, 
         n = {0.0f, 1.0f};
         dist = 0.0f;
     }
-    return toWorld(singlePoint(pA, pB, n, dist, a.radius, b.radius, 0), xfA);
+    return singlePointInWorld(pA, pB, n, dist, a.radius, b.radius, 0, xfA);
 }
 
 Manifold collideCapsuleAndCircle(const Capsule& a, const Transform& xfA, const Circle& b, const Transform& xfB,
@@ -502,7 +520,7 @@ Manifold collideCapsuleAndCircle(const Capsule& a, const Transform& xfA, const C
         n = isDegenerateSegment(a.center1, a.center2) ? Vec2{0.0f, 1.0f} : normalize(leftPerp(e));
         dist = 0.0f;
     }
-    return toWorld(singlePoint(pA, c, n, dist, a.radius, b.radius, 0), xfA);
+    return singlePointInWorld(pA, c, n, dist, a.radius, b.radius, 0, xfA);
 }
 
 Manifold collideCapsules(const Capsule& a, const Transform& xfA, const Capsule& b, const Transform& xfB,
@@ -548,12 +566,12 @@ Manifold collidePolygonAndCircle(const Polygon& a, const Transform& xfA, const C
         float dist = 0.0f;
         Vec2 n = normalize(c - v, dist);
         if (dist - radius > speculativeDistance) return {};
-        return toWorld(singlePoint(v, c, n, dist, a.radius, b.radius, 0), xfA);
+        return singlePointInWorld(v, c, n, dist, a.radius, b.radius, 0, xfA);
     }
     // Face region: the core point is the projection of the centre on the face.
     const Vec2 n = a.normals[i1];
     const Vec2 pA = mulSub(c, separation, n);
-    return toWorld(singlePoint(pA, c, n, separation, a.radius, b.radius, 0), xfA);
+    return singlePointInWorld(pA, c, n, separation, a.radius, b.radius, 0, xfA);
 }
 
 Manifold collidePolygonAndCapsule(const Polygon& a, const Transform& xfA, const Capsule& b, const Transform& xfB,
