@@ -99,7 +99,7 @@ void solveDistanceJoint(JointConstraint& jc, const JointContext& ctx, BodyState&
         impulse = boundedIncrement(jc.impulses.axial, impulse, -maxImpulse, maxImpulse);
         applyAxial(jc, f, impulse, sA, sB);
     }
-    if (row.enableLimit && row.minLength < row.maxLength) {
+    if (row.enableLimit && row.minLength < row.maxLength && jc.treeLimit == 0) {  // (else the tree holds it)
         // One-sided limit row along `sign`·axis: C ≥ 0 is allowed (speculative
         // when positive), the accumulated impulse stays ≥ 0.
         auto limitRow = [&](float C, float sign, float& accumulated) {
@@ -115,13 +115,24 @@ void solveDistanceJoint(JointConstraint& jc, const JointContext& ctx, BodyState&
     }
 }
 
+int distanceLimitReached(const JointConstraint& jc, const BodyState& sA, const BodyState& sB) {
+    const DistanceRow& row = jc.row.distance;
+    if (row.rigid || !row.enableLimit || !(row.minLength < row.maxLength)) return 0;
+    return limitSide(currentFrame(jc, sA, sB).length, row.minLength, row.maxLength);
+}
+
 void distanceEqualityRows(const JointConstraint& jc, const BodyState& sA, const BodyState& sB, EqualityRows& rows) {
+    const DistanceRow& row = jc.row.distance;
+    // A rigid joint's length; a rope's or a limited spring's limit only while
+    // the tree holds it, as an equality row along the axis whose error is the
+    // length beyond it (let go when it would pull, joint_tree.cpp).
+    rows.count = row.rigid || jc.treeLimit != 0 ? 1 : 0;
+    if (rows.count == 0) return;
     const JointFrame f = currentFrame(jc, sA, sB);
     const float crA = cross(f.rA, f.axis), crB = cross(f.rB, f.axis);
-    rows.count = 1;
     rows.jA[0][0] = -f.axis.x, rows.jA[0][1] = -f.axis.y, rows.jA[0][2] = -crA;
     rows.jB[0][0] = f.axis.x, rows.jB[0][1] = f.axis.y, rows.jB[0][2] = crB;
-    rows.error[0] = f.length - jc.row.distance.length;
+    rows.error[0] = f.length - (row.rigid ? row.length : jc.treeLimit < 0 ? row.minLength : row.maxLength);
 }
 
 void pushDistanceJoint(const JointConstraint& jc, const JointContext& ctx, const BodyState& sA, const BodyState& sB,

@@ -135,8 +135,10 @@ struct JointConstraint {
     /// Its limit pulled in this position's solve and was let go until the
     /// positions change (the tree's active set, joint_tree.cpp).
     bool limitReleased : 1 = false;
-    /// A revolute joint solved with its tree whose limit is held by the tree
-    /// in this factorization: −1 the lower, +1 the upper, 0 none (joint_tree.cpp).
+    /// A joint solved with its tree whose limit (a revolute joint's angle, a
+    /// slider's translation, a rope's or limited spring's length) is held by
+    /// the tree in this factorization: −1 the lower, +1 the upper, 0 none
+    /// (joint_tree.cpp).
     std::int8_t treeLimit = 0;
     int a = kNullIndex, b = kNullIndex;  ///< solver body indices; kNullIndex for a body that does not move
     int c = kNullIndex, d = kNullIndex;  ///< gear only: the frames of its two joints
@@ -159,6 +161,7 @@ struct JointSlot {
     float invMassA = 0, invIA = 0, invMassB = 0, invIB = 0;
     bool movesC = false, movesD = false;  ///< gear: its joints' frames move
     std::uint8_t equalityRows = 0;        ///< rows the exact tree solve could take (joint_tree.cpp)
+    bool rowsOnlyAtLimit = false;         ///< those rows are a limit's, handed over while it holds (a rope)
     bool inTree = false;
     bool wide = false;
     bool deepHinge =

@@ -133,6 +133,15 @@ inline void applyImpulse(const JointConstraint& jc, Vec2 rA, Vec2 rB, Vec2 P, fl
     sB.w += jc.invIB * (cross(rB, P) + L);
 }
 
+/// A joint's equality rows for the exact solve of joint trees
+/// (joint_tree.cpp): row k's rate is J v = jA[k]·(v_A, ω_A) + jB[k]·(v_B, ω_B),
+/// its position error error[k]; the accumulated impulses are read and written
+/// through the type's own fields (readImpulse, addImpulse in joint_tree.cpp).
+struct EqualityRows {
+    int count = 0;
+    float jA[3][3]{}, jB[3][3]{};
+    float error[3]{};
+};
 /// Geometry of a joint along an axis fixed in body A (prismatic, wheel), now:
 /// d = p_B − p_A, the axis u turned with A and its perpendicular n, and the
 /// angular Jacobian terms of rows along them: a translation row along u has
@@ -172,6 +181,20 @@ inline void applySliderImpulse(const JointConstraint& jc, const SliderFrame& f, 
 /// The rate of the translation: J v of a row along the axis.
 inline float axialSpeed(const SliderFrame& f, const BodyState& stA, const BodyState& stB) {
     return dot(f.axis, stB.v - stA.v) + f.aB * stB.w - f.aA * stA.w;
+}
+/// Row r of a slider's equality rows: B's motion along `dir` (the
+/// perpendicular or the axis) with its arms, J v = dir·(v_B − v_A) + arm_B ω_B
+/// − arm_A ω_A, and its error (joint_tree.cpp).
+inline void sliderRow(Vec2 dir, float armA, float armB, float error, int r, EqualityRows& rows) {
+    rows.jA[r][0] = -dir.x, rows.jA[r][1] = -dir.y, rows.jA[r][2] = -armA;
+    rows.jB[r][0] = dir.x, rows.jB[r][1] = dir.y, rows.jB[r][2] = armB;
+    rows.error[r] = error;
+}
+/// −1 when `value` is at or below `lower`, +1 at or above `upper`, else 0.
+inline int limitSide(float value, float lower, float upper) {
+    if (value <= lower) return -1;
+    if (value >= upper) return 1;
+    return 0;
 }
 /// The translation limits of a slider (prismatic, wheel): one-sided rows on
 /// u·d − lower ≥ 0 and upper − u·d ≥ 0 with effective mass `mass`.
@@ -214,20 +237,16 @@ inline float axialMass(const JointConstraint& jc, const SliderFrame& f) {
     return k > 0.0f ? 1.0f / k : 0.0f;
 }
 
-/// A joint's equality rows for the exact solve of joint trees
-/// (joint_tree.cpp): row k's rate is J v = jA[k]·(v_A, ω_A) + jB[k]·(v_B, ω_B),
-/// its position error error[k]; the accumulated impulses are read and written
-/// through the type's own fields (readImpulse, addImpulse in joint_tree.cpp).
-struct EqualityRows {
-    int count = 0;
-    float jA[3][3]{}, jB[3][3]{};
-    float error[3]{};
-};
 /// The equality rows a joint hands to the tree solve: the revolute joint's
-/// point, the rigid weld's point and angle, the rigid distance joint's length;
-/// 0 rows for every other joint (its rows stay in the Gauss-Seidel sweep).
+/// point, the rigid weld's point and angle, the rigid distance joint's length,
+/// the prismatic joint's perpendicular and angle, the wheel joint's
+/// perpendicular, the limited distance joint's limit while held (its rows
+/// count 1, handed over only then); 0 rows for every other joint (its rows stay in the Gauss-Seidel sweep).
 /// Each type's part is in its own file; the dispatch is in joint_tree.cpp.
 int equalityRowCount(const Joint& joint);
+/// Whether those rows are a limit's, handed over only while it holds (a rope,
+/// a spring with limits): the tree takes such joints after the others.
+bool rowsOnlyAtLimit(const Joint& joint);
 /// A distance joint whose length is held (not a spring, or a spring pinned
 /// by equal limits).
 inline bool isRigidDistance(const DistanceJointDef& def) {
@@ -249,6 +268,15 @@ void revoluteEqualityRows(const JointConstraint& jc, const BodyState& sA, const 
 /// A revolute joint's limit at or beyond its angle now: −1 the lower, +1 the upper, 0 neither (or none).
 int revoluteLimitReached(const JointConstraint& jc, const BodyState& sA, const BodyState& sB);
 void weldEqualityRows(const JointConstraint& jc, const BodyState& sA, const BodyState& sB, EqualityRows& rows);
+/// The prismatic joint's perpendicular and angle, and its limit while the tree holds it.
+void prismaticEqualityRows(const JointConstraint& jc, const BodyState& sA, const BodyState& sB, EqualityRows& rows);
+/// The wheel joint's perpendicular, and its limit while the tree holds it.
+void wheelEqualityRows(const JointConstraint& jc, const BodyState& sA, const BodyState& sB, EqualityRows& rows);
+/// A distance joint's limit (not a rigid one's) at or beyond it now.
+int distanceLimitReached(const JointConstraint& jc, const BodyState& sA, const BodyState& sB);
+/// The limit a joint's tree would hold now: −1 the lower, +1 the upper, 0
+/// neither (or none: no limit, or a joint type whose limits stay in the sweep).
+int limitReached(const JointConstraint& jc, const BodyState& sA, const BodyState& sB);
 void distanceEqualityRows(const JointConstraint& jc, const BodyState& sA, const BodyState& sB, EqualityRows& rows);
 
 void prepareDistanceJoint(const WorldState& w, const Joint& joint, JointConstraint& jc);

@@ -164,6 +164,7 @@ void planJoints(WorldState& w) {
             slot.movesD = m != 0.0f || i != 0.0f;
         }
         slot.equalityRows = static_cast<std::uint8_t>(equalityRowCount(joint));
+        slot.rowsOnlyAtLimit = rowsOnlyAtLimit(joint);
         slot.wide = wideCandidate(w, joint, bA, bB, slot);
         if (slot.wide && joint.deepHinge) slot.wide = false, slot.deepHinge = true;
         for (float inverse : {slot.invMassA, slot.invMassB})

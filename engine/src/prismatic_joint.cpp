@@ -62,7 +62,10 @@ void solvePrismaticJoint(JointConstraint& jc, const JointContext& ctx, BodyState
         impulse = boundedIncrement(acc.motor, impulse, -maxImpulse, maxImpulse);
         applySliderImpulse(jc, f, impulse, 0.0f, 0.0f, sA, sB);
     }
-    if (row.enableLimit) solveSliderLimits(jc, ctx, f, mass, row.lower, row.upper, sA, sB);
+    // A limit the tree holds and the perpendicular and angle of a joint in an
+    // exact tree are solved with the tree (joint_tree.cpp).
+    if (row.enableLimit && jc.treeLimit == 0) solveSliderLimits(jc, ctx, f, mass, row.lower, row.upper, sA, sB);
+    if (jc.inTree) return;
 
     // Perpendicular and angle as one 2×2 block.
     const float iA = jc.invIA, iB = jc.invIB;
@@ -77,6 +80,22 @@ void solvePrismaticJoint(JointConstraint& jc, const JointContext& ctx, BodyState
     acc.axial += impulse.x;
     acc.angular += impulse.y;
     applySliderImpulse(jc, f, 0.0f, impulse.x, impulse.y, sA, sB);
+}
+
+void prismaticEqualityRows(const JointConstraint& jc, const BodyState& sA, const BodyState& sB, EqualityRows& rows) {
+    const PrismaticRow& row = jc.row.prismatic;
+    const SliderFrame f = sliderFrame(jc, row.axisA, sA, sB);
+    rows.count = 2;
+    sliderRow(f.perp, f.sA, f.sB, dot(f.perp, f.d), 0, rows);
+    rows.jA[1][0] = rows.jA[1][1] = rows.jB[1][0] = rows.jB[1][1] = 0.0f;
+    rows.jA[1][2] = -1.0f;
+    rows.jB[1][2] = 1.0f;
+    rows.error[1] = unwindAngle(relativeAngle(jc, sA, sB) - row.referenceAngle);
+    if (jc.treeLimit == 0) return;
+    // The limit the tree holds: an equality row along the axis whose error is
+    // the translation beyond it (let go when it would pull, joint_tree.cpp).
+    rows.count = 3;
+    sliderRow(f.axis, f.aA, f.aB, f.translation - (jc.treeLimit < 0 ? row.lower : row.upper), 2, rows);
 }
 
 }  // namespace i2d::detail

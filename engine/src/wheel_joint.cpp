@@ -58,9 +58,11 @@ void solveWheelJoint(JointConstraint& jc, const JointContext& ctx, BodyState& sA
         acc.spring += impulse;
         applySliderImpulse(jc, f, impulse, 0.0f, 0.0f, sA, sB);
     }
-    if (row.enableLimit) solveSliderLimits(jc, ctx, f, mass, row.lower, row.upper, sA, sB);
+    // A limit the tree holds and the perpendicular of a joint in an exact
+    // tree are solved with the tree (joint_tree.cpp).
+    if (row.enableLimit && jc.treeLimit == 0) solveSliderLimits(jc, ctx, f, mass, row.lower, row.upper, sA, sB);
     // The point stays on the axis line.
-    {
+    if (!jc.inTree) {
         const float k = jc.invMassA + jc.invMassB + jc.invIA * f.sA * f.sA + jc.invIB * f.sB * f.sB;
         const float perpMass = k > 0.0f ? 1.0f / k : 0.0f;
         const RowBias rb = rigidBias(ctx, dot(f.perp, f.d));
@@ -69,6 +71,16 @@ void solveWheelJoint(JointConstraint& jc, const JointContext& ctx, BodyState& sA
         acc.axial += impulse;
         applySliderImpulse(jc, f, 0.0f, impulse, 0.0f, sA, sB);
     }
+}
+
+void wheelEqualityRows(const JointConstraint& jc, const BodyState& sA, const BodyState& sB, EqualityRows& rows) {
+    const WheelRow& row = jc.row.wheel;
+    const SliderFrame f = sliderFrame(jc, row.axisA, sA, sB);
+    rows.count = 1;
+    sliderRow(f.perp, f.sA, f.sB, dot(f.perp, f.d), 0, rows);
+    if (jc.treeLimit == 0) return;
+    rows.count = 2;  // the limit the tree holds, along the axis (as the prismatic joint's)
+    sliderRow(f.axis, f.aA, f.aB, f.translation - (jc.treeLimit < 0 ? row.lower : row.upper), 1, rows);
 }
 
 }  // namespace i2d::detail
