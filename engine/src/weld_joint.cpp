@@ -80,6 +80,17 @@ void solveWeldJoint(JointConstraint& jc, const JointContext& ctx, BodyState& sA,
         applyImpulse(jc, rA, rB, impulse, angular, sA, sB);
         return;
     }
+    PointSpring spring;
+    if (row.linearHertz > 0.0f &&
+        makePointSpring(row.linearHertz, row.linearDampingRatio, ctx.h, mA + mB, K.k11 + K.k22, spring)) {
+        // A spring of fixed stiffness on the anchors (soft_constraint.hpp).
+        const double g = spring.gamma;
+        const Vec2 x = solveSymmetric22({K.k11 + g, K.k12, K.k22 + g},
+                                        cdot + spring.biasRate * separation + spring.gamma * acc.linear);
+        acc.linear -= x;
+        applyImpulse(jc, rA, rB, -x, 0.0f, sA, sB);
+        return;
+    }
     const RowBias rb = row.linearHertz > 0.0f
                            ? springBias(makeSoft(row.linearHertz, row.linearDampingRatio, ctx.h), 1.0f)
                            : rigidBias(ctx, 1.0f);
