@@ -115,10 +115,14 @@ void solveDistanceJoint(JointConstraint& jc, const JointContext& ctx, BodyState&
     }
 }
 
-int distanceLimitReached(const JointConstraint& jc, const BodyState& sA, const BodyState& sB) {
+bool distanceLimitCoordinate(const JointConstraint& jc, const BodyState& sA, const BodyState& sB,
+                             LimitCoordinate& out) {
     const DistanceRow& row = jc.row.distance;
-    if (row.rigid || !row.enableLimit || !(row.minLength < row.maxLength)) return 0;
-    return limitSide(currentFrame(jc, sA, sB).length, row.minLength, row.maxLength);
+    if (row.rigid || !row.enableLimit || !(row.minLength < row.maxLength)) return false;
+    const JointFrame f = currentFrame(jc, sA, sB);
+    const Vec2 dv = (sB.v + cross(sB.w, f.rB)) - (sA.v + cross(sA.w, f.rA));
+    out = {f.length, dot(dv, f.axis), row.minLength, row.maxLength};
+    return true;
 }
 
 void distanceEqualityRows(const JointConstraint& jc, const BodyState& sA, const BodyState& sB, EqualityRows& rows) {

@@ -190,6 +190,12 @@ inline void sliderRow(Vec2 dir, float armA, float armB, float error, int r, Equa
     rows.jB[r][0] = dir.x, rows.jB[r][1] = dir.y, rows.jB[r][2] = armB;
     rows.error[r] = error;
 }
+/// A joint's limited coordinate now (a revolute joint's angle, a slider's
+/// translation, a distance joint's length), its rate along the limit rows'
+/// direction (J v) and its bounds.
+struct LimitCoordinate {
+    float value = 0.0f, rate = 0.0f, lower = 0.0f, upper = 0.0f;
+};
 /// −1 when `value` is at or below `lower`, +1 at or above `upper`, else 0.
 inline int limitSide(float value, float lower, float upper) {
     if (value <= lower) return -1;
@@ -266,17 +272,18 @@ inline void pointRows(Vec2 rA, Vec2 rB, Vec2 separation, EqualityRows& rows) {
 }
 void revoluteEqualityRows(const JointConstraint& jc, const BodyState& sA, const BodyState& sB, EqualityRows& rows);
 /// A revolute joint's limit at or beyond its angle now: −1 the lower, +1 the upper, 0 neither (or none).
-int revoluteLimitReached(const JointConstraint& jc, const BodyState& sA, const BodyState& sB);
+/// The limited angle of a revolute joint with a limit and a side that turns (false otherwise).
+bool revoluteLimitCoordinate(const JointConstraint& jc, const BodyState& sA, const BodyState& sB, LimitCoordinate& out);
 void weldEqualityRows(const JointConstraint& jc, const BodyState& sA, const BodyState& sB, EqualityRows& rows);
 /// The prismatic joint's perpendicular and angle, and its limit while the tree holds it.
 void prismaticEqualityRows(const JointConstraint& jc, const BodyState& sA, const BodyState& sB, EqualityRows& rows);
 /// The wheel joint's perpendicular, and its limit while the tree holds it.
 void wheelEqualityRows(const JointConstraint& jc, const BodyState& sA, const BodyState& sB, EqualityRows& rows);
-/// A distance joint's limit (not a rigid one's) at or beyond it now.
-int distanceLimitReached(const JointConstraint& jc, const BodyState& sA, const BodyState& sB);
-/// The limit a joint's tree would hold now: −1 the lower, +1 the upper, 0
-/// neither (or none: no limit, or a joint type whose limits stay in the sweep).
-int limitReached(const JointConstraint& jc, const BodyState& sA, const BodyState& sB);
+/// The limited length of a distance joint with limits (not a rigid one; false otherwise).
+bool distanceLimitCoordinate(const JointConstraint& jc, const BodyState& sA, const BodyState& sB, LimitCoordinate& out);
+/// The limited coordinate of a joint whose limit its tree may hold (false:
+/// no limit, or a joint type whose limits stay in the sweep).
+bool limitCoordinate(const JointConstraint& jc, const BodyState& sA, const BodyState& sB, LimitCoordinate& out);
 void distanceEqualityRows(const JointConstraint& jc, const BodyState& sA, const BodyState& sB, EqualityRows& rows);
 
 void prepareDistanceJoint(const WorldState& w, const Joint& joint, JointConstraint& jc);

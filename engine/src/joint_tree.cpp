@@ -73,25 +73,34 @@ void equalityRows(const JointConstraint& jc, const BodyState& sA, const BodyStat
     }
 }
 
-int limitReached(const JointConstraint& jc, const BodyState& sA, const BodyState& sB) {
+bool limitCoordinate(const JointConstraint& jc, const BodyState& sA, const BodyState& sB, LimitCoordinate& out) {
+    auto slider = [&](Vec2 axisA, bool enabled, float lower, float upper) {
+        if (!enabled) return false;
+        const SliderFrame f = sliderFrame(jc, axisA, sA, sB);
+        out = {f.translation, axialSpeed(f, sA, sB), lower, upper};
+        return true;
+    };
     switch (jc.type) {
-        case JointType::revolute: return revoluteLimitReached(jc, sA, sB);
+        case JointType::revolute: return revoluteLimitCoordinate(jc, sA, sB, out);
         case JointType::prismatic: {
             const PrismaticRow& row = jc.row.prismatic;
-            return row.enableLimit ? limitSide(sliderFrame(jc, row.axisA, sA, sB).translation, row.lower, row.upper)
-                                   : 0;
+            return slider(row.axisA, row.enableLimit, row.lower, row.upper);
         }
         case JointType::wheel: {
             const WheelRow& row = jc.row.wheel;
-            return row.enableLimit ? limitSide(sliderFrame(jc, row.axisA, sA, sB).translation, row.lower, row.upper)
-                                   : 0;
+            return slider(row.axisA, row.enableLimit, row.lower, row.upper);
         }
-        case JointType::distance: return distanceLimitReached(jc, sA, sB);
-        default: return 0;
+        case JointType::distance: return distanceLimitCoordinate(jc, sA, sB, out);
+        default: return false;
     }
 }
 
 namespace {
+
+/// How close to a revolute joint's angle limit the tree starts to hold it
+/// (2°, Box2D's angular slop); sliders' and distance joints' limits use
+/// kLinearSlop.
+constexpr float kAngularLimitSlop = 2.0f / 180.0f * 3.14159265f;
 
 /// The row a limit the tree holds takes (JointConstraint::treeLimit): after
 /// the joint's equality rows; −1 when none is held.
@@ -392,9 +401,28 @@ void factor(const WorldState& w, SolverArrays& s, JointTrees& t, double gammaSca
         BodyState& sA = jc.a >= 0 ? s.states[static_cast<std::size_t>(jc.a)] : zero;
         BodyState& sB = jc.b >= 0 ? s.states[static_cast<std::size_t>(jc.b)] : zero;
         // A limit reached is held with the tree (an active set: a limit that
-        // pulls is let go until the positions change, solveJointTrees).
+        // pulls is let go until the positions change, solveJointTrees), and
+        // so is one within a slop of it, with the gap as the row's
+        // speculative target, J v = −C/h: the approach that closes it within
+        // the substep, as the limit's own sweep row allows. Held only once
+        // reached, a limit was passed by up to a substep's travel first
+        // (0.004 rad in the 90:1 pair of test_joint_tree.cpp, 0.042 at one
+        // substep; a rope 9 mm) and pushed back from there. Judged by the
+        // rate now instead, the hold came too late: by the time the tree is
+        // factored, the joint's own limit row has stopped the light body
+        // and the rate reads zero.
         if (newPositions) jc.limitReleased = false;
-        jc.treeLimit = static_cast<std::int8_t>(jc.limitReleased ? 0 : limitReached(jc, sA, sB));
+        jc.treeLimit = 0;
+        node.speculative = false;
+        if (LimitCoordinate c; !jc.limitReleased && limitCoordinate(jc, sA, sB, c)) {
+            int side = limitSide(c.value, c.lower, c.upper);
+            if (side == 0) {
+                const float slop = jc.type == JointType::revolute ? kAngularLimitSlop : kLinearSlop;
+                side = limitSide(c.value, c.lower + slop, c.upper - slop);
+                node.speculative = side != 0;
+            }
+            jc.treeLimit = static_cast<std::int8_t>(side);
+        }
         // A slider's or a rope's limit is left to its sweep row while a body
         // of the joint touches something: held rigid by the tree, a light
         // body between a heavy one and the ground was pressed 6.5 cm into
@@ -406,6 +434,7 @@ void factor(const WorldState& w, SolverArrays& s, JointTrees& t, double gammaSca
             const Joint& joint = w.joints[jc.joint];
             if (touchesThroughContact(w, joint.bodyA) || touchesThroughContact(w, joint.bodyB)) jc.treeLimit = 0;
         }
+        node.speculative = node.speculative && jc.treeLimit != 0;
         t.holdsLimits = t.holdsLimits || jc.treeLimit != 0;
         EqualityRows& rows = node.rows;
         equalityRows(jc, sA, sB, rows);
@@ -480,7 +509,7 @@ void factor(const WorldState& w, SolverArrays& s, JointTrees& t, double gammaSca
 namespace {
 
 /// One exact solve of the trees with the factorization in `t`.
-void solveFactored(SolverArrays& s, JointTrees& t, const RowBias& rb) {
+void solveFactored(SolverArrays& s, JointTrees& t, const RowBias& rb, float invH) {
     std::vector<TreeNode>& nodes = t.nodes;
     BodyState& zero = s.states.back();
 
@@ -500,7 +529,9 @@ void solveFactored(SolverArrays& s, JointTrees& t, const RowBias& rb) {
                               double(rows.jB[r][1]) * sB.v.y + double(rows.jB[r][2]) * sB.w;
             const double gl = node.compliance[r][0] * lambda[0] + node.compliance[r][1] * lambda[1] +
                               node.compliance[r][2] * lambda[2];
-            node.rhs[r] = -(jv + double(rb.bias) * rows.error[r] + gl);
+            // A held limit not reached yet closes its gap within the substep.
+            const double bias = node.speculative && r == heldLimitRow(jc) ? double(invH) : double(rb.bias);
+            node.rhs[r] = -(jv + bias * rows.error[r] + gl);
         }
     }
     // Forward: y_i = D_i⁻¹ r̂_i, r̂_parent −= B_iᵀ y_i.
@@ -569,7 +600,7 @@ void solveJointTrees(WorldState& w, const JointContext& ctx, int positions) {
         t.factoredSoft = soft;
     }
     if (!t.holdsLimits) {
-        solveFactored(s, t, rb);
+        solveFactored(s, t, rb, ctx.invH);
         return;
     }
     // An active set: a limit held as an equality may come out pulling (the
@@ -587,7 +618,7 @@ void solveJointTrees(WorldState& w, const JointContext& ctx, int positions) {
             saved.push_back(s.states[static_cast<std::size_t>(node.body)]);
     }
     for (int attempt = 0;; ++attempt) {
-        solveFactored(s, t, rb);
+        solveFactored(s, t, rb, ctx.invH);
         if (attempt == 2 || !releasePullingLimits(s, t)) break;
         std::size_t body = 0, joint = 0;
         for (const TreeNode& node : t.nodes) {

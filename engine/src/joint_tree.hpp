@@ -25,6 +25,7 @@ struct TreeNode {
     double rhs[3];               ///< right-hand side, then the solution
     double compliance[3][3];     ///< joint node: Γ of its rows in the factored pass
     float mask[3];               ///< body node: 1 for a degree of freedom it has (non-zero inverse mass or inertia)
+    bool speculative;            ///< joint node: its held limit is not reached yet (its target closes the gap)
     EqualityRows rows;           ///< joint node: its rows at the factored positions
 };
 

@@ -153,13 +153,12 @@ void solveRevoluteJoint(JointConstraint& jc, const JointContext& ctx, BodyState&
     }
 }
 
-int revoluteLimitReached(const JointConstraint& jc, const BodyState& sA, const BodyState& sB) {
+bool revoluteLimitCoordinate(const JointConstraint& jc, const BodyState& sA, const BodyState& sB,
+                             LimitCoordinate& out) {
     const RevoluteRow& row = jc.row.revolute;
-    if (!row.enableLimit || !(jc.invIA + jc.invIB > 0.0f)) return 0;
-    const float angle = unwindAngle(relativeAngle(jc, sA, sB) - row.referenceAngle);
-    if (angle <= row.lowerAngle) return -1;
-    if (angle >= row.upperAngle) return 1;
-    return 0;
+    if (!row.enableLimit || !(jc.invIA + jc.invIB > 0.0f)) return false;
+    out = {unwindAngle(relativeAngle(jc, sA, sB) - row.referenceAngle), sB.w - sA.w, row.lowerAngle, row.upperAngle};
+    return true;
 }
 
 void revoluteEqualityRows(const JointConstraint& jc, const BodyState& sA, const BodyState& sB, EqualityRows& rows) {
