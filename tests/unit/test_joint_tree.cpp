@@ -437,6 +437,20 @@ struct CartAndLoad {
         const float gap = distance(loadAnchor, world.position(cart));
         return rope ? gap - length(kOffset) : gap;
     }
+    struct Outcome {
+        double start, peak;  ///< energy (J)
+        float worstError;    ///< jointError's largest
+    };
+    /// 10 s at 60 Hz.
+    Outcome run(bool rope) {
+        Outcome o{energy(), energy(), 0.0f};
+        for (int i = 0; i < 600; ++i) {
+            world.step(1.0f / 60.0f);
+            o.peak = std::max(o.peak, energy());
+            o.worstError = std::max(o.worstError, jointError(rope));
+        }
+        return o;
+    }
 };
 
 }  // namespace
@@ -446,14 +460,7 @@ struct CartAndLoad {
 TEST(JointTree, ASliderCarryingAHeavyLoadHoldsItsHinge) {
     constexpr float kRatio = 300.0f;
     CartAndLoad s(kRatio, false, 4);
-    const double start = s.energy();
-    double peak = start;
-    float opening = 0.0f;
-    for (int i = 0; i < 600; ++i) {
-        s.world.step(1.0f / 60.0f);
-        peak = std::max(peak, s.energy());
-        opening = std::max(opening, s.jointError(false));
-    }
+    const auto [start, peak, opening] = s.run(false);
     std::printf("[figure] slider carrying a %g:1 load: hinge opened at most %.4f m\n", double(kRatio), double(opening));
     // The tree's rows are soft with the joints' frequency ω = 2π·60 Hz against
     // the row's own mass, the cart's: a load F sags them by F/(m_cart·ω²). The
@@ -470,22 +477,15 @@ TEST(JointTree, ASliderCarryingAHeavyLoadHoldsItsHinge) {
 TEST(JointTree, ARopeFromALightSliderHoldsAHeavyLoad) {
     for (int substeps : {4, 1}) {
         CartAndLoad s(300.0f, true, substeps);
-        const double start = s.energy();
-        double peak = start;
-        float stretch = 0.0f;
-        for (int i = 0; i < 600; ++i) {
-            s.world.step(1.0f / 60.0f);
-            peak = std::max(peak, s.energy());
-            stretch = std::max(stretch, s.jointError(true));
-        }
+        const auto [start, peak, stretch] = s.run(true);
         std::printf("[figure] rope from a light slider, %d substeps: stretched at most %.4f m\n", substeps,
                     double(stretch));
         // A limit is held from the substep in which it is reached or nears
-        // (5 mm): the load can pass it by one substep's travel at most, at the speed of a fall
-        // from its start to the lowest the rope lets it reach (0.3 + 1.53 m),
-        // √(2·g·1.83) = 6.05 m/s. (Measured 0.1 cm at 4 substeps and 1.4 cm at
-        // one, the tree holding the rope from 5 mm before it is taut; 15 and
-        // 98 cm swept.)
+        // (5 mm): the load can pass it by one substep's travel at most, at
+        // the speed of a fall from its start to the lowest the rope lets it
+        // reach (0.3 + 1.53 m), √(2·g·1.83) = 6.05 m/s. (Measured 0.1 cm at 4
+        // substeps and 1.4 cm at one, the tree holding the rope from 5 mm
+        // before it is taut; 15 and 98 cm swept.)
         const float h = 1.0f / (60.0f * substeps);
         EXPECT_LT(stretch, std::sqrt(2.0f * 10.0f * 1.83f) * h) << substeps << " substeps";
         EXPECT_LE(peak - start, 0.01 * std::abs(start)) << substeps << " substeps";
