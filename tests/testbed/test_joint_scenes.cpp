@@ -19,7 +19,7 @@ namespace {
 const std::string kAssets = TB_TEST_ASSETS_DIR;
 
 const std::vector<std::string> kJointScenes = {"ragdoll", "car",        "chain_swing", "slider_crank", "gears",
-                                               "pulley",  "joint_grid", "heavy_chain", "bridge"};
+                                               "pulley",  "joint_grid", "heavy_chain", "bridge",       "crane"};
 
 bool hasNote(const tb::Simulation& sim, const std::string& part) {
     return std::any_of(sim.notes().begin(), sim.notes().end(),
@@ -57,6 +57,10 @@ TEST(JointScenes, UseTheJointTypesTheirNamesPromise) {
     EXPECT_EQ(count(crank, JT::prismatic), 1);
     EXPECT_GE(count(tb::loadSceneDesc("gears", kAssets), JT::gear), 2);
     EXPECT_EQ(count(tb::loadSceneDesc("pulley", kAssets), JT::pulley), 1);
+    const tb::SceneDesc crane = tb::loadSceneDesc("crane", kAssets);
+    EXPECT_EQ(count(crane, JT::prismatic), 1);
+    EXPECT_EQ(count(crane, JT::distance), 1);
+    EXPECT_EQ(count(crane, JT::revolute), 1);
     for (const char* name : {"joint_grid", "heavy_chain", "bridge"}) {
         const tb::SceneDesc d = tb::loadSceneDesc(name, kAssets);
         EXPECT_EQ(count(d, JT::revolute), static_cast<long>(d.joints.size())) << name;
