@@ -385,7 +385,8 @@ void pushJoints(WorldState& w, const JointContext& ctx, bool deepOnly) {
                 // motors and drives are velocity effects and do not push.
                 JointConstraint row = jc;
                 row.impulses = JointImpulses{};
-                row.inTree = false;  // the push sweeps every row
+                row.inTree = false;  // the push sweeps every row,
+                row.treeLimit = 0;   // limits too
                 switch (jc.type) {
                     case JointType::revolute:
                         row.row.revolute.enableMotor = row.row.revolute.enableSpring = false;

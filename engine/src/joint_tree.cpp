@@ -52,7 +52,7 @@ int equalityRowCount(const Joint& joint) {
         }
         case JointType::distance: {
             // A rope or a spring with limits hands over a limit while it
-            // holds it (treeLimitOnly in joint_solver.cpp).
+            // holds it (rowsOnlyAtLimit).
             const DistanceJointDef& def = std::get<DistanceJointDef>(joint.def);
             return isRigidDistance(def) || (def.enableLimit && def.minLength < def.maxLength) ? 1 : 0;
         }
@@ -131,8 +131,9 @@ void readImpulse(const JointConstraint& jc, double out[3]) {
         case JointType::wheel: out[0] = acc.axial; break;  // the perpendicular
         default: break;
     }
-    // A limit the tree holds, along its joint's free direction (ω_B − ω_A, or
-    // B's motion along the axis): the lower pushes that way, the upper against.
+    // A limit the tree holds, along its joint's free direction (ω_B − ω_A,
+    // B's motion along the axis or along the rope): the lower pushes that
+    // way, the upper against.
     if (const int r = heldLimitRow(jc); r >= 0) out[r] = acc.lower - acc.upper;
 }
 
@@ -416,9 +417,10 @@ void factor(const WorldState& w, SolverArrays& s, JointTrees& t, double gammaSca
         node.speculative = false;
         if (LimitCoordinate c; !jc.limitReleased && limitCoordinate(jc, sA, sB, c)) {
             int side = limitSide(c.value, c.lower, c.upper);
-            if (side == 0) {
+            if (side == 0) {  // (then lower < value < upper) the nearer bound, if within the slop
                 const float slop = jc.type == JointType::revolute ? kAngularLimitSlop : kLinearSlop;
-                side = limitSide(c.value, c.lower + slop, c.upper - slop);
+                const float toLower = c.value - c.lower, toUpper = c.upper - c.value;
+                if (std::min(toLower, toUpper) <= slop) side = toLower <= toUpper ? -1 : 1;
                 node.speculative = side != 0;
             }
             jc.treeLimit = static_cast<std::int8_t>(side);
