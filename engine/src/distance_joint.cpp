@@ -119,9 +119,7 @@ bool distanceLimitCoordinate(const JointConstraint& jc, const BodyState& sA, con
                              LimitCoordinate& out) {
     const DistanceRow& row = jc.row.distance;
     if (row.rigid || !row.enableLimit || !(row.minLength < row.maxLength)) return false;
-    const JointFrame f = currentFrame(jc, sA, sB);
-    const Vec2 dv = (sB.v + cross(sB.w, f.rB)) - (sA.v + cross(sA.w, f.rA));
-    out = {f.length, dot(dv, f.axis), row.minLength, row.maxLength};
+    out = {currentFrame(jc, sA, sB).length, row.minLength, row.maxLength};
     return true;
 }
 

@@ -191,10 +191,9 @@ inline void sliderRow(Vec2 dir, float armA, float armB, float error, int r, Equa
     rows.error[r] = error;
 }
 /// A joint's limited coordinate now (a revolute joint's angle, a slider's
-/// translation, a distance joint's length), its rate along the limit rows'
-/// direction (J v) and its bounds.
+/// translation, a distance joint's length) and its bounds.
 struct LimitCoordinate {
-    float value = 0.0f, rate = 0.0f, lower = 0.0f, upper = 0.0f;
+    float value = 0.0f, lower = 0.0f, upper = 0.0f;
 };
 /// −1 when `value` is at or below `lower`, +1 at or above `upper`, else 0.
 inline int limitSide(float value, float lower, float upper) {
@@ -247,7 +246,8 @@ inline float axialMass(const JointConstraint& jc, const SliderFrame& f) {
 /// point, the rigid weld's point and angle, the rigid distance joint's length,
 /// the prismatic joint's perpendicular and angle, the wheel joint's
 /// perpendicular, the limited distance joint's limit while held (its rows
-/// count 1, handed over only then); 0 rows for every other joint (its rows stay in the Gauss-Seidel sweep).
+/// count 1, handed over only then); 0 rows for every other joint (its rows
+/// stay in the Gauss-Seidel sweep).
 /// Each type's part is in its own file; the dispatch is in joint_tree.cpp.
 int equalityRowCount(const Joint& joint);
 /// Whether those rows are a limit's, handed over only while it holds (a rope,
@@ -271,7 +271,6 @@ inline void pointRows(Vec2 rA, Vec2 rB, Vec2 separation, EqualityRows& rows) {
     rows.error[1] = separation.y;
 }
 void revoluteEqualityRows(const JointConstraint& jc, const BodyState& sA, const BodyState& sB, EqualityRows& rows);
-/// A revolute joint's limit at or beyond its angle now: −1 the lower, +1 the upper, 0 neither (or none).
 /// The limited angle of a revolute joint with a limit and a side that turns (false otherwise).
 bool revoluteLimitCoordinate(const JointConstraint& jc, const BodyState& sA, const BodyState& sB, LimitCoordinate& out);
 void weldEqualityRows(const JointConstraint& jc, const BodyState& sA, const BodyState& sB, EqualityRows& rows);

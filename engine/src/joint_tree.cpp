@@ -76,8 +76,7 @@ void equalityRows(const JointConstraint& jc, const BodyState& sA, const BodyStat
 bool limitCoordinate(const JointConstraint& jc, const BodyState& sA, const BodyState& sB, LimitCoordinate& out) {
     auto slider = [&](Vec2 axisA, bool enabled, float lower, float upper) {
         if (!enabled) return false;
-        const SliderFrame f = sliderFrame(jc, axisA, sA, sB);
-        out = {f.translation, axialSpeed(f, sA, sB), lower, upper};
+        out = {sliderFrame(jc, axisA, sA, sB).translation, lower, upper};
         return true;
     };
     switch (jc.type) {
@@ -160,13 +159,6 @@ void addImpulse(JointConstraint& jc, const double delta[3]) {
         if (jc.treeLimit < 0) acc.lower += static_cast<float>(delta[r]);
         if (jc.treeLimit > 0) acc.upper -= static_cast<float>(delta[r]);
     }
-}
-
-/// Whether row r acts on nothing (cleared in factor).
-bool rowIsMoot(const EqualityRows& rows, int r) {
-    for (int d = 0; d < 3; ++d)
-        if (rows.jA[r][d] != 0.0f || rows.jB[r][d] != 0.0f) return false;
-    return true;
 }
 
 using Block = double[3][3];
@@ -447,11 +439,13 @@ void factor(const WorldState& w, SolverArrays& s, JointTrees& t, double gammaSca
         // A row no body can act on (an angle row between bodies that do not
         // turn): moot, as in the joint's own sweep. Left in, its zero pivot
         // made the whole joint's block singular and dropped every row of it.
+        bool moot[3] = {false, false, false};
         for (int r = 0; r < n; ++r) {
             double k = 0.0;
             for (int d = 0; d < 3; ++d)
                 k += double(rows.jA[r][d]) * invA[d] * rows.jA[r][d] + double(rows.jB[r][d]) * invB[d] * rows.jB[r][d];
             if (k > 0.0) continue;
+            moot[r] = true;
             for (int d = 0; d < 3; ++d) rows.jA[r][d] = rows.jB[r][d] = 0.0f;
             rows.error[r] = 0.0f;
         }
@@ -473,7 +467,7 @@ void factor(const WorldState& w, SolverArrays& s, JointTrees& t, double gammaSca
                 node.diag[r][c] = -g * k;
             }
         for (int r = 0; r < 3; ++r)  // unused and moot rows: x = 0
-            if (r >= n || rowIsMoot(rows, r)) node.diag[r][r] = -1.0;
+            if (r >= n || moot[r]) node.diag[r][r] = -1.0;
         // The links: this joint's to its parent body, and each child body's to this joint.
         for (int side = 0; side < 2; ++side) {
             const int bodyNode = side == 0 ? node.nodeA : node.nodeB;

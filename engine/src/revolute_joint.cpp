@@ -157,7 +157,7 @@ bool revoluteLimitCoordinate(const JointConstraint& jc, const BodyState& sA, con
                              LimitCoordinate& out) {
     const RevoluteRow& row = jc.row.revolute;
     if (!row.enableLimit || !(jc.invIA + jc.invIB > 0.0f)) return false;
-    out = {unwindAngle(relativeAngle(jc, sA, sB) - row.referenceAngle), sB.w - sA.w, row.lowerAngle, row.upperAngle};
+    out = {unwindAngle(relativeAngle(jc, sA, sB) - row.referenceAngle), row.lowerAngle, row.upperAngle};
     return true;
 }
 
