@@ -105,8 +105,9 @@ namespace {
 /// workers (WorldState::runner): they touch no movable body twice. A colour's
 /// blocks are its two row groups (kWideGroupsPerColour) one after the other;
 /// `blocks(b, e, points)` gets each chunk split where the one-point group starts.
+/// `backward`: the colours last to first (SolverArrays::sweepBackward).
 template <class F>
-void forEachWideColour(WorldState& w, F&& blocks) {
+void forEachWideColour(WorldState& w, bool backward, F&& blocks) {
     // Blocks per chunk a worker claims. Each worker takes its own share of a
     // colour first (stage_runner.hpp), so only chunks taken from another's
     // share write bodies that other worker also writes; 32 balanced the
@@ -115,7 +116,9 @@ void forEachWideColour(WorldState& w, F&& blocks) {
     // slower than 64 (3.4 against 2.7 ms of solve).
     constexpr int kBlockGrain = 32;
     const std::vector<int>& start = w.solver.wideContactColourStart;
-    for (std::size_t g = 0; g + kWideGroupsPerColour < start.size(); g += kWideGroupsPerColour) {
+    const std::size_t colours = (start.size() - 1) / kWideGroupsPerColour;
+    for (std::size_t c = 0; c < colours; ++c) {
+        const std::size_t g = (backward ? colours - 1 - c : c) * kWideGroupsPerColour;
         const int first = start[g], single = start[g + 1], count = start[g + 2] - first;
         if (count == 0) continue;
         auto range = [&](int b, int e) {
@@ -217,7 +220,7 @@ void warmStartContacts(WorldState& w) {
     // left to the scalar sweep.
     int first = 0;
     if (s.wideContactsActive) {
-        forEachWideColour(w, [&](int b, int e, int points) { warmStartWideContacts(s, b, e, points); });
+        forEachWideColour(w, false, [&](int b, int e, int points) { warmStartWideContacts(s, b, e, points); });
         first = s.contactOverflowStart;
     }
     BodyState* states = s.states.data();
@@ -323,7 +326,7 @@ inline void solvePointPair(ContactConstraint& cc, const RowMasses& m, const Poin
 /// One Gauss-Seidel sweep over the contacts, compiled once per pass so the
 /// per-point branches on it fold away.
 template <SolvePass passKind>
-void solveContactsFor(WorldState& w, float h, std::size_t first) {
+void solveContactsFor(WorldState& w, float h, std::size_t first, bool backward) {
     const WorldSettings& set = w.settings;
     const float invH = 1.0f / h;
     const float slop = set.penetrationSlop;
@@ -335,8 +338,9 @@ void solveContactsFor(WorldState& w, float h, std::size_t first) {
     const bool leaveImpacts = passKind == SolvePass::soft_relax_last && set.impactModel == ImpactModel::closed_form;
     const float impactSpeed = set.impactThreshold;
     BodyState* states = w.solver.states.data();
-    for (std::size_t r = first; r < w.solver.constraints.size(); ++r) {
-        ContactConstraint& cc = w.solver.constraints[r];
+    const std::size_t end = w.solver.constraints.size();
+    for (std::size_t k = first; k < end; ++k) {
+        ContactConstraint& cc = w.solver.constraints[backward ? end - 1 - (k - first) : k];
         BodyState& sA = states[cc.a];
         BodyState& sB = states[cc.b];
         Vec2 vA = sA.v, vB = sB.v;
@@ -434,26 +438,35 @@ void solveContactsFor(WorldState& w, float h, std::size_t first) {
 void solveContacts(WorldState& w, float h, SolvePass target) {
     SolverArrays& s = w.solver;
     // The coloured groups four at a time (soft_step only), then the rows left
-    // to the scalar sweep; the same order as sweeping every row here.
+    // to the scalar sweep; the same order as sweeping every row here. Every
+    // other step the sweep runs backward, the scalar rows (last to first)
+    // before the colours (last to first): SolverArrays::sweepBackward.
+    const bool backward = s.sweepBackward;
     std::size_t first = 0;
+    auto scalarRows = [&] {
+        switch (target) {
+            case SolvePass::soft_bias: solveContactsFor<SolvePass::soft_bias>(w, h, first, backward); break;
+            case SolvePass::soft_relax: solveContactsFor<SolvePass::soft_relax>(w, h, first, backward); break;
+            case SolvePass::soft_relax_last: solveContactsFor<SolvePass::soft_relax_last>(w, h, first, backward); break;
+            case SolvePass::baumgarte: solveContactsFor<SolvePass::baumgarte>(w, h, first, backward); break;
+            case SolvePass::no_push: solveContactsFor<SolvePass::no_push>(w, h, first, backward); break;
+        }
+    };
     if (s.wideContactsActive) {
+        first = static_cast<std::size_t>(s.contactOverflowStart);
+        if (backward) scalarRows();
         const bool leaveImpacts = target == SolvePass::soft_relax_last &&
                                   w.settings.impactModel == ImpactModel::closed_form;
         const float impactSpeed = w.settings.impactThreshold;
         const bool trackMax = !s.wideContactsOnly;
         const RowContext x = makeRowContext(w, h, true);
         const float maxPush = w.settings.maxPushSpeed;
-        forEachWideColour(w, [&](int b, int e, int points) {
+        forEachWideColour(w, backward, [&](int b, int e, int points) {
             solveWideContacts(s, x, maxPush, target, h, leaveImpacts, impactSpeed, b, e, trackMax, points);
         });
-        first = static_cast<std::size_t>(s.contactOverflowStart);
-    }
-    switch (target) {
-        case SolvePass::soft_bias: solveContactsFor<SolvePass::soft_bias>(w, h, first); break;
-        case SolvePass::soft_relax: solveContactsFor<SolvePass::soft_relax>(w, h, first); break;
-        case SolvePass::soft_relax_last: solveContactsFor<SolvePass::soft_relax_last>(w, h, first); break;
-        case SolvePass::baumgarte: solveContactsFor<SolvePass::baumgarte>(w, h, first); break;
-        case SolvePass::no_push: solveContactsFor<SolvePass::no_push>(w, h, first); break;
+        if (!backward) scalarRows();
+    } else {
+        scalarRows();
     }
     if (!w.solver.rolling.empty()) solveRollingResistance(w);
 }

@@ -105,6 +105,11 @@ struct SolverArrays {
     std::vector<int> wideContactColourStart;  ///< per row group: its first block; then the block count
     std::vector<int> wideBlockRows;           ///< per block: its first row and its group's end
     int contactOverflowStart = 0;             ///< the first row of the scalar rest (the overflow group)
+    /// This step sweeps the contact rows last to first (colour by colour,
+    /// the overflow group's rows in reverse too): every other step, so the
+    /// order of a Gauss-Seidel sweep leans no stack the same way each step
+    /// (contact_solver.cpp, sweepBackward).
+    bool sweepBackward = false;
 };
 
 /// limitSpeed for a velocity faster than maxSpeed (or not finite).

@@ -386,5 +386,43 @@ TEST(HardCases, RollingDiscKeepsItsHeight) {
         }
 }
 
+// Pyramids settle without leaning (the hard-cases issue, item 4: pyramid100's
+// top within 5 cm sideways). A mirror-symmetric pyramid has no sideways
+// force; any sway is the order in which one Gauss-Seidel sweep meets the
+// rows: the rows met first take the larger share of each change in load, the
+// same way every step, and the whole pyramid leaned and rocked on its
+// compliant contacts. Measured at the defaults, sleeping off, over the first
+// 10 s: pyramid100 (base 100, 1 m boxes) swayed 9.2 cm, a base-60 pyramid of
+// 0.5 m boxes 4.2 cm. Swept backward every other step (solver.cpp,
+// sweepBackward): 0.5 cm and 0.4 cm. The bound is the issue's 5 cm for boxes
+// of 1 m, in proportion for the smaller ones (the same lean angle).
+TEST(HardCases, PyramidsSettleWithoutLeaning) {
+    struct Case {
+        int base;
+        float halfExtent;
+    };
+    for (const Case c : {Case{100, 0.5f}, Case{60, 0.25f}}) {
+        World world({.enableSleep = false});
+        test::makeGround(world, 2.0f * c.halfExtent * static_cast<float>(c.base));
+        const float size = 2.0f * c.halfExtent;
+        BodyId top;
+        for (int row = 0; row < c.base; ++row) {
+            const int n = c.base - row;
+            for (int i = 0; i < n; ++i) {
+                const float x = size * (static_cast<float>(i) - 0.5f * static_cast<float>(n - 1));
+                top = test::makeBox(world, {x, c.halfExtent + size * static_cast<float>(row)}, c.halfExtent);
+            }
+        }
+        float sway = 0.0f;
+        for (int i = 0; i < 10 * 60; ++i) {
+            world.step(kDt);
+            sway = std::max(sway, std::abs(world.position(top).x));
+        }
+        std::printf("[figure] pyramid of base %d, boxes %.1f m, 10 s: top sway %.4f m\n", c.base, size, sway);
+        EXPECT_TRUE(allFinite(world));
+        EXPECT_LT(sway, 0.05f * size) << "base " << c.base;
+    }
+}
+
 }  // namespace
 }  // namespace i2d

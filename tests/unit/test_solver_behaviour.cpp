@@ -54,10 +54,15 @@ TEST(SolverBehaviour, TenBoxStackStandsFor60s) {
 
 TEST(SolverBehaviour, PyramidSettlesWithoutSwaying) {
     // A pyramid of base 50 (1275 boxes) settles by its contacts' compliance;
-    // the settling must be symmetric. Solving the contacts in creation order
-    // (left to right, bottom to top) carried each sweep's error one way and
-    // the top box swayed 9 cm within 5 s and ended 6 cm off centre; solved
-    // colour by colour it sways about 2 cm and ends within 2 mm.
+    // the settling must be symmetric: no force in a mirror-symmetric pyramid
+    // points sideways, so any sway is the solver's. Solving the contacts in
+    // creation order (left to right, bottom to top) carried each sweep's
+    // error one way and the top box swayed 9 cm within 5 s and ended 6 cm off
+    // centre. Solved colour by colour, always in the same order, the rows met
+    // first still took the larger share of each change in load, the same way
+    // every step: 1.8 cm of sway, ending 6 mm off centre. Swept backward every
+    // other step (solver.cpp, sweepBackward) the two orders' leans cancel:
+    // 3 mm, ending within 2 mm. The bounds sit between the two.
     World world({.enableSleep = false});
     test::makeGround(world, 60.0f);
     const int base = 50;
@@ -74,8 +79,10 @@ TEST(SolverBehaviour, PyramidSettlesWithoutSwaying) {
         world.step(kDt);
         sway = std::max(sway, std::abs(world.position(top).x));
     }
-    EXPECT_LT(sway, 0.04f);
-    EXPECT_LT(std::abs(world.position(top).x), 0.01f);
+    std::printf("[figure] pyramid of base 50, 5 s: top sway %.4f m, ends %.4f m off centre\n", sway,
+                world.position(top).x);
+    EXPECT_LT(sway, 0.01f);
+    EXPECT_LT(std::abs(world.position(top).x), 0.004f);
 }
 
 TEST(SolverBehaviour, ChainHoldsAHundredTimesHeavierWeight) {
