@@ -55,6 +55,8 @@ std::string reportToJson(const RunReport& r) {
                          {"velocity_iterations", s.velocityIterations},
                          {"position_iterations", s.positionIterations},
                          {"substeps", s.substeps},
+                         {"contact_hertz", s.contactHertz},
+                         {"contact_damping_ratio", s.contactDampingRatio},
                          {"sleep", s.enableSleep}};
     }
     j["notes"] = r.notes;

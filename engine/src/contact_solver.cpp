@@ -48,11 +48,14 @@ RowContext makeRowContext(const WorldState& w, float h, bool soft) {
     RowContext x;
     x.zeroState = static_cast<int>(w.solver.states.size()) - 1;
     const float rate = 1.0f / h;
-    // Capped at an eighth of the substep rate (Box2D v3's cap): 30 Hz at the
-    // default 240 Hz substeps. At a quarter, one substep at 60 Hz gave 15 Hz
-    // contacts whose release threw a 100-row pyramid's top 2 m above where it
-    // started (+2 % energy; tests/testbed/test_energy_audit.cpp).
-    const float hertz = std::min(set.contactHertz, 0.125f * rate);
+    // Capped at a quarter of the substep rate, as the joints are: 60 Hz at
+    // the default 240 Hz substeps, 15 Hz at one substep of 60 Hz. (It was an
+    // eighth while the sweep ran in one direction: then 15 Hz contacts let a
+    // sagging 100-row pyramid go and threw its top 2 m up, +2 % energy;
+    // tests/testbed/test_energy_audit.cpp runs it.) A row stiffer than about
+    // 50 Hz at 240 Hz substeps rocks a pyramid: docs/validation.md, "The
+    // pyramid's compliance".
+    const float hertz = std::min(set.contactHertz, 0.25f * rate);
     x.dynamicSoft = makeSoft(hertz, set.contactDampingRatio, h);
     // Against an immovable body only one side gives: stiffen (Solver2D doubles the hertz).
     x.staticSoft = makeSoft(2.0f * hertz, set.contactDampingRatio, h);

@@ -15,6 +15,9 @@ const char* settingsOptionsHelp() {
            "  --manifold-reuse D        manifold reuse distance (m); 0 recomputes every manifold every step\n"
            "  --exact-joint-mass-ratio R  joint trees whose heaviest body is at least R times the lightest\n"
            "                            are solved exactly (1: every tree; 1e30: none)\n"
+           "  --contact-hertz F         contact stiffness (Hz, soft_step; capped at a quarter of the substep rate)\n"
+           "  --contact-damping-ratio Z contact damping ratio (soft_step); an overlap is pushed out at about\n"
+           "                            2π·F/(2·Z) per second, so raising both keeps that push and stiffens the rest\n"
            "  --threads N               workers the Impulse2D world steps on (default 1; the results are\n"
            "                            bit-identical for any N); Box2D 2.4.1 runs on one\n";
 }
@@ -28,6 +31,8 @@ void SettingsOverrides::applyTo(i2d::WorldSettings& s) const {
     if (sleep) s.enableSleep = *sleep;
     if (manifoldReuse) s.manifoldReuseDistance = *manifoldReuse;
     if (exactJointMassRatio) s.exactJointMassRatio = *exactJointMassRatio;
+    if (contactHertz) s.contactHertz = *contactHertz;
+    if (contactDampingRatio) s.contactDampingRatio = *contactDampingRatio;
 }
 
 void SettingsOverrides::applyTo(SceneDesc& desc) const {
@@ -57,6 +62,10 @@ bool parseSettingsOption(ArgReader& r, SettingsOverrides& o) {
         o.manifoldReuse = static_cast<float>(r.number(0.0, 10.0));
     } else if (r.is("--exact-joint-mass-ratio")) {
         o.exactJointMassRatio = static_cast<float>(r.number(1.0, 1.0e30));
+    } else if (r.is("--contact-hertz")) {
+        o.contactHertz = static_cast<float>(r.number(0.0, 1.0e6));
+    } else if (r.is("--contact-damping-ratio")) {
+        o.contactDampingRatio = static_cast<float>(r.number(0.0, 1.0e6));
     } else if (r.is("--threads")) {
         o.threads = static_cast<int>(r.integer(1, 64));
     } else if (r.is("--sleep")) {

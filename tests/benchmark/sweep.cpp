@@ -762,8 +762,8 @@ void writeMarkdown(const std::vector<SceneResult>& results, const std::vector<Sc
 
     md << "**Settings swept.** Impulse2D: its defaults (the scene's settings: `soft_step`, 4 substeps, contact 30 Hz, "
           "joints 60 Hz, closed-form impacts); `soft_step` with 1, 2, 3, 4, 6, 8, 12, 16, 24, 32 substeps, with contact "
-          "and joint stiffness ×2 (\"x2 Hz\") at 4, 8, 16 substeps and ×4 at 8, 16, 32 (the engine caps contact hertz "
-          "at an eighth of the substep rate, so ×2 at 4 substeps stays at 30 Hz, and joint hertz at a quarter), and with the velocity-bias impact model "
+          "and joint stiffness ×2 (\"x2 Hz\") at 4, 8, 16 substeps and ×4 at 8, 16, 32 (the engine caps contact and "
+          "joint hertz at a quarter of the substep rate), and with the velocity-bias impact model "
           "(\"vbias\") at 1, 4, 8 substeps; `baumgarte` with 1, 2, 4, 8, 16, 32 velocity iterations; `split` with 2/1, "
           "4/2, 8/3, 16/6, 32/10 velocity/position iterations. `soft_step` solves once and relaxes once per substep, so "
           "the iteration counts do not apply to it. Box2D 2.4.1: 1/1, 2/1, 4/2, 8/3, 16/6, 32/10 velocity/position "

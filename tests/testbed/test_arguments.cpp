@@ -133,15 +133,23 @@ TEST(WantsHelp, AnywhereInTheArguments) {
 }
 
 TEST(SettingsOptions, ReadThroughTheReader) {
-    tb::ArgReader r(Args{"--correction", "baumgarte", "--sleep", "off", "--substeps", "3", "--other"});
+    tb::ArgReader r(Args{"--correction", "baumgarte", "--sleep", "off", "--substeps", "3", "--contact-hertz", "50",
+                         "--contact-damping-ratio", "16.7", "--other"});
     tb::SettingsOverrides o;
     int consumed = 0;
     while (r.next())
         if (tb::parseSettingsOption(r, o)) ++consumed;
-    EXPECT_EQ(consumed, 3);
+    EXPECT_EQ(consumed, 5);
     EXPECT_EQ(o.correction, i2d::PositionCorrection::baumgarte);
     EXPECT_EQ(o.sleep, false);
     EXPECT_EQ(o.substeps, 3);
+    i2d::WorldSettings applied;
+    o.applyTo(applied);
+    EXPECT_EQ(applied.contactHertz, 50.0f);
+    EXPECT_EQ(applied.contactDampingRatio, 16.7f);
+    tb::ArgReader negative(Args{"--contact-hertz", "-1"});
+    ASSERT_TRUE(negative.next());
+    EXPECT_EQ(usageMessage([&] { tb::parseSettingsOption(negative, o); }).rfind("--contact-hertz: expected", 0), 0u);
     tb::ArgReader bad(Args{"--substeps", "0"});
     ASSERT_TRUE(bad.next());
     EXPECT_EQ(usageMessage([&] { tb::parseSettingsOption(bad, o); }),

@@ -80,6 +80,18 @@ TEST(RunCommand, JsonHasEveryField) {
     EXPECT_LT(top["vy"].get<double>(), 0.0);
 }
 
+// The contact stiffness options reach the world and the report names them.
+TEST(RunCommand, ContactStiffnessOptionsAreAppliedAndReported) {
+    std::ostringstream out, err;
+    const int rc = tb::runRunCommand({"stack5", "--steps", "2", "--json", "--contact-hertz", "50",
+                                      "--contact-damping-ratio", "16.7", "--assets", kAssets},
+                                     out, err);
+    ASSERT_EQ(rc, 0) << err.str();
+    const nlohmann::json j = nlohmann::json::parse(out.str());
+    EXPECT_FLOAT_EQ(j.at("settings").at("contact_hertz").get<float>(), 50.0f);
+    EXPECT_FLOAT_EQ(j.at("settings").at("contact_damping_ratio").get<float>(), 16.7f);
+}
+
 // `--engine box2d` prints the same report: the same keys at every level, the
 // same body and joint counts, and the notes say what Box2D could not express.
 TEST(RunCommand, Box2DReportHasTheSameFields) {

@@ -76,8 +76,13 @@ struct WorldSettings {
     /// move lifts nothing), up or down at most this.
     float maxPushSpeed = 3.0f;
     /// Contact stiffness (Hz) and damping ratio for soft_step. The stiffness is
-    /// capped at an eighth of the substep rate (30 Hz at 60 Hz × 4 substeps),
-    /// and doubled for contacts with a body that cannot move.
+    /// capped at a quarter of the substep rate (60 Hz at 60 Hz × 4 substeps),
+    /// and doubled for contacts with a body that cannot move. A contact
+    /// carrying a load F sinks F/(m_eff·ω²), ω = 2π·hertz, whatever the
+    /// damping; the overdamped row pushes an overlap out at about ω/(2ζ) per
+    /// second (9 per second at these defaults). So a stiffer stack at the same
+    /// push: 50 Hz with ζ = 16.7 sinks a stack 0.36 times as far
+    /// (docs/validation.md, "The pyramid's compliance").
     float contactHertz = 30.0f;
     float contactDampingRatio = 10.0f;
     /// Joint stiffness (Hz) and damping ratio for the position error of rigid joints in soft_step
