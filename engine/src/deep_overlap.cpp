@@ -354,6 +354,9 @@ void pushDeepOverlaps(WorldState& w, float h) {
     const std::size_t n = s.stateBodies.size();
     for (std::size_t i = 0; i < n; ++i) {
         Vec2& v = s.biasV[i];
+        // A body no deep row pushed (most of a large world) has nothing to
+        // limit, lift or wake.
+        if (v.x == 0.0f && v.y == 0.0f) continue;
         const Vec2 a = s.integration[i].linearAcceleration;
         const float g = length(a);
         Vec2 up{};
