@@ -119,7 +119,7 @@ void forEachWideColour(WorldState& w, bool backward, F&& blocks) {
     // slower than 64 (3.4 against 2.7 ms of solve).
     constexpr int kBlockGrain = 32;
     const std::vector<int>& start = w.solver.wideContactColourStart;
-    const std::size_t colours = (start.size() - 1) / kWideGroupsPerColour;
+    const std::size_t colours = start.empty() ? 0 : (start.size() - 1) / kWideGroupsPerColour;
     for (std::size_t c = 0; c < colours; ++c) {
         const std::size_t g = (backward ? colours - 1 - c : c) * kWideGroupsPerColour;
         const int first = start[g], single = start[g + 1], count = start[g + 2] - first;

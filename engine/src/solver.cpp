@@ -395,11 +395,10 @@ void solve(WorldState& w, float dt) {
     // favours, in every stack, the rows it meets first (they take the larger
     // share of a change in load), the same way each step: pyramid100 leaned
     // and rocked 9 cm, tall_stack50 48 cm; alternating, 0.5 and 8 cm
-    // (docs/validation.md, "The pyramid's compliance"). Not while an overlap
-    // is pushed apart: the deep rows' carried loads (carryDeepLoads) compare
-    // substeps, and across a change of direction 4 of 160 piles of small
-    // boxes created overlapping gained 2 to 9 % (tests/robustness,
-    // OverlapPiles).
+    // (docs/validation.md, "The pyramid's compliance"). Not in a step with an
+    // overlap being pushed apart: alternating there too took 4 of 160 piles
+    // of small boxes created overlapping 2 to 9 % above their starting energy,
+    // and none in one direction (tests/robustness, OverlapPiles).
     s.sweepBackward = (w.stepStamp & 1u) != 0 && !(soft && s.anyDeepOverlap);
     if (soft && s.anyDeepOverlap) {
         prepareDeepOverlaps(w);

@@ -108,7 +108,7 @@ struct SolverArrays {
     /// This step sweeps the contact rows last to first (colour by colour,
     /// the overflow group's rows in reverse too): every other step, so the
     /// order of a Gauss-Seidel sweep leans no stack the same way each step
-    /// (contact_solver.cpp, sweepBackward).
+    /// (set in solver.cpp, read by solveContacts).
     bool sweepBackward = false;
 };
 
