@@ -3,15 +3,16 @@
 // instead of recomputing it from the geometry every step.
 //
 // Why. With soft contacts a column of boxes is a column of springs: each
-// contact compresses by its load / (m_eff·ω²), about 1.4 mm per 10 N at the
-// default 30 Hz. A manifold recomputed from the geometry every step puts its
+// contact compresses by its load / (m_eff·ω²), about 0.5 mm per 10 N at the
+// default 50 Hz (1.4 mm at 30 Hz). A manifold recomputed from the geometry every step puts its
 // points where the faces overlap now, so a box displaced sideways by δ moves
 // the load of everything above towards one point: the gravity moment W·δ of
 // a leaning column (its "P-delta" moment) is fed back into the contact
 // compression, which leans it further. A column of such springs buckles under
 // its own weight once q·L³ > 7.84·EI (Greenhill's self-weight buckling), with
-// EI = 2·k·b² per metre: about 14 boxes of 1 m at 30 Hz. A column of 20
-// therefore fell within 10 s whatever the substep count, and Box2D 2.4.1 and
+// EI = 2·k·b² per metre: about 14 boxes of 1 m at 30 Hz, 20 at the default
+// 50 Hz (L grows as k^(1/3)). A column of 20 at 30 Hz therefore fell within
+// 10 s whatever the substep count, and Box2D 2.4.1 and
 // Box2D v3 with its contact recycling off fall the same way (measured). The
 // first asymmetry that started the lean was the order in which the first
 // step's Gauss-Seidel sweep met a manifold's two points; with the feedback

@@ -737,8 +737,8 @@ const std::map<std::string, std::string>& shortfallNotes() {
          "velocity over the remainder of the substep (time-of-impact), or more substeps."},
         {"pyramid100",
          "Why: the pyramid's error at Impulse2D's default stiffness is mostly sinking by the soft contacts' "
-         "compliance (30 Hz), which more substeps do not remove; the stiffer settings (x2, x4 Hz) remove it at a "
-         "higher cost. What it would take: a cheaper substep, or a stiffer default with the substeps it needs."},
+         "compliance (about 0.3 m at the default 50 Hz, 0.73 m at 30 Hz), which more substeps do not remove; the "
+         "stiffer settings (x2, x4 Hz) remove more of it at a higher cost. What it would take: a cheaper substep."},
         {"tall_stack50",
          "Why: both engines let this stack (0.1 m gaps, ±1 cm offsets, friction 0.3) fall at every setting swept, so "
          "the figure compares how far the debris spreads, not whether it stands."},
@@ -760,8 +760,8 @@ void writeMarkdown(const std::vector<SceneResult>& results, const std::vector<Sc
        << " minutes" << (o.quick ? " (quick mode: one repeat, few points, short runs; for development only)" : "")
        << ".\n\n";
 
-    md << "**Settings swept.** Impulse2D: its defaults (the scene's settings: `soft_step`, 4 substeps, contact 30 Hz, "
-          "joints 60 Hz, closed-form impacts); `soft_step` with 1, 2, 3, 4, 6, 8, 12, 16, 24, 32 substeps, with contact "
+    md << "**Settings swept.** Impulse2D: its defaults (the scene's settings: `soft_step`, 4 substeps, contact 50 Hz "
+          "with damping ratio 25, joints 60 Hz, closed-form impacts); `soft_step` with 1, 2, 3, 4, 6, 8, 12, 16, 24, 32 substeps, with contact "
           "and joint stiffness ×2 (\"x2 Hz\") at 4, 8, 16 substeps and ×4 at 8, 16, 32 (the engine caps contact and "
           "joint hertz at a quarter of the substep rate), and with the velocity-bias impact model "
           "(\"vbias\") at 1, 4, 8 substeps; `baumgarte` with 1, 2, 4, 8, 16, 32 velocity iterations; `split` with 2/1, "

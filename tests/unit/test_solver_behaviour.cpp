@@ -60,9 +60,12 @@ TEST(SolverBehaviour, PyramidSettlesWithoutSwaying) {
     // error one way and the top box swayed 9 cm within 5 s and ended 6 cm off
     // centre. Solved colour by colour, always in the same order, the rows met
     // first still took the larger share of each change in load, the same way
-    // every step: 1.8 cm of sway, ending 6 mm off centre. Swept backward every
-    // other step (solver.cpp, sweepBackward) the two orders' leans cancel:
-    // 3 mm, ending within 2 mm. The bounds sit between the two.
+    // every step: 1.8 cm of sway, ending 6 mm off centre (at 30 Hz). Swept
+    // backward every other step (solver.cpp, sweepBackward) the two orders'
+    // leans cancel: 3 mm, ending within 2 mm. At the default 50 Hz, ζ 25,
+    // stiffer rows carry more of the order's lean: one order 7.7 cm of sway,
+    // ending 5.3 cm off centre; alternated 1.0 cm, ending 5 mm off. The
+    // bounds sit between the two (near their geometric means).
     World world({.enableSleep = false});
     test::makeGround(world, 60.0f);
     const int base = 50;
@@ -81,8 +84,8 @@ TEST(SolverBehaviour, PyramidSettlesWithoutSwaying) {
     }
     std::printf("[figure] pyramid of base 50, 5 s: top sway %.4f m, ends %.4f m off centre\n", sway,
                 world.position(top).x);
-    EXPECT_LT(sway, 0.01f);
-    EXPECT_LT(std::abs(world.position(top).x), 0.004f);
+    EXPECT_LT(sway, 0.025f);
+    EXPECT_LT(std::abs(world.position(top).x), 0.015f);
 }
 
 TEST(SolverBehaviour, ChainHoldsAHundredTimesHeavierWeight) {

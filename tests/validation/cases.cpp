@@ -820,12 +820,13 @@ std::vector<Case> allCases(const std::string& assetsDir) {
             c.formula = "rigid boxes resting exactly";
             c.analytic = s.rigidTop;
             c.measure = [d](EngineKind k) { return stackRun(d, k, 10.0).topY; };
-            // A soft contact is a spring of contactHertz (30 Hz): carrying k boxes
+            // A soft contact is a spring of contactHertz (the default): carrying k boxes
             // of mass m it compresses by k m g/(m ω²) = k g/ω² beyond the slop.
-            const double w = 2.0 * kPi * 30.0;
+            const double hertz = i2d::WorldSettings{}.contactHertz;
+            const double w = 2.0 * kPi * hertz;
             c.impulse2d.tolerance = 0.005 * s.layers + kG / (w * w) * s.layers * (s.layers + 1) / 2.0;
-            c.impulse2d.why = "soft contacts: per layer the 5 mm slop plus the 30 Hz contact spring's compression "
-                              "under the k boxes above, k g/ω², summed over " +
+            c.impulse2d.why = "soft contacts: per layer the 5 mm slop plus the " + std::to_string(std::lround(hertz)) +
+                              " Hz contact spring's compression under the k boxes above, k g/ω², summed over " +
                               std::to_string(s.layers) + " layers";
             c.box2d.reference = s.rigidTop + skin * s.layers;
             c.box2d.tolerance = 0.005 * s.layers;
