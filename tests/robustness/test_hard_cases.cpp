@@ -394,8 +394,13 @@ TEST(HardCases, RollingDiscKeepsItsHeight) {
 // compliant contacts. Measured at the defaults, sleeping off, over the first
 // 10 s: pyramid100 (base 100, 1 m boxes) swayed 9.2 cm, a base-60 pyramid of
 // 0.5 m boxes 4.2 cm. Swept backward every other step (solver.cpp,
-// sweepBackward): 0.5 cm and 0.4 cm. The bound is the issue's 5 cm for boxes
-// of 1 m, in proportion for the smaller ones (the same lean angle).
+// sweepBackward): 0.5 cm and 0.4 cm (at 30 Hz; 1.1 cm for pyramid100 at the
+// default 50 Hz). The bound is the issue's 5 cm for boxes of 1 m, in
+// proportion for the smaller ones (the same lean angle).
+// pyramid100's top also drops at most the issue's 0.3 m (item 4, at the
+// defaults): the contacts' sag, load over m_eff·ω², summed over its 100 rows;
+// 0.73 m at 30 Hz, 0.30 m at the default 50 Hz (docs/validation.md, "The
+// pyramid's compliance"). Only for it: the bar is set for that pyramid.
 TEST(HardCases, PyramidsSettleWithoutLeaning) {
     struct Case {
         int base;
@@ -413,14 +418,20 @@ TEST(HardCases, PyramidsSettleWithoutLeaning) {
                 top = test::makeBox(world, {x, c.halfExtent + size * static_cast<float>(row)}, c.halfExtent);
             }
         }
+        const float y0 = world.position(top).y;
         float sway = 0.0f;
         for (int i = 0; i < 10 * 60; ++i) {
             world.step(kDt);
             sway = std::max(sway, std::abs(world.position(top).x));
         }
-        std::printf("[figure] pyramid of base %d, boxes %.1f m, 10 s: top sway %.4f m\n", c.base, size, sway);
+        const float drop = y0 - world.position(top).y;
+        std::printf("[figure] pyramid of base %d, boxes %.1f m, 10 s: top sway %.4f m, drop %.3f m\n", c.base, size,
+                    sway, drop);
         EXPECT_TRUE(allFinite(world));
         EXPECT_LT(sway, 0.05f * size) << "base " << c.base;
+        if (c.base == 100) {
+            EXPECT_LE(drop, 0.3f);
+        }
     }
 }
 
