@@ -210,13 +210,14 @@ TEST(OverlapPiles, InTheAirAtOnePoint) {
 // substep (energy up to 1.067 times the start plus the lift out of the
 // ground; 9 beyond 1.02). Now each body's share of a sideways move is held to
 // its own width, and a supported body's lift is paid from its fall. The
-// issue's bounds, no tolerance added, except: circles, of which one layout
-// (8, seed 31) still gains 1.039 as they part (1.059 before the soft rows'
-// lift was paid from the fall: docs/validation.md, "Overlaps that separate
-// gently"; the other eleven stay within 1.018), are held at 1.045; the 20-body piles
-// spread into one layer, and the last overlaps of one 20-box layout (seed
-// 83, 3.2 cm at 2 s; 4.3 cm before) take until 2.15 s, so at 2 s they are
-// held at 4 cm and must be within 2 cm by 2.5 s.
+// issue's bounds, no tolerance added, except for circles, of which one layout
+// (8, seed 31) gains 1.02002 as they part (the other eleven stay within
+// 1.001), held at 1.025. At 30 Hz with ζ 10, the defaults before, that
+// layout gained 1.039 (1.059 before the soft rows' lift was paid from the
+// fall: docs/validation.md, "Overlaps that separate gently"), and the last
+// overlaps of one 20-box layout (seed 83) took until 2.15 s to come within
+// 2 cm, so the 20-body piles were held at 4 cm at 2 s; at the default 50 Hz,
+// ζ 25, every pile is within 2 cm by 1.7 s (deepest at 2 s: 7.8 mm).
 TEST(OverlapPiles, OnTheGround) {
     for (Kind kind : {Kind::box, Kind::circle, Kind::capsule})
         for (int count : {8, 20})
@@ -226,11 +227,11 @@ TEST(OverlapPiles, OnTheGround) {
                 const PileFigures f = groundPile(kind, count, seed);
                 print(f, what);
                 EXPECT_GE(f.separatedAt, 0.0f) << what;
-                EXPECT_LE(f.separatedAt, count > 8 ? 2.5f : 2.0f) << what;
-                EXPECT_LE(f.deepestAt2s, count > 8 ? 0.04f : 0.02f) << what;
+                EXPECT_LE(f.separatedAt, 2.0f) << what;
+                EXPECT_LE(f.deepestAt2s, 0.02f) << what;
                 EXPECT_LE(f.speedExcess, 0.0f) << what;
                 EXPECT_LE(f.rise, 0.5f) << what;
-                EXPECT_LE(f.energyRatio, kind == Kind::circle ? 1.045f : 1.02f) << what;
+                EXPECT_LE(f.energyRatio, kind == Kind::circle ? 1.025f : 1.02f) << what;
             }
 }
 
@@ -336,7 +337,8 @@ TEST(OverlapPiles, DeepInsideTheGround) {
 // from a fifth of its thinner shape's thickness when that is less than 5 cm
 // (contact.hpp, kDeepFraction): all 20 meet the issue's bounds, no
 // tolerance added. (Piles of small circles are held to that no better than
-// the unit ones of OnTheGround: 10 of 40 such layouts gain 2 to 11 %.)
+// the unit ones of OnTheGround: 10 of 40 such layouts gained 2 to 11 % at
+// 30 Hz, ζ 10.)
 TEST(OverlapPiles, SmallBodiesOnTheGround) {
     for (Kind kind : {Kind::box, Kind::capsule})
         for (int count : {8, 20})
