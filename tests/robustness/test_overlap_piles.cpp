@@ -212,7 +212,7 @@ TEST(OverlapPiles, InTheAirAtOnePoint) {
 // its own width, and a supported body's lift is paid from its fall. The
 // issue's bounds, no tolerance added, except for circles, of which one layout
 // (8, seed 31) gains 1.02002 as they part (the other eleven stay within
-// 1.001), held at 1.025. At 30 Hz with ζ 10, the defaults before, that
+// 1.002), held at 1.025. At 30 Hz with ζ 10, the defaults before, that
 // layout gained 1.039 (1.059 before the soft rows' lift was paid from the
 // fall: docs/validation.md, "Overlaps that separate gently"), and the last
 // overlaps of one 20-box layout (seed 83) took until 2.15 s to come within
