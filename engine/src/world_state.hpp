@@ -52,7 +52,13 @@ struct WorldState {
     std::vector<std::uint32_t> impactChanged;
     std::vector<float> impactTime, impactBodyTime;
     std::vector<int> impactStruckBodies, impactStruckContacts;  ///< what the last impact stage wrote
-    std::vector<ContactLook> activeLooks;                       ///< per active contact (contact.hpp)
+    // The impact stage's shock pass (impact_stage.cpp): scratch, kept so a
+    // step allocates nothing once grown. shockLocal is per body slot, −1
+    // between passes.
+    std::vector<ShockEdge> shockEdges;
+    std::vector<int> shockLocal, shockBodies, shockLevel, shockOffset, shockAdjacent, shockFill;
+    std::vector<ShockSaved> shockSaved;
+    std::vector<ContactLook> activeLooks;  ///< per active contact (contact.hpp)
 
     // Callbacks (World::setCustomFilter, setPreSolve); empty when not set.
     /// The game's task system (World::setTaskSystem), not owned; null: one thread.

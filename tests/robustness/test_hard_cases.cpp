@@ -207,6 +207,64 @@ TEST(HardCases, StackOfTwentyWithHeavyTopFallsNoSoonerThanToday) {
     EXPECT_LT(r.earlySink, 0.16f);  // measured 0.137 m
 }
 
+// Box2D v3's HighMassRatio2: a 20 × 20 m box (400 kg) dropped from 26 m
+// (its bottom 15 m above two 1 × 1 m boxes of 1 kg at x = ±9) lands at
+// 17 m/s. Each pairwise strike between it and a light box takes a 400th of
+// its approach; before the impact stage's shock pass the light boxes were
+// driven half a metre into the ground, and through a segment ground
+// (docs/impacts.md, "Shock propagation"). Sleeping off.
+TEST(HardCases, HeavyBoxLandingOnLightBoxesIsStoppedByTheGround) {
+    for (bool segmentGround : {true, false}) {
+        World world(WorldSettings{.enableSleep = false});
+        BodyId ground = world.createBody({});
+        if (segmentGround)
+            world.createSegmentShape(ground, {.friction = 0.6f}, Segment{{-20.0f, 0.0f}, {20.0f, 0.0f}});
+        else
+            world.createPolygonShape(ground, {.friction = 0.6f}, makeOffsetBox(40.0f, 2.0f, {0.0f, -2.0f}, 0.0f));
+        std::vector<BodyId> light{test::makeBox(world, {-9.0f, 0.5f}), test::makeBox(world, {9.0f, 0.5f})};
+        BodyId big = test::makeBox(world, {0.0f, 26.0f}, 10.0f);
+        float lowestLight = 1e9f, downAfterLanding = -1.0f, bigYLastSecond = 0.0f;
+        for (int step = 0; step < 10 * 60; ++step) {
+            const float before = world.linearVelocity(big).y;
+            world.step(kDt);
+            for (BodyId b : light) lowestLight = std::min(lowestLight, world.position(b).y);
+            if (downAfterLanding < 0.0f && world.linearVelocity(big).y > before + 1.0f)
+                downAfterLanding = -world.linearVelocity(big).y;
+            if (step >= 9 * 60) bigYLastSecond += world.position(big).y / 60.0f;
+        }
+        std::printf(
+            "[figure] 400 kg box on two 1 kg boxes (%s ground): lowest light box %.4f m, big box at %.4f m over the "
+            "last second, going down at %.3f m/s after the step it lands\n",
+            segmentGround ? "segment" : "box", lowestLight, bigYLastSecond, downAfterLanding);
+        ASSERT_TRUE(allFinite(world));
+        ASSERT_GE(downAfterLanding, -1.0f);  // it landed
+        // Stopped in the step it lands: it leaves that step going down no
+        // faster than one step of free fall after the strike (g·Δt =
+        // 0.167 m/s) plus the shock pass's residual (0.01 m/s); before, it
+        // kept 2.3 to 2.5 m/s for 20 steps (measured 0.104 m/s).
+        EXPECT_LT(downAfterLanding, 10.0f * kDt + 0.01f);
+        // Box2D v3's bar for this sample: the light boxes end within 1 cm of
+        // resting on the ground (measured 0.6 cm).
+        for (BodyId b : light) EXPECT_NEAR(world.position(b).y, 0.5f, 0.01f);
+        // At no time deeper than their rows' compliance: each light box's
+        // ground row carries half the big box's weight, 2,000 N, and sinks
+        // F/(m·ω²) = 2000/(1·(2π·100 Hz)²) = 0.51 cm (the static doubled
+        // 50 Hz) below the 0.5 cm slop; twice that for the first steps,
+        // whose rows start without a warm start (the strike clears it) and
+        // overshoot: 2 cm (measured 1.8 cm; before, 0.5 m and through).
+        EXPECT_GT(lowestLight, 0.5f - 0.02f);
+        // The big box rests on them as low as the two rows' compliance and
+        // slops allow: 2000/(1·(2π·50)²) = 2.03 cm into each light box,
+        // 0.51 cm of the light box into the ground and 0.5 cm of slop at each
+        // contact: 3.5 cm below 11 m. Its mean height over the last second:
+        // it bounces on the light boxes at 3 Hz for seconds after landing
+        // (docs/validation.md, "Hard cases not yet met"; measured 3.2 cm
+        // below; Box2D v3's bar of 1 cm is below what a contact softened to
+        // 50 Hz can give).
+        EXPECT_NEAR(bigYLastSecond, 11.0f, 0.035f);
+    }
+}
+
 // A 10-link chain (distance joints, 1 kg links) hanging from a static anchor
 // and holding a body 1000 times heavier than a link; given a sideways kick
 // it swings and must stay connected, its stretch measured.
