@@ -269,7 +269,8 @@ TEST(HardCases, HeavyBoxLandingOnLightBoxesIsStoppedByTheGround) {
 // on a segment ground, whose top box, 100, 200 and 300 times as dense as the
 // rest, is dropped from 2 m above its place. Before the impact stage's shock
 // pass the landings of the 200 and 300 tops drove the boxes below apart and
-// both pyramids collapsed (boxes thrown 26 and 79 m, the tops 18 m down).
+// both pyramids collapsed (boxes ended 26 and 79 m from where they were
+// built, the tops 18 m down).
 // Sleeping off.
 TEST(HardCases, PyramidsWithHeavyTopsDroppedOnThemStand) {
     World world(WorldSettings{.enableSleep = false});

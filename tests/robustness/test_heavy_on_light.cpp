@@ -69,14 +69,21 @@ struct Outcome {
     float finalOpening = 0;  ///< the pin's anchors apart at the end (m)
 };
 
-/// 10 s at 60 Hz, sleeping off (sleep would hide a gain), with `substeps`.
-Outcome run(const Layout& l, int substeps) {
+/// A world with sleeping off (sleep would hide a gain) and `substeps`, and a
+/// static ground whose top is y = 0 from x = −20 to 20 m.
+World worldWithGround(int substeps) {
     WorldSettings s;
     s.enableSleep = false;
     s.substeps = substeps;
     World w(s);
     const BodyId ground = w.createBody({});
     w.createPolygonShape(ground, {}, makeOffsetBox(20.0f, 0.5f, {0.0f, -0.5f}, 0.0f));
+    return w;
+}
+
+/// 10 s at 60 Hz, sleeping off, with `substeps`.
+Outcome run(const Layout& l, int substeps) {
+    World w = worldWithGround(substeps);
     const BodyId light = w.createBody({.type = BodyType::dynamic_body, .position = {0.0f, 3.0f}});
     addShape(w, light, l.light);
     const BodyId pin = w.createBody({.position = {l.pinX, 3.0f}});
@@ -252,12 +259,7 @@ TEST(HeavyOnLight, RandomHeavyLandingsOnLightPilesGainNoEnergy) {
         const float tilt = r(-0.3f, 0.3f);
         const bool circles = r(0.0f, 1.0f) < 0.3f;
         for (int substeps : {4, 1}) {
-            WorldSettings s;
-            s.enableSleep = false;
-            s.substeps = substeps;
-            World w(s);
-            const BodyId ground = w.createBody({});
-            w.createPolygonShape(ground, {}, makeOffsetBox(20.0f, 0.5f, {0.0f, -0.5f}, 0.0f));
+            World w = worldWithGround(substeps);
             float top = 0.0f;
             for (int k = 0; k < lights; ++k) {
                 const BodyId b = w.createBody({.type = BodyType::dynamic_body, .position = {0.0f, top + 0.5f}});
