@@ -441,6 +441,7 @@ void collide(WorldState& w) {
                 if (ct.manifold.points[j].separation < -deep) flags |= kLookDeep;
             const ContactSurface* surface = contactSurface(w, c);
             if (surface && surface->rollingResistance > 0.0f) flags |= kLookRollingSurface;
+            if (lookForImpacts && heavyOnLightCloses(w, ct)) flags |= kLookHeavyOnLight;
         }
         out.rowFlags = flags;
     };

@@ -150,6 +150,9 @@ constexpr std::uint8_t kLookRow = 1;
 constexpr std::uint8_t kLookOnePoint = 2;        ///< one manifold point
 constexpr std::uint8_t kLookDeep = 4;            ///< a point deeper than kDeepOverlap
 constexpr std::uint8_t kLookRollingSurface = 8;  ///< its surface resists rolling
+/// Between two moving bodies, one at least kShockMassRatio times the other's
+/// mass, closing (heavyOnLightCloses, impact_stage.cpp).
+constexpr std::uint8_t kLookHeavyOnLight = 16;
 
 /// The narrowphase: updates the manifold of every contact with an awake body,
 /// reports begin and end events, wakes islands that are touched, destroys

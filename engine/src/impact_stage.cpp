@@ -43,6 +43,11 @@ constexpr int kShockPasses = 8;
 /// is a residual the sweeps' order made, not symmetric (two supports struck
 /// in turn leave the body turning towards the last).
 constexpr float kShockResidual = 0.01f;
+/// A contact between moving bodies whose masses differ by this factor or
+/// more has its closing stopped by the shock pass in every step, not only
+/// after an impact (heavyOnLightCloses): one sweep of the solver moves the
+/// heavy body by a part of its impulse as small as the ratio's inverse.
+constexpr float kShockMassRatio = 10.0f;
 
 // Timing within the step. The solver integrates by semi-implicit Euler over
 // N substeps of h = Δt/N: v_k = v_(k−1) + a·h, x_k = x_(k−1) + h·v_k, with a
@@ -120,11 +125,13 @@ void propagateShock(WorldState& w, Strike&& strike, float threshold, float resid
         }
         return i;
     };
-    for (int c : w.activeContacts) {
+    for (std::size_t i = 0; i < w.activeContacts.size(); ++i) {
+        const int c = w.activeContacts[i];
         const Contact& ct = w.contacts[c];
         if (!ct.touching || ct.isSensor || ct.manifold.pointCount == 0) continue;
         if (!moves(w.bodies[ct.bodyA]) && !moves(w.bodies[ct.bodyB])) continue;
-        edges.push_back({c, indexOf(ct.bodyA), indexOf(ct.bodyB), 0});
+        const bool heavy = (w.activeLooks[i].rowFlags & kLookHeavyOnLight) != 0;
+        edges.push_back({c, indexOf(ct.bodyA), indexOf(ct.bodyB), 0, heavy});
     }
     const std::size_t n = graph.size();
     offset.assign(n + 1, 0);
@@ -171,7 +178,7 @@ void propagateShock(WorldState& w, Strike&& strike, float threshold, float resid
     for (const ShockEdge& e : edges) {
         const int la = level[static_cast<std::size_t>(e.a)], lb = level[static_cast<std::size_t>(e.b)];
         if (la < 0 || lb < 0) continue;
-        edges[kept++] = {e.contact, la, lb, std::max(la, lb)};
+        edges[kept++] = {e.contact, la, lb, std::max(la, lb), e.heavyOnLight};
     }
     edges.resize(kept);
     std::stable_sort(edges.begin(), edges.end(),
@@ -183,17 +190,19 @@ void propagateShock(WorldState& w, Strike&& strike, float threshold, float resid
             bool any = false;
             for (std::size_t i = first; i < last; ++i) {
                 const ShockEdge& e = edges[i];  // a, b: the bodies' levels here
-                // Only where the sweeps or this pass changed a body: below
-                // the cascade nothing approaches.
+                // Only where the sweeps or this pass changed a body, or a
+                // heavy body closes on a light one: elsewhere nothing
+                // approaches.
                 const Contact& ct = w.contacts[e.contact];
                 const std::uint32_t changedA = w.impactChanged[static_cast<std::size_t>(ct.bodyA)];
                 const std::uint32_t changedB = w.impactChanged[static_cast<std::size_t>(ct.bodyB)];
-                if (changedA == 0u && changedB == 0u) continue;
+                if (changedA == 0u && changedB == 0u && !e.heavyOnLight) continue;
                 // Struck down to the residual only where this pass has
-                // struck a body already; elsewhere only impacts (resting
-                // contacts keep their warm start, and a column of equal
-                // boxes that the sweeps nearly settled is not turned).
-                const bool struck = changedA == kShockStamp || changedB == kShockStamp;
+                // struck a body already or a heavy body closes on a light
+                // one; elsewhere only impacts (resting contacts keep their
+                // warm start, and a column of equal boxes that the sweeps
+                // nearly settled is not turned).
+                const bool struck = changedA == kShockStamp || changedB == kShockStamp || e.heavyOnLight;
                 if (strike(e.contact, e.a < e.b, e.b < e.a, struck ? residual : threshold)) any = true;
             }
             if (!any) break;
@@ -220,6 +229,21 @@ void propagateShock(WorldState& w, Strike&& strike, float threshold, float resid
 }
 
 }  // namespace
+
+bool heavyOnLightCloses(const WorldState& w, const Contact& ct) {
+    const Body& a = w.bodies[ct.bodyA];
+    const Body& b = w.bodies[ct.bodyB];
+    if (a.type != BodyType::dynamic_body || b.type != BodyType::dynamic_body || !a.awake || !b.awake) return false;
+    if (!(a.invMass > 0.0f && b.invMass > 0.0f)) return false;
+    if (std::max(a.invMass, b.invMass) < kShockMassRatio * std::min(a.invMass, b.invMass)) return false;
+    const float residual = kShockResidual * w.settings.impactThreshold;
+    for (int j = 0; j < ct.manifold.pointCount; ++j) {
+        const Vec2 p = ct.manifold.points[j].point;
+        const Vec2 dv = (b.v + cross(b.w, p - b.center)) - (a.v + cross(a.w, p - a.center));
+        if (dot(dv, ct.manifold.normal) < -residual) return true;
+    }
+    return false;
+}
 
 bool passesOverImpacts(const WorldState& w, const Contact& ct, bool touching) {
     if (!touching || ct.isSensor || ct.manifold.pointCount == 0) return true;
@@ -402,8 +426,12 @@ void resolveImpacts(WorldState& w, float dt) {
         if (bTakes) shiftStart(B, ct.bodyB, tHit, vB0 - vBAfter, wB0 - B.w);
         if (aTakes) shiftStart(A, ct.bodyA, tHit, vA0 - vAAfter, wA0 - A.w);
         // The solver must not undo the bounce with stale warm-start impulses.
-        ct.normalImpulse[0] = ct.normalImpulse[1] = 0.0f;
-        ct.tangentImpulse[0] = ct.tangentImpulse[1] = 0.0f;
+        // A strike below the impact threshold (the shock pass's) stops a
+        // closing the solver would have taken: the contact's load stays.
+        if (-approach >= threshold) {
+            ct.normalImpulse[0] = ct.normalImpulse[1] = 0.0f;
+            ct.tangentImpulse[0] = ct.tangentImpulse[1] = 0.0f;
+        }
         // The manifold keeps its start-of-step gap on purpose: the shift
         // above puts the bodies where the exact flight-and-rebound would be
         // at the step's end, and an updated (now negative) separation would
@@ -411,6 +439,11 @@ void resolveImpacts(WorldState& w, float dt) {
         return true;
     };
 
+    // A heavy body closing on a light one (the narrowphase's look) calls
+    // for the shock pass whatever the sweeps do.
+    bool heavyOnLight = false;
+    for (std::size_t i = 0; i < activeCount && !heavyOnLight; ++i)
+        heavyOnLight = (looks[i].rowFlags & kLookHeavyOnLight) != 0;
     bool settled = false;
     for (int sweep = 1; sweep <= kMaxSweeps; ++sweep) {
         bool any = false;
@@ -431,7 +464,7 @@ void resolveImpacts(WorldState& w, float dt) {
             break;
         }
     }
-    if (!settled) {
+    if (!settled || heavyOnLight) {
         sweepStamp = kShockStamp;
         propagateShock(w, strike, threshold, kShockResidual * threshold);
     }

@@ -10,6 +10,7 @@ namespace i2d::detail {
 /// its bodies (their index in the pass, then their levels) and its level.
 struct ShockEdge {
     int contact, a, b, level;
+    bool heavyOnLight;  ///< its look's kLookHeavyOnLight
 };
 
 /// A body's motion before the shock pass struck it, to undo the pass.
@@ -30,6 +31,13 @@ struct Contact;
 /// none of its points faster than the impact threshold (nothing changes the
 /// bodies' velocities between the narrowphase and the impact stage).
 bool passesOverImpacts(const WorldState& w, const Contact& ct, bool touching);
+
+/// Whether touching contact `ct` joins two moving bodies of which one is at
+/// least kShockMassRatio times as heavy as the other, closing at a point
+/// faster than the shock pass's residual: the impact stage then runs its
+/// shock pass (impact_stage.cpp), which the solver's sweeps need between
+/// such bodies (each moves the heavy one by a small part of its impulse).
+bool heavyOnLightCloses(const WorldState& w, const Contact& ct);
 
 /// Resolves the impacts among this step's active contacts (closed_form
 /// impact model only; nothing otherwise).
