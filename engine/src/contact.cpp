@@ -431,7 +431,8 @@ void collide(WorldState& w) {
         const bool touching = touchingAfter(update);
         out.bodyA = ct.bodyA;
         out.bodyB = ct.bodyB;
-        out.passOver = !lookForImpacts || passesOverImpacts(w, ct, touching);
+        const ImpactLook impacts = lookForImpacts ? lookAtImpacts(w, ct, touching) : ImpactLook{true, false};
+        out.passOver = impacts.passOver;
         std::uint8_t flags = 0;
         if (touching && !ct.isSensor && ct.manifold.pointCount > 0) {
             flags = kLookRow;
@@ -441,7 +442,7 @@ void collide(WorldState& w) {
                 if (ct.manifold.points[j].separation < -deep) flags |= kLookDeep;
             const ContactSurface* surface = contactSurface(w, c);
             if (surface && surface->rollingResistance > 0.0f) flags |= kLookRollingSurface;
-            if (lookForImpacts && heavyOnLightCloses(w, ct)) flags |= kLookHeavyOnLight;
+            if (impacts.heavyOnLight) flags |= kLookHeavyOnLight;
         }
         out.rowFlags = flags;
     };

@@ -45,7 +45,7 @@ constexpr int kShockPasses = 8;
 constexpr float kShockResidual = 0.01f;
 /// A contact between moving bodies whose masses differ by this factor or
 /// more has its closing stopped by the shock pass in every step, not only
-/// after an impact (heavyOnLightCloses): one sweep of the solver moves the
+/// after an impact (lookAtImpacts): one sweep of the solver moves the
 /// heavy body by a part of its impulse as small as the ratio's inverse.
 constexpr float kShockMassRatio = 10.0f;
 
@@ -230,19 +230,25 @@ void propagateShock(WorldState& w, Strike&& strike, float threshold, float resid
 
 }  // namespace
 
-bool heavyOnLightCloses(const WorldState& w, const Contact& ct) {
+ImpactLook lookAtImpacts(const WorldState& w, const Contact& ct, bool touching) {
+    if (!touching || ct.isSensor || ct.manifold.pointCount == 0) return {true, false};
     const Body& a = w.bodies[ct.bodyA];
     const Body& b = w.bodies[ct.bodyB];
-    if (a.type != BodyType::dynamic_body || b.type != BodyType::dynamic_body || !a.awake || !b.awake) return false;
-    if (!(a.invMass > 0.0f && b.invMass > 0.0f)) return false;
-    if (std::max(a.invMass, b.invMass) < kShockMassRatio * std::min(a.invMass, b.invMass)) return false;
-    const float residual = kShockResidual * w.settings.impactThreshold;
+    const float threshold = w.settings.impactThreshold;
+    // Two moving bodies, one at least kShockMassRatio times the other's mass.
+    const bool heavy = a.type == BodyType::dynamic_body && b.type == BodyType::dynamic_body && a.awake && b.awake &&
+                       a.invMass > 0.0f && b.invMass > 0.0f &&
+                       std::max(a.invMass, b.invMass) >= kShockMassRatio * std::min(a.invMass, b.invMass);
+    const float closing = heavy ? kShockResidual * threshold : threshold;
+    ImpactLook look{true, false};
     for (int j = 0; j < ct.manifold.pointCount; ++j) {
         const Vec2 p = ct.manifold.points[j].point;
         const Vec2 dv = (b.v + cross(b.w, p - b.center)) - (a.v + cross(a.w, p - a.center));
-        if (dot(dv, ct.manifold.normal) < -residual) return true;
+        const float vn = dot(dv, ct.manifold.normal);
+        if (vn < -closing) look.heavyOnLight = heavy;
+        if (vn < -threshold) look.passOver = false;
     }
-    return false;
+    return look;  // (NaN compares false: passed over, as the full test would)
 }
 
 bool passesOverImpacts(const WorldState& w, const Contact& ct, bool touching) {
@@ -440,16 +446,17 @@ void resolveImpacts(WorldState& w, float dt) {
     };
 
     // A heavy body closing on a light one (the narrowphase's look) calls
-    // for the shock pass whatever the sweeps do.
+    // for the shock pass whatever the sweeps do; found in the first sweep.
     bool heavyOnLight = false;
-    for (std::size_t i = 0; i < activeCount && !heavyOnLight; ++i)
-        heavyOnLight = (looks[i].rowFlags & kLookHeavyOnLight) != 0;
     bool settled = false;
     for (int sweep = 1; sweep <= kMaxSweeps; ++sweep) {
         bool any = false;
         sweepStamp = static_cast<std::uint32_t>(sweep);
         for (std::size_t i = 0; i < activeCount; ++i) {
-            if (sweep == 1 && stillPassedOver(i)) continue;
+            if (sweep == 1) {
+                heavyOnLight = heavyOnLight || (looks[i].rowFlags & kLookHeavyOnLight) != 0;
+                if (stillPassedOver(i)) continue;
+            }
             // A later sweep looks only at the contacts of bodies the last one
             // struck, found from the narrowphase's look (its bodies) before the
             // contact is read: in a large pile the later sweeps read every

@@ -32,12 +32,17 @@ struct Contact;
 /// bodies' velocities between the narrowphase and the impact stage).
 bool passesOverImpacts(const WorldState& w, const Contact& ct, bool touching);
 
-/// Whether touching contact `ct` joins two moving bodies of which one is at
-/// least kShockMassRatio times as heavy as the other, closing at a point
-/// faster than the shock pass's residual: the impact stage then runs its
-/// shock pass (impact_stage.cpp), which the solver's sweeps need between
-/// such bodies (each moves the heavy one by a small part of its impulse).
-bool heavyOnLightCloses(const WorldState& w, const Contact& ct);
+/// The narrowphase's look at contact `ct` for the impact stage: `passOver`
+/// as passesOverImpacts, and `heavyOnLight` when it joins two moving bodies
+/// of which one is at least kShockMassRatio times as heavy as the other,
+/// closing at a point faster than the shock pass's residual: the impact
+/// stage then runs its shock pass (impact_stage.cpp), which the solver's
+/// sweeps need between such bodies (each moves the heavy one by a small
+/// part of its impulse). One pass over the points for both.
+struct ImpactLook {
+    bool passOver, heavyOnLight;
+};
+ImpactLook lookAtImpacts(const WorldState& w, const Contact& ct, bool touching);
 
 /// Resolves the impacts among this step's active contacts (closed_form
 /// impact model only; nothing otherwise).
