@@ -227,12 +227,37 @@ TEST(SceneLoader, MissingFileAndUnknownScene) {
 
 TEST(ShippedScenes, ListedWithDescriptions) {
     auto scenes = tb::listScenes(kAssets);
-    std::vector<std::string> expected = {
-        "stack5",     "stack5_overlap", "funnel",       "pendulum_wave",   "pendulum_grid", "pyramid20",
-        "pyramid100", "tall_stack20",   "tall_stack50", "card_house",      "dominoes",      "newtons_cradle",
-        "bridge",     "heavy_chain",    "rain1000",     "circle_pile1000", "many_pyramids", "many_pyramids_small",
-        "joint_grid", "bullets",        "spinning_rod", "incline",         "bounce",        "ragdoll",
-        "car",        "chain_swing",    "slider_crank", "gears",           "pulley",        "crane"};
+    std::vector<std::string> expected = {"stack5",
+                                         "stack5_overlap",
+                                         "funnel",
+                                         "pendulum_wave",
+                                         "pendulum_grid",
+                                         "pyramid20",
+                                         "pyramid100",
+                                         "tall_stack20",
+                                         "tall_stack50",
+                                         "card_house",
+                                         "dominoes",
+                                         "newtons_cradle",
+                                         "bridge",
+                                         "heavy_chain",
+                                         "rain1000",
+                                         "circle_pile1000",
+                                         "many_pyramids",
+                                         "many_pyramids_small",
+                                         "joint_grid",
+                                         "bullets",
+                                         "spinning_rod",
+                                         "incline",
+                                         "bounce",
+                                         "ragdoll",
+                                         "car",
+                                         "chain_swing",
+                                         "slider_crank",
+                                         "gears",
+                                         "pulley",
+                                         "crane",
+                                         "high_mass_ratio"};
     for (const auto& name : expected) {
         auto it = std::find_if(scenes.begin(), scenes.end(), [&](const auto& s) { return s.first == name; });
         ASSERT_NE(it, scenes.end()) << name;
