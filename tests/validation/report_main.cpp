@@ -1051,7 +1051,7 @@ int main(int argc, char** argv) {
           "  Followed contact by contact, the deep ones get there in a single step: from a speculative gap of\n"
           "  7 to 17 cm at the step's start to 5 to 10 cm deep at its end, or from resting (0 to 3 mm deep)\n"
           "  to 7 cm deep. Two boxes closing at 3 m/s while one turns at 4 rad/s close about 10 cm in a step;\n"
-          "  the rows hold the manifold's points, but the corner that strikes is not always one of them.\n"
+          "  a likely cause (not yet checked) is a striking corner that is not one of the manifold's points.\n"
           "- **Overlap Recovery** (a base-4 pyramid of unit boxes built 0.75 m apart): apart within 0.83 s,\n"
           "  no energy gained, but one box reaches 3.32 m/s against the 3 m/s push cap.\n"
           "- **Warm Start Energy** (three circles of radius 0.5 m stacked on a segment, the top one 100 times\n"
