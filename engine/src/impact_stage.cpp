@@ -91,9 +91,11 @@ float closingTime(float s, float vn, float an, float dt) {
 
 /// Shock propagation (Guendelman, Bridson and Fedkiw (2003), Nonconvex rigid
 /// bodies with stacking, where it is a pass of the contact solver): when the
-/// sweeps end with contacts still approaching, the bodies are ranked by how many contacts lie between them
-/// and something that cannot move (level 0: static, kinematic and sleeping
-/// bodies; level k + 1: touching a body of level k), and the approaching
+/// sweeps end with contacts still approaching, or a heavy body closes on a
+/// light one (kShockMassRatio), the bodies are ranked by how many contacts
+/// lie between them and something that cannot move (level 0: static,
+/// kinematic and sleeping bodies; level k + 1: touching a body of level k),
+/// and the approaching
 /// contacts are struck level by level from the bottom up, each body of the
 /// level below held immovable for the law. A 400 kg box landing on two 1 kg
 /// boxes on the ground is stopped by the ground in one pass, where each
@@ -125,13 +127,14 @@ void propagateShock(WorldState& w, Strike&& strike, float threshold, float resid
         }
         return i;
     };
+    // The touching contacts with points, from the narrowphase's look
+    // (kLookRow), without reading the contacts.
     for (std::size_t i = 0; i < w.activeContacts.size(); ++i) {
-        const int c = w.activeContacts[i];
-        const Contact& ct = w.contacts[c];
-        if (!ct.touching || ct.isSensor || ct.manifold.pointCount == 0) continue;
-        if (!moves(w.bodies[ct.bodyA]) && !moves(w.bodies[ct.bodyB])) continue;
-        const bool heavy = (w.activeLooks[i].rowFlags & kLookHeavyOnLight) != 0;
-        edges.push_back({c, indexOf(ct.bodyA), indexOf(ct.bodyB), 0, heavy});
+        const ContactLook& look = w.activeLooks[i];
+        if ((look.rowFlags & kLookRow) == 0) continue;
+        if (!moves(w.bodies[look.bodyA]) && !moves(w.bodies[look.bodyB])) continue;
+        const bool heavy = (look.rowFlags & kLookHeavyOnLight) != 0;
+        edges.push_back({w.activeContacts[i], indexOf(look.bodyA), indexOf(look.bodyB), 0, heavy});
     }
     const std::size_t n = graph.size();
     offset.assign(n + 1, 0);
