@@ -167,6 +167,30 @@ void computeManifold(const WorldState& w, const Contact& c, Manifold& m) {
     if (kept != m.pointCount) m.pointCount = kept;  // (as above: no write when nothing moved)
 }
 
+/// Contact::overlapFromStart for a contact whose new manifold has points:
+/// set at its first touch when a point is deeper than deepOverlapOf and none
+/// closes faster than the impact threshold (bodies created or moved inside
+/// each other, not a collision, which the impact law must meet however deep
+/// its first manifold: a fast body's first touch of a thin plank can be
+/// deeper than the plank's deep-overlap depth), cleared once every point is
+/// within the penetration slop.
+void markOverlapFromStart(const WorldState& w, Contact& ct, const Body& a, const Body& b) {
+    const Manifold& m = ct.manifold;
+    float deepest = 0.0f;
+    for (int i = 0; i < m.pointCount; ++i) deepest = std::min(deepest, m.points[i].separation);
+    if (ct.touching) {
+        if (ct.overlapFromStart && deepest > -w.settings.penetrationSlop) ct.overlapFromStart = false;
+        return;
+    }
+    bool overlap = deepest < -deepOverlapOf(ct);
+    for (int i = 0; i < m.pointCount && overlap; ++i) {
+        const Vec2 p = m.points[i].point;
+        const Vec2 dv = (b.v + cross(b.w, p - b.center)) - (a.v + cross(a.w, p - a.center));
+        overlap = !(dot(dv, m.normal) < -w.settings.impactThreshold);
+    }
+    ct.overlapFromStart = overlap;
+}
+
 /// What the narrowphase found for one contact (updateManifold).
 /// `kept`: touching as before and no hit to report, so applyUpdate has
 /// nothing to do (most contacts of a resting pile; it need not read them again).
@@ -209,6 +233,7 @@ Update updateManifold(WorldState& w, int c) {
         for (int i = 0; i < m.pointCount; ++i) touching = touching || m.points[i].separation < 0.0f;
     } else {
         touching = m.pointCount > 0;
+        if (touching) markOverlapFromStart(w, ct, bodyA, bodyB);
         // Warm start: carry impulses over by feature id.
         float ni[2] = {0.0f, 0.0f}, ti[2] = {0.0f, 0.0f};
         for (int i = 0; i < m.pointCount; ++i) {

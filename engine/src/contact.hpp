@@ -74,6 +74,12 @@ struct Contact {
     /// on one side only. A body's type change destroys its contacts, so this
     /// too is fixed for the contact's life; most pairs of a pile have none.
     bool seamRule : 1 = false;
+    /// The contact's first touch overlapped deeper than deepOverlapOf, and
+    /// it has not come within the penetration slop since: two bodies
+    /// created (or moved) inside each other, whose manifold is an overlap's,
+    /// not surfaces meeting. The impact stage passes it over
+    /// (passesOverImpacts); set and cleared by the narrowphase.
+    bool overlapFromStart : 1 = false;
     /// How deep a point must be to count as a deep overlap, in 1/255 of
     /// kDeepOverlap (kFullDeepScale: kDeepOverlap itself); set from the two
     /// shapes' thickness when the contact is created (deepOverlapOf).

@@ -234,7 +234,7 @@ void propagateShock(WorldState& w, Strike&& strike, float threshold, float resid
 }  // namespace
 
 ImpactLook lookAtImpacts(const WorldState& w, const Contact& ct, bool touching) {
-    if (!touching || ct.isSensor || ct.manifold.pointCount == 0) return {true, false};
+    if (!touching || ct.isSensor || ct.manifold.pointCount == 0 || ct.overlapFromStart) return {true, false};
     const Body& a = w.bodies[ct.bodyA];
     const Body& b = w.bodies[ct.bodyB];
     const float threshold = w.settings.impactThreshold;
@@ -255,7 +255,7 @@ ImpactLook lookAtImpacts(const WorldState& w, const Contact& ct, bool touching) 
 }
 
 bool passesOverImpacts(const WorldState& w, const Contact& ct, bool touching) {
-    if (!touching || ct.isSensor || ct.manifold.pointCount == 0) return true;
+    if (!touching || ct.isSensor || ct.manifold.pointCount == 0 || ct.overlapFromStart) return true;
     const Body& a = w.bodies[ct.bodyA];
     const Body& b = w.bodies[ct.bodyB];
     const float threshold = w.settings.impactThreshold;
@@ -270,7 +270,8 @@ bool passesOverImpacts(const WorldState& w, const Contact& ct, bool touching) {
 void resolveImpacts(WorldState& w, float dt) {
     // changed[b] == the sweep in which body b's velocity last changed (0:
     // none this step). hitTime[c] == when contact c was struck in this step,
-    // −1 while it was not; bodyTime[b] the same for body b's first impact.
+    // −1 while it was not; bodyTime[b] the same for body b's earliest
+    // impact, and bodyDv[b], bodyDw[b] its change of velocity so far.
     // Kept between steps and only grown: the entries the last stage wrote
     // (its struck bodies and contacts) go back to their defaults here, so a
     // step pays for what was struck, not for every slot (filled anew every
@@ -278,6 +279,8 @@ void resolveImpacts(WorldState& w, float dt) {
     std::vector<std::uint32_t>& changed = w.impactChanged;
     std::vector<float>& hitTime = w.impactTime;
     std::vector<float>& bodyTime = w.impactBodyTime;
+    std::vector<Vec2>& bodyDv = w.impactBodyDv;
+    std::vector<float>& bodyDw = w.impactBodyDw;
     for (int b : w.impactStruckBodies) {
         changed[static_cast<std::size_t>(b)] = 0u;
         bodyTime[static_cast<std::size_t>(b)] = -1.0f;
@@ -288,7 +291,11 @@ void resolveImpacts(WorldState& w, float dt) {
     const auto bodySlots = static_cast<std::size_t>(w.bodies.capacity());
     const auto contactSlots = static_cast<std::size_t>(w.contacts.capacity());
     if (changed.size() < bodySlots) changed.resize(bodySlots, 0u);
-    if (bodyTime.size() < bodySlots) bodyTime.resize(bodySlots, -1.0f);
+    if (bodyTime.size() < bodySlots) {
+        bodyTime.resize(bodySlots, -1.0f);
+        bodyDv.resize(bodySlots);
+        bodyDw.resize(bodySlots);
+    }
     if (hitTime.size() < contactSlots) hitTime.resize(contactSlots, -1.0f);
 
     const WorldSettings& settings = w.settings;
@@ -298,16 +305,30 @@ void resolveImpacts(WorldState& w, float dt) {
     const float halfSubstep = 0.5f * dt / static_cast<float>(substeps);
 
     std::uint32_t sweepStamp = 0;
-    // Moves body b's start so that the step ends as flight until its first
-    // impact and the changed velocity after it (timing above).
+    // Moves body b's start so that the step ends as flight until its
+    // earliest impact and its whole change of velocity after it (timing
+    // above; "Cascades" in docs/impacts.md). This strike's change (dv, dw)
+    // is moved by that time, and when the strike is earlier than any before
+    // it, the changes before it are moved back to it too.
     auto shiftStart = [&](Body& body, int b, float tHit, Vec2 dv, float dw) {
-        float& first = bodyTime[static_cast<std::size_t>(b)];
-        if (first < 0.0f) first = tHit;
-        if (first <= 0.0f) return;
+        const auto i = static_cast<std::size_t>(b);
+        float& earliest = bodyTime[i];
+        if (earliest < 0.0f) {
+            earliest = tHit;
+            bodyDv[i] = {};
+            bodyDw[i] = 0.0f;
+        }
+        const float t = std::min(earliest, tHit);
+        const Vec2 move = t * dv + (t - earliest) * bodyDv[i];
+        const float turn = t * dw + (t - earliest) * bodyDw[i];
+        earliest = t;
+        bodyDv[i] += dv;
+        bodyDw[i] += dw;
+        if (move.x == 0.0f && move.y == 0.0f && turn == 0.0f) return;
         keepStepStart(body, w.stepStamp);
         w.startsShiftedAt = w.stepStamp;
-        body.center += first * dv;
-        body.xf.q = integrateRotation(body.xf.q, first * dw);
+        body.center += move;
+        body.xf.q = integrateRotation(body.xf.q, turn);
         body.xf.p = body.center - rotate(body.xf.q, body.localCenter);
     };
 
@@ -336,6 +357,7 @@ void resolveImpacts(WorldState& w, float dt) {
     auto strike = [&](int c, bool holdA, bool holdB, float minApproach) {
         Contact& ct = w.contacts[c];
         if (minApproach == threshold && passedOver(ct)) return false;
+        if (ct.overlapFromStart) return false;  // not an impact (passesOverImpacts)
         Body& A = w.bodies[ct.bodyA];
         Body& B = w.bodies[ct.bodyB];
         if (A.type != BodyType::dynamic_body && B.type != BodyType::dynamic_body) return false;
@@ -430,8 +452,8 @@ void resolveImpacts(WorldState& w, float dt) {
             A.v = vAAfter - (tHit + halfSubstep) * accA;
             A.w = static_cast<float>(r.wB);
         }
-        // Each body's velocity changes at its first impact of the step
-        // (below, "Cascades").
+        // Each body's velocity changes at its earliest impact of the step
+        // (shiftStart).
         if (bTakes) shiftStart(B, ct.bodyB, tHit, vB0 - vBAfter, wB0 - B.w);
         if (aTakes) shiftStart(A, ct.bodyA, tHit, vA0 - vAAfter, wA0 - A.w);
         // The solver must not undo the bounce with stale warm-start impulses.

@@ -51,6 +51,8 @@ struct WorldState {
     std::vector<ContactLook> collideLooks;     ///< per gathered contact: its look (contact.cpp)
     std::vector<std::uint32_t> impactChanged;
     std::vector<float> impactTime, impactBodyTime;
+    std::vector<Vec2> impactBodyDv;   ///< per body slot: its change of velocity in the impact stage
+    std::vector<float> impactBodyDw;  ///< ... and of angular velocity
     std::vector<int> impactStruckBodies, impactStruckContacts;  ///< what the last impact stage wrote
     // The impact stage's shock pass (impact_stage.cpp): scratch, kept so a
     // step allocates nothing once grown. shockLocal is per body slot, −1

@@ -235,6 +235,32 @@ TEST(OverlapPiles, OnTheGround) {
             }
 }
 
+// Twelve capsules created at one point 5 or 6 m up part on the way down but
+// land as a lump still overlapping by 2 to 18 cm. The impact stage struck
+// those overlaps as impacts, one pair after another along their alternating
+// normals, and passed the landing up through the lump: the top capsules left
+// it at 5 to 7 m/s up and 9 m/s sideways (no energy was made: the lump's
+// bottom stopped dead). A contact that has overlapped since its first touch
+// is now no impact (Contact::overlapFromStart, impact_stage.hpp); the
+// solver's rows stop its closing and push it apart.
+// These are the three worst of 100 such piles (seeds 1001 to 1199, odd; 12
+// capsules from 4 m plus the seed's remainder by 3) before the change: 7.1,
+// 6.8 and 5.4 m/s beyond a free fall plus the cap, rising 1.6, 2.8 and
+// 0.37 m; 14 of the 100 broke the speed bound then, none after (one still
+// rises 0.59 m; docs/validation.md, "Overlaps that separate gently"). The
+// issue's bounds, no tolerance added.
+TEST(OverlapPiles, ALandingLumpIsNotThrownThroughItsOverlaps) {
+    for (const auto& [seed, height] : {std::pair{1059u, 6.0f}, std::pair{1121u, 5.0f}, std::pair{1181u, 5.0f}}) {
+        const std::string what = "12 capsules at one point " + std::to_string(static_cast<int>(height)) +
+                                 " m up, seed " + std::to_string(seed);
+        const PileFigures f = airPile(Kind::capsule, 12, height, seed);
+        print(f, what);
+        EXPECT_LE(f.rise, 0.5f) << what;
+        EXPECT_LE(f.speedExcess, 0.0f) << what;
+        EXPECT_LE(f.energyRatio, 1.02f) << what;
+    }
+}
+
 // Of 50 capsules created at one point 5 m up (seed 2003) the pile landed as
 // one lump and bounced back up almost elastically: one capsule rose 1.63 m
 // above where it was created and moved 2.0 m/s faster than a fall from its
