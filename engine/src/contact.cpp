@@ -12,6 +12,7 @@
 
 #include "contact_persistence.hpp"
 #include "impact_stage.hpp"
+#include "lost_load.hpp"
 #include "seams.hpp"
 #include "world_state.hpp"
 
@@ -411,85 +412,16 @@ void destroyContact(WorldState& w, int c, bool emitEvents) {
     w.contacts.release(c);
 }
 
-namespace {
-
-/// A load a destroyed contact no longer puts on a body: the impulse it gave
-/// the body last step (N·s; along its normal, towards the body).
-struct LostLoad {
-    int body;
-    Vec2 impulse;
-};
-
-/// Takes the lost loads out of the warm starts of the contacts that carried
-/// them, body by body down the load path. A body's contacts that pushed it
-/// against a lost load L (their impulse's component along −L, s_i = λ_i·c_i)
-/// held it up; together they now carry |L| less, each its share:
-/// λ_i ← λ_i·(1 − r), r = min(1, |L| / Σ s_i), friction scaled alike. The
-/// push each such contact no longer gives the body at its other end is that
-/// body's lost load in turn. A static or kinematic body ends the path. Each
-/// body is visited once, in the order its first lost load reached it.
-void releaseLostLoads(WorldState& w, std::vector<LostLoad>& lost) {
-    for (std::size_t k = 0; k < lost.size(); ++k) {
-        const int b = lost[k].body;
-        const Vec2 load = lost[k].impulse;
-        const float size = length(load);
-        if (!(size > 0.0f)) continue;
-        const Vec2 against = (-1.0f / size) * load;
-        float held = 0.0f;  // Σ s_i
-        auto pushOn = [&](const Contact& ct) { return ct.bodyB == b ? ct.manifold.normal : -ct.manifold.normal; };
-        for (int c : w.bodies[b].contacts) {
-            const Contact& ct = w.contacts[c];
-            if (!ct.touching || ct.isSensor) continue;
-            const float along = dot(pushOn(ct), against);
-            if (along > 0.0f) held += (ct.normalImpulse[0] + ct.normalImpulse[1]) * along;
-        }
-        if (!(held > 0.0f)) continue;
-        const float r = std::min(1.0f, size / held);
-        for (int c : w.bodies[b].contacts) {
-            Contact& ct = w.contacts[c];
-            if (!ct.touching || ct.isSensor) continue;
-            const Vec2 push = pushOn(ct);
-            if (!(dot(push, against) > 0.0f)) continue;
-            const float taken = r * (ct.normalImpulse[0] + ct.normalImpulse[1]);
-            for (int j = 0; j < 2; ++j) {
-                ct.normalImpulse[j] *= 1.0f - r;
-                ct.tangentImpulse[j] *= 1.0f - r;
-            }
-            const int other = ct.bodyA == b ? ct.bodyB : ct.bodyA;
-            if (w.bodies[other].type != BodyType::dynamic_body) continue;
-            // The push this contact gave `other`, opposite to the one on b.
-            const Vec2 lostThere = -taken * push;
-            auto it = std::find_if(lost.begin(), lost.end(), [&](const LostLoad& l) { return l.body == other; });
-            if (it == lost.end())
-                lost.push_back({other, lostThere});
-            else if (it - lost.begin() > static_cast<std::ptrdiff_t>(k))
-                it->impulse += lostThere;
-        }
-    }
-}
-
-}  // namespace
-
 void destroyBodyContacts(WorldState& w, int body, int shape) {
     // A copy: destroyContact edits the body's list.
     const std::vector<int> list = w.bodies[body].contacts;
-    // A touching contact the game takes away takes its load with it; the
-    // contacts below it keep impulses found for that load, re-applied as
-    // their warm start in every substep (Box2D v3's Warm Start Energy: two
-    // circles left under a destroyed one 100 times as heavy rose at up to
-    // 0.94 m/s). The lost loads are taken out of them once the contacts
-    // are gone.
+    // A touching contact the game takes away takes its load with it
+    // (lost_load.hpp), taken out of the others once the contacts are gone.
     std::vector<LostLoad> lost;
     for (int c : list) {
         const Contact& ct = w.contacts[c];
         if (shape != kNullIndex && ct.shapeA != shape && ct.shapeB != shape) continue;
-        const float impulse = ct.normalImpulse[0] + ct.normalImpulse[1];
-        if (ct.touching && !ct.isSensor && impulse > 0.0f) {
-            if (w.bodies[ct.bodyB].type == BodyType::dynamic_body)
-                lost.push_back({ct.bodyB, impulse * ct.manifold.normal});
-            if (w.bodies[ct.bodyA].type == BodyType::dynamic_body)
-                lost.push_back({ct.bodyA, -impulse * ct.manifold.normal});
-        }
+        addContactLoss(w, ct, lost);
         destroyContact(w, c, true);
     }
     releaseLostLoads(w, lost);

@@ -3,6 +3,7 @@
 #include <algorithm>
 
 #include "joint.hpp"
+#include "lost_load.hpp"
 #include "world_state.hpp"
 
 namespace i2d::detail {
@@ -33,6 +34,9 @@ void destroyJoint(WorldState& w, int j) {
     }
     w.solver.jointPlanStale = true;
     Joint& jt = w.joints[j];
+    // The load it carried goes with it (lost_load.hpp).
+    std::vector<LostLoad> lost;
+    addJointLoss(w, jt, lost);
     for (int b : {jt.bodyA, jt.bodyB}) {
         auto& list = w.bodies[b].joints;
         list.erase(std::remove(list.begin(), list.end(), j), list.end());
@@ -44,6 +48,7 @@ void destroyJoint(WorldState& w, int j) {
         }
     }
     w.joints.release(j);
+    releaseLostLoads(w, lost);
 }
 
 }  // namespace i2d::detail

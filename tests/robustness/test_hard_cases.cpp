@@ -652,5 +652,59 @@ TEST(HardCases, CirclesLeftUnderADestroyedHeavyOneDoNotJump) {
     }
 }
 
+// The same for a chain: ten revolute links (capsules 0.8 m long, density 1)
+// holding a disc 100 or 1,000 times as dense, destroyed after 3 s. Warm-
+// started with the impulses found for the disc's weight, the links were
+// thrown up at 4.7 and 36 m/s; a destroyed joint now takes its load out of
+// the joints above it (lost_load.hpp). What is left is the joints' stretch
+// under that weight pulled back in: each soft row pulls its stretch δ back at
+// no more than biasRate·δ (soft_constraint.hpp: ω/(2ζ + hω), the joint hertz
+// capped at a quarter of the substep rate), and along the chain the speeds
+// add: no link faster than biasRate·Σδ, Σδ measured before the disc goes
+// (about 10 and 12 cm: 6.9 and 8.3 m/s; measured 1.9 and 2.3 m/s).
+TEST(HardCases, ChainLeftUnderADestroyedHeavyEndDoesNotJump) {
+    for (float ratio : {100.0f, 1000.0f}) {
+        World world({.enableSleep = false});
+        BodyId previous = world.createBody({});
+        std::vector<BodyId> links;
+        const int count = 10;
+        for (int i = 0; i < count; ++i) {
+            const bool end = i == count - 1;
+            BodyId b = world.createBody(
+                {.type = BodyType::dynamic_body, .position = {0, 19.5f - static_cast<float>(i)}});
+            if (end)
+                world.createCircleShape(b, {.density = ratio}, Circle{{0, 0}, 0.25f});
+            else
+                world.createCapsuleShape(b, {.density = 1.0f}, Capsule{{0, -0.4f}, {0, 0.4f}, 0.05f});
+            world.createRevoluteJoint({.bodyA = previous,
+                                       .bodyB = b,
+                                       .localAnchorA = i == 0 ? Vec2{0, 20} : Vec2{0, -0.5f},
+                                       .localAnchorB = {0, 0.5f}});
+            links.push_back(b);
+            previous = b;
+        }
+        for (int i = 0; i < 180; ++i) world.step(1.0f / 60.0f);
+        // Unstretched, the disc's hinge hangs count − 1 metres below the anchor.
+        const float hinge = world.transform(links.back()).p.y + 0.5f;
+        const float stretch = (20.0f - hinge) - static_cast<float>(count - 1);
+        ASSERT_GT(stretch, 0.01f) << "the heavy disc stretches the chain";
+        const WorldSettings& set = world.settings();
+        const float h = 1.0f / 60.0f / static_cast<float>(set.substeps);
+        const float omega = 2.0f * 3.14159265f * std::min(set.jointHertz, 0.25f / h);
+        const float bound = omega / (2.0f * set.jointDampingRatio + h * omega) * stretch;
+        world.destroyBody(links.back());
+        links.pop_back();
+        float fastest = 0.0f;
+        for (int i = 0; i < 180; ++i) {
+            world.step(1.0f / 60.0f);
+            for (BodyId b : links) fastest = std::max(fastest, length(world.linearVelocity(b)));
+        }
+        std::printf(
+            "[figure] chain under a %.0fx disc, destroyed: stretch %.3f m, fastest link %.3f m/s (bound %.3f)\n",
+            static_cast<double>(ratio), stretch, fastest, bound);
+        EXPECT_LE(fastest, bound) << ratio;
+    }
+}
+
 }  // namespace
 }  // namespace i2d

@@ -106,7 +106,9 @@ public:
     /// Destroys the body with its shapes, their contacts and the joints
     /// attached to it, waking the bodies at the other end of those joints
     /// (locked). Touching contacts add their end events to the event buffers.
-    /// The handle becomes stale.
+    /// The load the body put on the contacts and joints below it is taken out
+    /// of their warm start, so what it rested on does not jump. The handle
+    /// becomes stale.
     void destroyBody(BodyId id);
     /// True when the handle names a live body; never throws.
     bool isValid(BodyId id) const;

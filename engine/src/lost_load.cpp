@@ -1,0 +1,100 @@
+// Loads a destroyed contact or joint takes away (lost_load.hpp says why).
+#include "lost_load.hpp"
+
+#include <algorithm>
+#include <cstddef>
+
+#include "world_state.hpp"
+
+namespace i2d::detail {
+
+namespace {
+
+bool movable(const WorldState& w, int b) { return w.bodies[b].type == BodyType::dynamic_body; }
+
+/// Whether the joint's point impulse (JointImpulses::linear, on B, world) is
+/// the load it carries between its bodies.
+bool carriesPointLoad(const Joint& jt) {
+    return jt.type == JointType::revolute || jt.type == JointType::weld || jt.type == JointType::motor;
+}
+
+/// Adds `impulse` to body b's lost load; a load that reaches a body already
+/// visited (at or before `visited`) is left.
+void addLoss(std::vector<LostLoad>& lost, int b, Vec2 impulse, std::size_t visited) {
+    auto it = std::find_if(lost.begin(), lost.end(), [&](const LostLoad& l) { return l.body == b; });
+    if (it == lost.end())
+        lost.push_back({b, impulse});
+    else if (static_cast<std::size_t>(it - lost.begin()) >= visited)
+        it->impulse += impulse;
+}
+
+}  // namespace
+
+void addContactLoss(const WorldState& w, const Contact& ct, std::vector<LostLoad>& lost) {
+    const float impulse = ct.normalImpulse[0] + ct.normalImpulse[1];
+    if (!ct.touching || ct.isSensor || !(impulse > 0.0f)) return;
+    // The normal points from A to B: the contact pushed B along it.
+    if (movable(w, ct.bodyB)) addLoss(lost, ct.bodyB, impulse * ct.manifold.normal, 0);
+    if (movable(w, ct.bodyA)) addLoss(lost, ct.bodyA, -impulse * ct.manifold.normal, 0);
+}
+
+void addJointLoss(const WorldState& w, const Joint& jt, std::vector<LostLoad>& lost) {
+    if (!carriesPointLoad(jt)) return;
+    const Vec2 p = jt.impulses.linear;
+    if (p.x == 0.0f && p.y == 0.0f) return;
+    if (movable(w, jt.bodyB)) addLoss(lost, jt.bodyB, p, 0);
+    if (movable(w, jt.bodyA)) addLoss(lost, jt.bodyA, -p, 0);
+}
+
+void releaseLostLoads(WorldState& w, std::vector<LostLoad>& lost) {
+    for (std::size_t k = 0; k < lost.size(); ++k) {
+        const int b = lost[k].body;
+        const Vec2 load = lost[k].impulse;
+        const float size = length(load);
+        if (!(size > 0.0f)) continue;
+        const Vec2 against = (-1.0f / size) * load;
+        // The push of a contact or joint on b.
+        auto pushOn = [&](const Contact& ct) { return ct.bodyB == b ? ct.manifold.normal : -ct.manifold.normal; };
+        auto jointOn = [&](const Joint& jt) { return jt.bodyB == b ? jt.impulses.linear : -jt.impulses.linear; };
+        float held = 0.0f;  // Σ s_i
+        for (int c : w.bodies[b].contacts) {
+            const Contact& ct = w.contacts[c];
+            if (!ct.touching || ct.isSensor) continue;
+            const float along = dot(pushOn(ct), against);
+            if (along > 0.0f) held += (ct.normalImpulse[0] + ct.normalImpulse[1]) * along;
+        }
+        for (int j : w.bodies[b].joints) {
+            const Joint& jt = w.joints[j];
+            if (carriesPointLoad(jt)) held += std::max(dot(jointOn(jt), against), 0.0f);
+        }
+        if (!(held > 0.0f)) continue;
+        const float r = std::min(1.0f, size / held);
+        // What a contact or joint gives up on b (ΔJ on b) is what the body at
+        // its other end no longer gets: that body's lost load.
+        for (int c : w.bodies[b].contacts) {
+            Contact& ct = w.contacts[c];
+            if (!ct.touching || ct.isSensor) continue;
+            const Vec2 push = pushOn(ct);
+            if (!(dot(push, against) > 0.0f)) continue;
+            const float taken = r * (ct.normalImpulse[0] + ct.normalImpulse[1]);
+            for (int i = 0; i < 2; ++i) {
+                ct.normalImpulse[i] *= 1.0f - r;
+                ct.tangentImpulse[i] *= 1.0f - r;
+            }
+            const int other = ct.bodyA == b ? ct.bodyB : ct.bodyA;
+            if (movable(w, other)) addLoss(lost, other, -taken * push, k + 1);
+        }
+        for (int j : w.bodies[b].joints) {
+            Joint& jt = w.joints[j];
+            if (!carriesPointLoad(jt)) continue;
+            const float support = dot(jointOn(jt), against);
+            if (!(support > 0.0f)) continue;
+            const Vec2 change = (-r * support) * against;  // its support along −L, less
+            jt.impulses.linear += jt.bodyB == b ? change : -change;
+            const int other = jt.bodyA == b ? jt.bodyB : jt.bodyA;
+            if (movable(w, other)) addLoss(lost, other, change, k + 1);
+        }
+    }
+}
+
+}  // namespace i2d::detail

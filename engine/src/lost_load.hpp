@@ -1,0 +1,55 @@
+// Loads a destroyed contact or joint takes away from the warm starts of the
+// contacts and joints that carried it.
+//
+// A contact or joint keeps the impulse of its last step as the warm start of
+// the next, re-applied in every substep. When the game destroys one that
+// carried a load (a body or shape destroyed, a body disabled, a filter or a
+// body type changed, a joint destroyed), the contacts and joints below it
+// keep impulses found for that load; warm-started with them, their bodies
+// jump: two circles left under a destroyed one 100 times as heavy rose at up
+// to 0.94 m/s (Box2D v3's Warm Start Energy sample), a chain of ten links
+// whose end 1,000 times as heavy was destroyed at 36 m/s. The load is taken
+// out along its path instead (releaseLostLoads). Clearing every warm start
+// the path reaches was measured first: the rest of a pile sagged without its
+// loads and pushed back, a 40-row pyramid whose top box was destroyed
+// jumping at 0.88 m/s.
+#pragma once
+
+#include <vector>
+
+#include "impulse2d/math.hpp"
+
+namespace i2d::detail {
+
+struct WorldState;
+struct Contact;
+struct Joint;
+
+/// A load a destroyed contact or joint no longer puts on a body: the
+/// impulse it gave the body in each substep of its last step (N·s).
+struct LostLoad {
+    int body;
+    Vec2 impulse;
+};
+
+/// Appends the loads contact `ct`, about to be destroyed, took off its
+/// movable bodies (none unless it touched and pushed).
+void addContactLoss(const WorldState& w, const Contact& ct, std::vector<LostLoad>& lost);
+
+/// The same for joint `jt` (its point impulse: revolute, weld and motor
+/// joints; the others carry their loads along axes not followed here).
+void addJointLoss(const WorldState& w, const Joint& jt, std::vector<LostLoad>& lost);
+
+/// Takes the lost loads out of the warm starts of the contacts and joints
+/// that carried them, body by body down the load path. A body's contacts
+/// and joints that held it against a lost load L (the part of their impulse
+/// on it along −L, s_i) together carry |L| less, each its share: a contact's
+/// impulse (normal and friction) is scaled by 1 − r, a joint's loses r·s_i
+/// along −L, with r = min(1, |L| / Σ s_i). What each no longer gives the body
+/// at its other end is that body's lost load in turn; a static or kinematic
+/// body ends the path. Each body is visited once, in the order its first
+/// lost load reached it (a load reaching it later, round a loop of
+/// contacts, is left).
+void releaseLostLoads(WorldState& w, std::vector<LostLoad>& lost);
+
+}  // namespace i2d::detail
