@@ -32,13 +32,14 @@ struct LostLoad {
     Vec2 impulse;
 };
 
-/// Appends the loads contact `ct`, about to be destroyed, took off its
-/// movable bodies (none unless it touched and pushed).
-void addContactLoss(const WorldState& w, const Contact& ct, std::vector<LostLoad>& lost);
+/// Adds the loads contact `ct`, about to be destroyed, took off its movable
+/// bodies (none unless it touched and pushed). The list is released (and
+/// WorldState::lostLoadPlace reset) by releaseLostLoads, called next.
+void addContactLoss(WorldState& w, const Contact& ct, std::vector<LostLoad>& lost);
 
 /// The same for joint `jt` (its point impulse: revolute, weld and motor
 /// joints; the others carry their loads along axes not followed here).
-void addJointLoss(const WorldState& w, const Joint& jt, std::vector<LostLoad>& lost);
+void addJointLoss(WorldState& w, const Joint& jt, std::vector<LostLoad>& lost);
 
 /// Takes the lost loads out of the warm starts of the contacts and joints
 /// that carried them, body by body down the load path. A body's contacts
@@ -47,7 +48,8 @@ void addJointLoss(const WorldState& w, const Joint& jt, std::vector<LostLoad>& l
 /// impulse (normal and friction) is scaled by 1 − r, a joint's loses r·s_i
 /// along −L, with r = min(1, |L| / Σ s_i). What each no longer gives the body
 /// at its other end is that body's lost load in turn; a static or kinematic
-/// body ends the path. Each body is visited once, in the order its first
+/// body ends the path, and so does a body whose supports the load is less
+/// than 5 % of (r < 0.05: their warm start is nearly right). Each body is visited once, in the order its first
 /// lost load reached it (a load reaching it later, round a loop of
 /// contacts, is left).
 void releaseLostLoads(WorldState& w, std::vector<LostLoad>& lost);

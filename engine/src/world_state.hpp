@@ -60,6 +60,9 @@ struct WorldState {
     std::vector<ShockEdge> shockEdges;
     std::vector<int> shockLocal, shockBodies, shockLevel, shockOffset, shockAdjacent, shockFill;
     std::vector<ShockSaved> shockSaved;
+    /// Per body slot: its place in the lost loads being released
+    /// (lost_load.cpp), −1 outside a release.
+    std::vector<int> lostLoadPlace;
     std::vector<ContactLook> activeLooks;  ///< per active contact (contact.hpp)
 
     // Callbacks (World::setCustomFilter, setPreSolve); empty when not set.
