@@ -30,6 +30,9 @@ void addLoss(WorldState& w, std::vector<LostLoad>& lost, int b, Vec2 impulse, st
     if (place.size() < static_cast<std::size_t>(w.bodies.capacity()))
         place.resize(static_cast<std::size_t>(w.bodies.capacity()), -1);
     int& at = place[static_cast<std::size_t>(b)];
+    // (A place left by a walk that never ended names another list.)
+    if (at >= 0 && !(static_cast<std::size_t>(at) < lost.size() && lost[static_cast<std::size_t>(at)].body == b))
+        at = -1;
     if (at < 0) {
         at = static_cast<int>(lost.size());
         lost.push_back({b, impulse});
