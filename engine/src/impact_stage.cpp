@@ -255,16 +255,7 @@ ImpactLook lookAtImpacts(const WorldState& w, const Contact& ct, bool touching) 
 }
 
 bool passesOverImpacts(const WorldState& w, const Contact& ct, bool touching) {
-    if (!touching || ct.isSensor || ct.manifold.pointCount == 0 || ct.overlapFromStart) return true;
-    const Body& a = w.bodies[ct.bodyA];
-    const Body& b = w.bodies[ct.bodyB];
-    const float threshold = w.settings.impactThreshold;
-    for (int j = 0; j < ct.manifold.pointCount; ++j) {
-        const Vec2 p = ct.manifold.points[j].point;
-        const Vec2 dv = (b.v + cross(b.w, p - b.center)) - (a.v + cross(a.w, p - a.center));
-        if (dot(dv, ct.manifold.normal) < -threshold) return false;
-    }
-    return true;  // (NaN compares false: passed over, as the full test would)
+    return lookAtImpacts(w, ct, touching).passOver;
 }
 
 void resolveImpacts(WorldState& w, float dt) {
@@ -463,10 +454,9 @@ void resolveImpacts(WorldState& w, float dt) {
             ct.normalImpulse[0] = ct.normalImpulse[1] = 0.0f;
             ct.tangentImpulse[0] = ct.tangentImpulse[1] = 0.0f;
         }
-        // The manifold keeps its start-of-step gap on purpose: the shift
-        // above puts the bodies where the exact flight-and-rebound would be
-        // at the step's end, and an updated (now negative) separation would
-        // make the solver push them apart and add energy.
+        // The manifold keeps its start-of-step gap: the rows add what the
+        // shifts above opened or closed, less a struck pair's rebound since
+        // t*, which is flight, not overlap (contact_row.hpp, impactShift).
         return true;
     };
 
