@@ -24,6 +24,7 @@ void linkJoint(WorldState& w, int j) {
     }
     wakeBody(w, a);
     wakeBody(w, b);
+    judgeStretch(w, j);
 }
 
 void destroyJoint(WorldState& w, int j) {
@@ -54,6 +55,22 @@ void destroyJoint(WorldState& w, int j) {
 }  // namespace i2d::detail
 
 namespace i2d::detail {
+
+bool holdsPoint(const Joint& joint) {
+    if (joint.type == JointType::revolute) return true;
+    if (joint.type != JointType::weld) return false;
+    const WeldJointDef& def = std::get<WeldJointDef>(joint.def);
+    return def.linearHertz == 0.0f && def.angularHertz == 0.0f;
+}
+
+void judgeStretch(WorldState& w, int j) {
+    Joint& joint = w.joints[j];
+    if (joint.stretched || w.settings.positionCorrection != PositionCorrection::soft_step || !holdsPoint(joint)) return;
+    const JointAnchors anchors = jointAnchors(w, joint);
+    if (!(lengthSquared(anchors.b - anchors.a) > kStretchedJointError * kStretchedJointError)) return;
+    joint.stretched = true;
+    w.solver.jointPlanStale = true;
+}
 
 JointAnchors jointAnchors(const WorldState& w, const Joint& joint) {
     const Transform& xfA = w.bodies[joint.bodyA].xf;

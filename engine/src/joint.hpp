@@ -54,6 +54,12 @@ struct Joint {
     /// Kept here, not in the plan, so that a kept plan and one made again
     /// decide alike; a change makes the plan again for the next step.
     bool deepHinge = false;
+    /// Left by the game with its point open wider than kStretchedJointError
+    /// (judgeStretch), and not yet closed within half of it
+    /// (stillStretched): the joint plan puts it in an exact tree whatever the
+    /// masses, and a step whose trees hold such a joint solves them rigid and
+    /// closes their error on pseudo-velocities (pushJointTrees).
+    bool stretched = false;
     std::uintptr_t userData = 0;
 };
 
@@ -163,9 +169,9 @@ struct JointSlot {
     std::uint8_t equalityRows = 0;        ///< rows the exact tree solve could take (joint_tree.cpp)
     bool rowsOnlyAtLimit = false;         ///< those rows are a limit's, handed over while it holds (a rope)
     bool inTree = false;
-    bool wide = false;
-    bool deepHinge =
-        false;  ///< kept off the wide path as a deep joint (Joint::deepHinge)  ///< solved eight at a time (wide_revolute.cpp), with no JointConstraint
+    bool wide = false;       ///< solved eight at a time (wide_revolute.cpp), with no JointConstraint
+    bool deepHinge = false;  ///< kept off the wide path as a deep joint (Joint::deepHinge)
+    bool stretched = false;  ///< Joint::stretched when the plan was made: its tree is solved exactly
 };
 
 /// What a joint's solve needs besides its row and its bodies' states.
@@ -185,6 +191,21 @@ void linkJoint(WorldState& w, int joint);
 /// bodies and lets the broadphase look at their shapes again (they may
 /// collide now).
 void destroyJoint(WorldState& w, int joint);
+
+/// Whether a joint's equality rows hold a point: a revolute joint's, a
+/// weld's without springs (the rows of other joints are soft or judged along
+/// their own axes). Only such a point makes a deep or a stretched joint.
+bool holdsPoint(const Joint& joint);
+
+/// Makes joint `j` a stretched joint (Joint::stretched) when its point is
+/// open wider than kStretchedJointError in soft_step. Called where the game
+/// sets where the bodies are or where the anchors are: a joint created, a
+/// body moved, a definition or the settings changed. An error the solver
+/// leaves is the soft rows' to close; an error the game makes can be any
+/// size, and closed by the soft rows at biasRate·C it flung a chain created
+/// with its joints 1 m open at 246 m/s, 37 times its energy
+/// (docs/joints.md, "Stretched joints").
+void judgeStretch(WorldState& w, int j);
 
 /// A joint's two anchor points in world coordinates at the bodies' current
 /// poses (for a motor joint: A's target point and B's origin; a mouse joint:

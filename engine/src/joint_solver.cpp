@@ -105,16 +105,6 @@ void packWideRows(const WorldState& w, SolverArrays& s) {
     s.wideBlockStart[kJointColours + 1] = static_cast<int>(s.wideRevolutes.size());
 }
 
-/// Whether a joint's point may make it a deep joint (isDeepJoint): a
-/// revolute joint's, or a weld's without springs. The rows of other joints
-/// are soft or judged along their own axes.
-bool pointJudged(const Joint& joint) {
-    if (joint.type == JointType::revolute) return true;
-    if (joint.type != JointType::weld) return false;
-    const WeldJointDef& def = std::get<WeldJointDef>(joint.def);
-    return def.linearHertz == 0.0f && def.angularHertz == 0.0f;
-}
-
 void fillBody(const WorldState& w, int body, int& index, float& invMass, float& invI) {
     const Body& b = w.bodies[body];
     // Awake bodies have a solver state; a static or sleeping body does not move.
@@ -165,7 +155,8 @@ void planJoints(WorldState& w) {
         }
         slot.equalityRows = static_cast<std::uint8_t>(equalityRowCount(joint));
         slot.rowsOnlyAtLimit = rowsOnlyAtLimit(joint);
-        slot.wide = wideCandidate(w, joint, bA, bB, slot);
+        slot.stretched = joint.stretched;
+        slot.wide = wideCandidate(w, joint, bA, bB, slot) && !joint.stretched;
         if (slot.wide && joint.deepHinge) slot.wide = false, slot.deepHinge = true;
         for (float inverse : {slot.invMassA, slot.invMassB})
             if (inverse > 0.0f) {
@@ -215,6 +206,7 @@ void prepareJoints(WorldState& w, float dt) {
     std::vector<JointConstraint>& rows = s.joints;
     rows.clear();
     s.anyDeepJoint = false;
+    s.pushTrees = false;
     const bool warm = w.settings.enableWarmStarting;
     for (const JointSlot& slot : slots) {
         if (slot.wide) continue;
@@ -251,7 +243,15 @@ void prepareJoints(WorldState& w, float dt) {
         const double bound = double(jc.invMassA) + jc.invMassB + double(jc.invIA) * lengthSquared(jc.rA) +
                              double(jc.invIB) * lengthSquared(jc.rB);
         jc.singlePrecision = bound < kSinglePrecisionBound;
-        jc.deep = !jc.inTree && pointJudged(joint) && isDeepJoint(w, joint, jc.deltaCenter + jc.rB - jc.rA);
+        if (holdsPoint(joint)) {
+            const Vec2 separation = jc.deltaCenter + jc.rB - jc.rA;
+            jc.deep = !jc.inTree && isDeepJoint(w, joint, separation);
+            if (joint.stretched && !stillStretched(separation)) {  // back to the soft rows from the next step
+                w.joints[slot.joint].stretched = false;
+                s.jointPlanStale = true;
+            }
+            s.pushTrees = s.pushTrees || (jc.inTree && joint.stretched);
+        }
         s.anyDeepJoint = s.anyDeepJoint || jc.deep;
         if (slot.deepHinge && !jc.deep) {  // back on the wide path from the next step
             w.joints[slot.joint].deepHinge = false;
@@ -349,7 +349,9 @@ void solveJoints(WorldState& w, const JointContext& pass) {
         });
     s.wideFrameAt = s.positionUpdates;
     clearZeroState(s);
-    solveJointTrees(w, pass, s.positionUpdates);
+    // A step that closes the trees' error on pseudo-velocities (pushJointTrees)
+    // solves them rigid in the biased pass.
+    solveJointTrees(w, s.pushTrees && pass.pass == SolvePass::soft_bias ? rigid : pass, s.positionUpdates);
     clearZeroState(s);
 }
 

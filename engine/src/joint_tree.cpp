@@ -207,9 +207,11 @@ void selectTreeJoints(WorldState& w, std::vector<JointSlot>& slots, float leastI
     const int ground = static_cast<int>(s.stateBodies.size());
     const std::size_t bodySlots = static_cast<std::size_t>(ground) + 1;
 
-    // No tree can qualify when the jointed bodies' masses are alike overall:
-    // the common case (a grid, a bridge, a ragdoll of alike parts) stops here.
-    if (!(mostInverseMass >= w.settings.exactJointMassRatio * leastInverseMass)) return;
+    // No tree can qualify when the jointed bodies' masses are alike overall
+    // and no joint is stretched: the common case (a grid, a bridge, a ragdoll
+    // of alike parts) stops here.
+    const bool anyStretched = std::any_of(slots.begin(), slots.end(), [](const JointSlot& jc) { return jc.stretched; });
+    if (!(mostInverseMass >= w.settings.exactJointMassRatio * leastInverseMass) && !anyStretched) return;
 
     // The spanning forest, all immovable bodies one node, in row order.
     t.unionParent.resize(bodySlots);
@@ -249,6 +251,7 @@ void selectTreeJoints(WorldState& w, std::vector<JointSlot>& slots, float leastI
     const float massRatio = w.settings.exactJointMassRatio;
     t.lightest.assign(bodySlots, INFINITY);
     t.heaviest.assign(bodySlots, 0.0f);
+    t.stretched.assign(bodySlots, 0);
     for (int body = 0; body < ground; ++body) {
         const float invMass = w.bodies[s.stateBodies[static_cast<std::size_t>(body)]].invMass;
         const float mass = invMass > 0.0f ? 1.0f / invMass : INFINITY;
@@ -256,12 +259,28 @@ void selectTreeJoints(WorldState& w, std::vector<JointSlot>& slots, float leastI
         t.lightest[root] = std::min(t.lightest[root], mass);
         t.heaviest[root] = std::max(t.heaviest[root], mass);
     }
-    for (JointSlot& jc : slots) {
-        if (!jc.inTree) continue;
+    // And those holding a stretched joint, whatever their masses
+    // (Joint::stretched), unless a joint outside the tree closes a loop
+    // through them: a net of loops created with its joints 1 m open, its
+    // spanning tree solved rigid and pushed while the loops' joints kept
+    // their soft rows, gained 1.4 times what it did with soft rows alone.
+    auto rootOf = [&](const JointSlot& jc) {
         const int a = movingSide(jc.a, jc.invMassA, jc.invIA, ground);
         const int side = a != ground ? a : movingSide(jc.b, jc.invMassB, jc.invIB, ground);
-        const std::size_t root = static_cast<std::size_t>(findRoot(t.unionParent, side));
-        jc.inTree = t.heaviest[root] >= massRatio * t.lightest[root];
+        return static_cast<std::size_t>(findRoot(t.unionParent, side));
+    };
+    if (anyStretched) {
+        for (const JointSlot& jc : slots)
+            if (jc.inTree && jc.stretched) t.stretched[rootOf(jc)] = 1;
+        for (const JointSlot& jc : slots)
+            if (!jc.inTree && jc.equalityRows > 0 && !jc.rowsOnlyAtLimit &&
+                movingSide(jc.a, jc.invMassA, jc.invIA, ground) != movingSide(jc.b, jc.invMassB, jc.invIB, ground))
+                t.stretched[rootOf(jc)] = 0;
+    }
+    for (JointSlot& jc : slots) {
+        if (!jc.inTree) continue;
+        const std::size_t root = rootOf(jc);
+        jc.inTree = t.heaviest[root] >= massRatio * t.lightest[root] || t.stretched[root];
     }
 }
 
@@ -370,7 +389,8 @@ namespace {
 
 /// The blocks of every node at the current positions (H_ii and the links),
 /// then their elimination, leaves first.
-void factor(const WorldState& w, SolverArrays& s, JointTrees& t, double gammaScale, bool newPositions) {
+void factor(const WorldState& w, SolverArrays& s, JointTrees& t, double gammaScale, bool newPositions,
+            bool translateOnly = false) {
     std::vector<TreeNode>& nodes = t.nodes;
     BodyState& zero = s.states.back();
     t.holdsLimits = false;
@@ -381,7 +401,7 @@ void factor(const WorldState& w, SolverArrays& s, JointTrees& t, double gammaSca
         setZero(node.link);
         // M = diag(m, m, I); a degree of freedom the body lacks (zero inverse)
         // gets 1 and zero coupling, so its velocity change is zero.
-        const float invMass = b.invMass, invI = b.invInertia;
+        const float invMass = b.invMass, invI = translateOnly ? 0.0f : b.invInertia;
         node.mask[0] = node.mask[1] = invMass != 0.0f ? 1.0f : 0.0f;
         node.mask[2] = invI != 0.0f ? 1.0f : 0.0f;
         node.diag[0][0] = node.diag[1][1] = invMass != 0.0f ? 1.0 / invMass : 1.0;
@@ -435,7 +455,8 @@ void factor(const WorldState& w, SolverArrays& s, JointTrees& t, double gammaSca
         const int n = rows.count;
         const int limitRow = heldLimitRow(jc);
         // Γ = γ·K with K = J_A M_A⁻¹ J_Aᵀ + J_B M_B⁻¹ J_Bᵀ, the joint's own block.
-        const double invA[3] = {jc.invMassA, jc.invMassA, jc.invIA}, invB[3] = {jc.invMassB, jc.invMassB, jc.invIB};
+        const double invA[3] = {jc.invMassA, jc.invMassA, translateOnly ? 0.0 : jc.invIA},
+                     invB[3] = {jc.invMassB, jc.invMassB, translateOnly ? 0.0 : jc.invIB};
         // A row no body can act on (an angle row between bodies that do not
         // turn): moot, as in the joint's own sweep. Left in, its zero pivot
         // made the whole joint's block singular and dropped every row of it.
@@ -505,7 +526,7 @@ void factor(const WorldState& w, SolverArrays& s, JointTrees& t, double gammaSca
 namespace {
 
 /// One exact solve of the trees with the factorization in `t`.
-void solveFactored(SolverArrays& s, JointTrees& t, const RowBias& rb, float invH) {
+void solveFactored(SolverArrays& s, JointTrees& t, const RowBias& rb, float invH, bool push = false) {
     std::vector<TreeNode>& nodes = t.nodes;
     BodyState& zero = s.states.back();
 
@@ -525,8 +546,10 @@ void solveFactored(SolverArrays& s, JointTrees& t, const RowBias& rb, float invH
                               double(rows.jB[r][1]) * sB.v.y + double(rows.jB[r][2]) * sB.w;
             const double gl = node.compliance[r][0] * lambda[0] + node.compliance[r][1] * lambda[1] +
                               node.compliance[r][2] * lambda[2];
-            // A held limit not reached yet closes its gap within the substep.
-            const double bias = node.speculative && r == heldLimitRow(jc) ? double(invH) : double(rb.bias);
+            // A held limit not reached yet closes its gap within the substep
+            // (a push does not: the gap is no error).
+            const bool gap = node.speculative && r == heldLimitRow(jc);
+            const double bias = gap ? (push ? 0.0 : double(invH)) : double(rb.bias);
             node.rhs[r] = -(jv + bias * rows.error[r] + gl);
         }
     }
@@ -632,6 +655,53 @@ void solveJointTrees(WorldState& w, const JointContext& ctx, int positions) {
         if (jc.treeLimit == 0) continue;
         jc.impulses.lower = std::max(jc.impulses.lower, 0.0f);
         jc.impulses.upper = std::max(jc.impulses.upper, 0.0f);
+    }
+}
+
+// A push moves the bodies without turning them. Turning is linear in the
+// angle only for small angles, and the least correction in the bodies'
+// masses turns a body light in rotation: a disc of radius 0.2 m hinged
+// 0.5 m from its centre turns 12 times as readily as it moves (I⁻¹r² against
+// m⁻¹), so a joint 1 m open was to be closed by turning discs some 2 rad,
+// which moved their anchors elsewhere; pushes so made left a 40-disc chain
+// 31 m open after 2 s. Translated only, the same chain closes within half a
+// second (docs/joints.md, "Stretched joints"). A row only turning can act on
+// (a weld's angle) is moot in the push and left to the soft rows once the
+// points are closed.
+void pushJointTrees(WorldState& w, const JointContext& ctx) {
+    SolverArrays& s = w.solver;
+    JointTrees& t = s.trees;
+    if (t.nodes.empty()) return;
+    // The pseudo-velocities take the real ones' place for the solve.
+    std::vector<BodyState>& saved = t.savedStates;
+    std::vector<JointImpulses>& savedImpulses = t.savedImpulses;
+    saved.clear();
+    savedImpulses.clear();
+    for (const TreeNode& node : t.nodes) {
+        if (node.row >= 0) {
+            savedImpulses.push_back(s.joints[static_cast<std::size_t>(node.row)].impulses);
+            continue;
+        }
+        const std::size_t b = static_cast<std::size_t>(node.body);
+        saved.push_back(s.states[b]);
+        s.states[b].v = s.biasV[b];
+        s.states[b].w = s.biasW[b];
+    }
+    factor(w, s, t, 0.0, false, true);
+    solveFactored(s, t, {ctx.pushFactor * ctx.invH, 1.0f, 0.0f}, ctx.invH, true);
+    t.factoredPositions = -1;  // the next solve factors the bodies as they are
+    std::size_t body = 0, joint = 0;
+    for (const TreeNode& node : t.nodes) {
+        if (node.row >= 0) {
+            s.joints[static_cast<std::size_t>(node.row)].impulses = savedImpulses[joint++];
+            continue;
+        }
+        const std::size_t b = static_cast<std::size_t>(node.body);
+        s.biasV[b] = s.states[b].v;
+        s.biasW[b] = s.states[b].w;
+        s.states[b].v = saved[body].v;
+        s.states[b].w = saved[body].w;
+        ++body;
     }
 }
 

@@ -5,6 +5,7 @@
 // direct solve of the same rows leaves none, in time linear in the joints.
 #pragma once
 
+#include <cstdint>
 #include <vector>
 
 #include "joint_rows.hpp"
@@ -35,6 +36,7 @@ struct JointTrees {
     std::vector<int> unionParent;  ///< scratch of the spanning-forest search
     std::vector<int> adjacency, adjacencyStart, nodeOfBody;
     std::vector<float> lightest, heaviest;  ///< per union-find root (kg)
+    std::vector<std::uint8_t> stretched;    ///< per union-find root: holds a stretched joint
     /// What the factorization in `nodes` was made for (see solveJointTrees).
     int factoredPositions = -1;
     bool factoredSoft = false;
@@ -63,5 +65,12 @@ void buildJointTrees(WorldState& w);
 /// counts the position updates of the step: the factorization is reused
 /// while neither it nor the pass changes.
 void solveJointTrees(WorldState& w, const JointContext& ctx, int positions);
+
+/// Closes the trees' position error on the pseudo-velocities
+/// (SolverArrays::biasV, biasW) at ctx.pushFactor of it per substep, solved
+/// exactly with the bodies translating only: the error of a stretched joint
+/// (Joint::stretched). The velocities and the joints' impulses are left as
+/// they were.
+void pushJointTrees(WorldState& w, const JointContext& ctx);
 
 }  // namespace i2d::detail

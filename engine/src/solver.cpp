@@ -475,7 +475,7 @@ void solve(WorldState& w, float dt) {
             warmStart();
             for (int pass = 0; pass < kJointSolvePasses; ++pass) joints(SolvePass::soft_bias);
             contacts(SolvePass::soft_bias, h);
-            if (s.anyDeepOverlap || s.anyDeepJoint) {
+            if (s.anyDeepOverlap || s.anyDeepJoint || s.pushTrees) {
                 stopNonFiniteBodies(s);  // (integratePositionsPushed does not look)
                 if (s.anyDeepOverlap) {
                     // The push reads the load its rows carry (deep_overlap.cpp).
@@ -491,6 +491,12 @@ void solve(WorldState& w, float dt) {
                     JointContext push = jointCtx;
                     push.pushFactor = jointCtx.jointSoft.biasRate * h;
                     pushJoints(w, push, true);
+                }
+                // The stretched joints' trees' error, at the same rate (joint_tree.cpp).
+                if (s.pushTrees) {
+                    JointContext push = jointCtx;
+                    push.pushFactor = jointCtx.jointSoft.biasRate * h;
+                    pushJointTrees(w, push);
                 }
                 dropNonFinitePush(s);
                 integratePositionsPushed(s, h, maxSpeed, up);

@@ -86,8 +86,16 @@ void World::setSettings(const WorldSettings& s) {
     // the old speculative distance (Body::boxSlack): measure it again.
     if (s.speculativeDistance != w.settings.speculativeDistance)
         for (int b = 0; b < w.bodies.capacity(); ++b) w.bodies[b].boxSlack = 0.0f;
+    const bool becameSoft = s.positionCorrection == PositionCorrection::soft_step &&
+                            w.settings.positionCorrection != PositionCorrection::soft_step;
     w.settings = s;
     w.solver.jointPlanStale = true;  // the wide path and the exact trees depend on settings
+    // Stretched joints are soft_step's (judgeStretch): judged when it starts.
+    for (int j = 0; j < w.joints.capacity(); ++j) {
+        if (!w.joints[j].alive) continue;
+        if (s.positionCorrection != PositionCorrection::soft_step) w.joints[j].stretched = false;
+        if (becameSoft) detail::judgeStretch(w, j);
+    }
     if (sleepTurnedOff) {
         for (int b = 0; b < w.bodies.capacity(); ++b)
             if (w.bodies[b].alive && !w.bodies[b].awake) detail::wakeBody(w, b);

@@ -176,6 +176,7 @@ void World::setTransform(BodyId id, Vec2 position, float angle) {
     body.xf = {position, makeRot(angle)};
     body.center = transformPoint(body.xf, body.localCenter);
     detail::wakeBody(w, b);
+    for (int j : body.joints) detail::judgeStretch(w, j);  // the game may pull a joint open
     // Bodies touching a moved static body must notice it.
     for (int c : body.contacts) {
         const detail::Contact& ct = w.contacts[c];

@@ -155,6 +155,16 @@ inline bool isDeepJoint(const WorldState& w, const Joint& joint, Vec2 separation
            (touchesThroughContact(w, joint.bodyA) || touchesThroughContact(w, joint.bodyB));
 }
 
+/// A joint the game leaves with its point open wider than this (m) is a
+/// stretched joint (Joint::stretched, judgeStretch in joint.cpp) until its
+/// point closes within half of this (stillStretched).
+inline constexpr float kStretchedJointError = kDeepJointError;
+
+/// Whether a stretched joint whose point is `separation` open stays one.
+inline bool stillStretched(Vec2 separation) {
+    return lengthSquared(separation) > 0.25f * kStretchedJointError * kStretchedJointError;
+}
+
 /// A contact as the API reports it (World::contacts, World::bodyContacts).
 inline ContactData contactData(const WorldState& w, int c) {
     const Contact& ct = w.contacts[c];
