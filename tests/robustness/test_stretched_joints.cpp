@@ -1,0 +1,175 @@
+// Joints the game leaves open (Joint::stretched, docs/joints.md "Stretched
+// joints"): created with their anchors apart, or pulled apart by moving a
+// body. Their error is closed on pseudo-velocities, which move bodies without
+// leaving them a velocity, so closing it gains no energy. Sleeping off.
+#include <gtest/gtest.h>
+
+#include <algorithm>
+#include <cmath>
+#include <cstdio>
+#include <vector>
+
+#include <impulse2d/impulse2d.hpp>
+
+namespace i2d {
+namespace {
+
+constexpr float kDt = 1.0f / 60.0f;
+constexpr float kGravity = 10.0f;
+
+/// Kinetic plus potential energy of `bodies`, the potential measured from `floor`.
+double energy(const World& world, const std::vector<BodyId>& bodies, float floor) {
+    double e = 0.0;
+    for (BodyId b : bodies) {
+        const float w = world.angularVelocity(b);
+        e += 0.5 * world.mass(b) * lengthSquared(world.linearVelocity(b)) + 0.5 * world.rotationalInertia(b) * w * w +
+             world.mass(b) * kGravity * (world.worldCenterOfMass(b).y - floor);
+    }
+    return e;
+}
+
+/// How far a revolute joint's anchors are apart (m).
+float opening(const World& world, JointId j) {
+    const RevoluteJointDef d = world.revoluteJointDef(j);
+    return length(transformPoint(world.transform(world.jointBodyB(j)), d.localAnchorB) -
+                  transformPoint(world.transform(world.jointBodyA(j)), d.localAnchorA));
+}
+
+// Solver2D's Stretched Chain (the reference's hard cases): 40 discs of radius
+// 0.2 m that do not collide, on revolute joints with 1 m links but created 2 m
+// apart, so every joint starts 1 m open (the first 1.5 m), hung from a static
+// anchor; the bar: back to its length within 1 s, no energy gained. Before
+// stretched joints the soft rows closed every joint at biasRate·1 m = 68 m/s
+// and flung the discs at 246 m/s; the energy peaked at 36,000 J over the start.
+TEST(StretchedJoints, AChainCreatedStretchedClosesWithinASecondWithoutGainingEnergy) {
+    for (int substeps : {4, 1}) {
+        WorldSettings settings;
+        settings.enableSleep = false;
+        settings.substeps = substeps;
+        World world(settings);
+        const float top = 20.0f;
+        BodyId previous = world.createBody({});
+        std::vector<BodyId> discs;
+        std::vector<JointId> joints;
+        for (int i = 0; i < 40; ++i) {
+            BodyId b = world.createBody({.type = BodyType::dynamic_body, .position = {2.0f * (i + 1), top}});
+            world.createCircleShape(b, {.density = 1.0f, .filter = {.groupIndex = -1}}, Circle{{0, 0}, 0.2f});
+            joints.push_back(world.createRevoluteJoint({.bodyA = previous,
+                                                        .bodyB = b,
+                                                        .localAnchorA = i == 0 ? Vec2{0, top} : Vec2{0.5f, 0},
+                                                        .localAnchorB = {-0.5f, 0}}));
+            discs.push_back(b);
+            previous = b;
+        }
+        auto totalOpening = [&] {
+            float sum = 0.0f;
+            for (JointId j : joints) sum += opening(world, j);
+            return sum;
+        };
+        ASSERT_GT(totalOpening(), 40.0f);
+        // The scale of this chain's energy: what it releases hanging straight
+        // down from the anchor, disc i 0.5 + i m below it (1,005 J). The energy
+        // audit's bar (tests/testbed/test_energy_audit.cpp) is 1 % of the energy
+        // a system can give.
+        double scale = 0.0;
+        for (int i = 0; i < 40; ++i) scale += world.mass(discs[static_cast<std::size_t>(i)]) * kGravity * (0.5 + i);
+        const double start = energy(world, discs, top);
+        double peak = start;
+        float closedAtOneSecond = 0.0f;
+        for (int step = 1; step <= 600; ++step) {
+            world.step(kDt);
+            peak = std::max(peak, energy(world, discs, top));
+            if (step == 60) closedAtOneSecond = totalOpening();
+        }
+        std::printf("[figure] stretched chain, %d substeps: open %.3f m at 1 s (of 41.5), energy at most %+.3f J (scale %.0f J)\n",
+                    substeps, static_cast<double>(closedAtOneSecond), peak - start, scale);
+        EXPECT_LE(peak - start, 0.01 * scale) << substeps << " substeps";
+        // Back to its length: the joints' summed opening within 1 % of the
+        // chain's 40 m at 1 s (measured 0.08 m). At one substep a 40-link chain
+        // swept by Gauss-Seidel opens up again as it swings, as one created
+        // closed does (docs/joints.md), so only the default is held to it.
+        if (substeps == 4) {
+            EXPECT_LE(closedAtOneSecond, 0.4f);
+        }
+    }
+}
+
+// A body the game moves 2.2 m away from the body it is hinged to, in mid-air
+// while the pair tumbles: the hinge closes within a few steps and the pair
+// gains no energy (the push's equal and opposite pseudo-impulses move neither
+// the pair's centre of mass nor leave a velocity). Before stretched joints the
+// soft rows closed it at 68 m/s a metre and the pair gained 450 J.
+TEST(StretchedJoints, ABodyMovedAwayFromItsHingeIsPulledBackWithoutGainingEnergy) {
+    World world({.enableSleep = false});
+    BodyId a = world.createBody({.type = BodyType::dynamic_body, .position = {0, 10}});
+    world.createPolygonShape(a, {.density = 1.0f}, makeBox(0.5f, 0.1f));
+    BodyId b = world.createBody({.type = BodyType::dynamic_body, .position = {1, 10}});
+    world.createPolygonShape(b, {.density = 3.0f}, makeBox(0.5f, 0.1f));
+    JointId hinge = world.createRevoluteJoint({.bodyA = a, .bodyB = b, .localAnchorA = {0.5f, 0}, .localAnchorB = {-0.5f, 0}});
+    world.setAngularVelocity(a, 2.0f);
+    for (int i = 0; i < 30; ++i) world.step(kDt);
+    world.setTransform(b, world.position(b) + Vec2{2.0f, 1.0f}, world.angle(b) + 1.0f);
+    ASSERT_GT(opening(world, hinge), 2.0f);
+    const std::vector<BodyId> pair{a, b};
+    const double start = energy(world, pair, 0.0f);
+    // Kinetic energy when moved (tumbling and falling for 0.5 s): 1 % of it
+    // is allowed for the rows' rounding (measured: the energy only falls).
+    double kinetic = start;
+    for (BodyId x : pair) kinetic -= world.mass(x) * kGravity * world.worldCenterOfMass(x).y;
+    double peak = start;
+    int closedAt = -1;
+    for (int step = 1; step <= 120; ++step) {
+        world.step(kDt);
+        peak = std::max(peak, energy(world, pair, 0.0f));
+        if (closedAt < 0 && opening(world, hinge) < 0.01f) closedAt = step;
+    }
+    std::printf("[figure] hinge moved 2.2 m open: closed within 1 cm after %d steps, energy at most %+.4f J\n", closedAt,
+                peak - start);
+    EXPECT_LE(peak - start, 0.01 * kinetic);
+    // The push closes β = biasRate·h ≈ 0.28 of the gap a substep (0.73 a
+    // step): 2.2 m to 1 cm takes about 4 steps (measured 5); 10 allows the
+    // joint's leaving the exact tree and its rows' first substeps.
+    EXPECT_GE(closedAt, 1);
+    EXPECT_LE(closedAt, 10);
+}
+
+// A tree of unlike joints moved apart: a rigid weld and a hinge, their bodies
+// moved 1.5 m apart. The points close without energy; the weld's angle,
+// which a push that only translates cannot turn, is closed by its soft rows
+// once the points are.
+TEST(StretchedJoints, AWeldAndAHingeMovedApartCloseTheirPointsAndTheWeldItsAngle) {
+    World world({.enableSleep = false});
+    BodyId a = world.createBody({.type = BodyType::dynamic_body, .position = {0, 10}});
+    world.createPolygonShape(a, {.density = 1.0f}, makeBox(0.5f, 0.1f));
+    BodyId b = world.createBody({.type = BodyType::dynamic_body, .position = {1, 10}});
+    world.createPolygonShape(b, {.density = 1.0f}, makeBox(0.5f, 0.1f));
+    BodyId c = world.createBody({.type = BodyType::dynamic_body, .position = {2, 10}});
+    world.createPolygonShape(c, {.density = 1.0f}, makeBox(0.5f, 0.1f));
+    JointId hinge = world.createRevoluteJoint({.bodyA = a, .bodyB = b, .localAnchorA = {0.5f, 0}, .localAnchorB = {-0.5f, 0}});
+    JointId weld = world.createWeldJoint({.bodyA = b, .bodyB = c, .localAnchorA = {0.5f, 0}, .localAnchorB = {-0.5f, 0}});
+    world.setTransform(c, {3.0f, 11.0f}, 0.6f);
+    world.setTransform(a, {-1.0f, 9.5f}, 0.0f);
+    const std::vector<BodyId> bodies{a, b, c};
+    const double start = energy(world, bodies, 0.0f);
+    double peak = start;
+    for (int step = 1; step <= 120; ++step) {
+        world.step(kDt);
+        peak = std::max(peak, energy(world, bodies, 0.0f));
+    }
+    const WeldJointDef wd = world.weldJointDef(weld);
+    const float weldGap = length(transformPoint(world.transform(c), wd.localAnchorB) - transformPoint(world.transform(b), wd.localAnchorA));
+    const float weldAngle = std::fabs(world.angle(c) - world.angle(b) - wd.referenceAngle);
+    std::printf("[figure] weld and hinge moved apart: after 2 s hinge %.4f m, weld %.4f m and %.4f rad, energy at most %+.4f J\n",
+                static_cast<double>(opening(world, hinge)), static_cast<double>(weldGap), static_cast<double>(weldAngle),
+                peak - start);
+    // Closed to the soft rows' own scale (the slop, 5 mm; 0.01 rad).
+    EXPECT_LE(opening(world, hinge), 0.005f);
+    EXPECT_LE(weldGap, 0.005f);
+    EXPECT_LE(weldAngle, 0.01f);
+    // Three 1 kg bodies at rest: the energy they can give is their fall to
+    // the floor of the measure, 10 m (about 300 J); 1 % of it.
+    EXPECT_LE(peak - start, 0.01 * 3.0 * kGravity * 10.0);
+}
+
+}  // namespace
+}  // namespace i2d
