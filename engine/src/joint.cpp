@@ -1,6 +1,7 @@
 // Joints: linking a joint to its bodies and unlinking it (what every joint
 // type shares; the rows are in joint_solver.cpp and one file per type).
 #include <algorithm>
+#include <cmath>
 
 #include "joint.hpp"
 #include "lost_load.hpp"
@@ -63,11 +64,36 @@ bool holdsPoint(const Joint& joint) {
     return def.linearHertz == 0.0f && def.angularHertz == 0.0f;
 }
 
+JointStretch jointStretch(const WorldState& w, const Joint& joint) {
+    const Transform& xfA = w.bodies[joint.bodyA].xf;
+    const Transform& xfB = w.bodies[joint.bodyB].xf;
+    const JointAnchors anchors = jointAnchors(w, joint);
+    const Vec2 d = anchors.b - anchors.a;
+    // angle(B) − angle(A) − reference, within ±π.
+    auto turn = [&](float reference) {
+        return std::remainder(angleOf(invMulRot(xfA.q, xfB.q)) - reference, 2.0f * 3.14159265358979f);
+    };
+    // How far B's anchor is off the axis fixed in A.
+    auto offAxis = [&](Vec2 localAxis) { return std::fabs(cross(rotate(xfA.q, normalize(localAxis)), d)); };
+    switch (joint.type) {
+        case JointType::revolute: return {length(d), 0.0f};
+        case JointType::weld: {
+            if (!holdsPoint(joint)) return {};
+            return {length(d), turn(std::get<WeldJointDef>(joint.def).referenceAngle)};
+        }
+        case JointType::prismatic: {
+            const PrismaticJointDef& def = std::get<PrismaticJointDef>(joint.def);
+            return {offAxis(def.localAxisA), turn(def.referenceAngle)};
+        }
+        case JointType::wheel: return {offAxis(std::get<WheelJointDef>(joint.def).localAxisA), 0.0f};
+        default: return {};  // springs, ropes, drives: no error the push closes
+    }
+}
+
 void judgeStretch(WorldState& w, int j) {
     Joint& joint = w.joints[j];
-    if (joint.stretched || w.settings.positionCorrection != PositionCorrection::soft_step || !holdsPoint(joint)) return;
-    const JointAnchors anchors = jointAnchors(w, joint);
-    if (!(lengthSquared(anchors.b - anchors.a) > kStretchedJointError * kStretchedJointError)) return;
+    if (joint.stretched || w.settings.positionCorrection != PositionCorrection::soft_step) return;
+    if (!isStretched(false, jointStretch(w, joint))) return;
     joint.stretched = true;
     w.solver.jointPlanStale = true;
 }

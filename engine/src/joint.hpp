@@ -54,9 +54,10 @@ struct Joint {
     /// Kept here, not in the plan, so that a kept plan and one made again
     /// decide alike; a change makes the plan again for the next step.
     bool deepHinge = false;
-    /// Left by the game with its point open wider than kStretchedJointError
-    /// (judgeStretch), and not yet closed within half of it
-    /// (stillStretched): the joint plan puts it in an exact tree whatever the
+    /// Left by the game with its point or axis more than kStretchedJointError
+    /// off, or its angle more than kStretchedJointAngle (judgeStretch), and
+    /// not yet closed within half of them
+    /// (isStretched, world_state.hpp): the joint plan puts it in an exact tree whatever the
     /// masses, and a step whose trees hold such a joint solves them rigid and
     /// closes their error on pseudo-velocities (pushJointTrees).
     bool stretched = false;
@@ -197,8 +198,19 @@ void destroyJoint(WorldState& w, int joint);
 /// their own axes). Only such a point makes a deep or a stretched joint.
 bool holdsPoint(const Joint& joint);
 
-/// Makes joint `j` a stretched joint (Joint::stretched) when its point is
-/// open wider than kStretchedJointError in soft_step. Called where the game
+/// How far a joint's bodies are from where its equality rows hold them, at
+/// their poses now: the point's opening (a revolute joint, a rigid weld) or
+/// the distance off the axis (a prismatic or wheel joint), m; the angle off
+/// its reference (a rigid weld, a prismatic joint), rad. Zero for the joints
+/// whose rows are soft or drives (distance joints, motor, mouse, pulley, gear).
+struct JointStretch {
+    float linear = 0.0f, angular = 0.0f;
+};
+JointStretch jointStretch(const WorldState& w, const Joint& joint);
+
+/// Makes joint `j` a stretched joint (Joint::stretched) when its point or
+/// axis is further than kStretchedJointError off, or its angle further than
+/// kStretchedJointAngle (jointStretch), in soft_step. Called where the game
 /// sets where the bodies are or where the anchors are: a joint created, a
 /// body moved, a definition or the settings changed. An error the solver
 /// leaves is the soft rows' to close; an error the game makes can be any

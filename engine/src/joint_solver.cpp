@@ -243,14 +243,14 @@ void prepareJoints(WorldState& w, float dt) {
         const double bound = double(jc.invMassA) + jc.invMassB + double(jc.invIA) * lengthSquared(jc.rA) +
                              double(jc.invIB) * lengthSquared(jc.rB);
         jc.singlePrecision = bound < kSinglePrecisionBound;
-        if (holdsPoint(joint)) {
-            const Vec2 separation = jc.deltaCenter + jc.rB - jc.rA;
-            jc.deep = !jc.inTree && isDeepJoint(w, joint, separation);
-            if (joint.stretched && !stillStretched(separation)) {  // back to the soft rows from the next step
+        jc.deep = !jc.inTree && holdsPoint(joint) && isDeepJoint(w, joint, jc.deltaCenter + jc.rB - jc.rA);
+        if (joint.stretched) {
+            if (!isStretched(true, jointStretch(w, joint))) {  // back to the soft rows from the next step
                 w.joints[slot.joint].stretched = false;
                 s.jointPlanStale = true;
+            } else {
+                s.pushTrees = s.pushTrees || jc.inTree;
             }
-            s.pushTrees = s.pushTrees || (jc.inTree && joint.stretched);
         }
         s.anyDeepJoint = s.anyDeepJoint || jc.deep;
         if (slot.deepHinge && !jc.deep) {  // back on the wide path from the next step

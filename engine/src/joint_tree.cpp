@@ -390,7 +390,7 @@ namespace {
 /// The blocks of every node at the current positions (H_ii and the links),
 /// then their elimination, leaves first.
 void factor(const WorldState& w, SolverArrays& s, JointTrees& t, double gammaScale, bool newPositions,
-            bool translateOnly = false) {
+            bool push = false) {
     std::vector<TreeNode>& nodes = t.nodes;
     BodyState& zero = s.states.back();
     t.holdsLimits = false;
@@ -401,7 +401,7 @@ void factor(const WorldState& w, SolverArrays& s, JointTrees& t, double gammaSca
         setZero(node.link);
         // M = diag(m, m, I); a degree of freedom the body lacks (zero inverse)
         // gets 1 and zero coupling, so its velocity change is zero.
-        const float invMass = b.invMass, invI = translateOnly ? 0.0f : b.invInertia;
+        const float invMass = b.invMass, invI = b.invInertia;
         node.mask[0] = node.mask[1] = invMass != 0.0f ? 1.0f : 0.0f;
         node.mask[2] = invI != 0.0f ? 1.0f : 0.0f;
         node.diag[0][0] = node.diag[1][1] = invMass != 0.0f ? 1.0 / invMass : 1.0;
@@ -452,11 +452,17 @@ void factor(const WorldState& w, SolverArrays& s, JointTrees& t, double gammaSca
         t.holdsLimits = t.holdsLimits || jc.treeLimit != 0;
         EqualityRows& rows = node.rows;
         equalityRows(jc, sA, sB, rows);
+        // In a push, a row that holds a point or a line moves its bodies
+        // without turning them, and a row that holds an angle only turns
+        // them (pushJointTrees).
+        if (push)
+            for (int r = 0; r < rows.count; ++r)
+                if (rows.jA[r][0] != 0.0f || rows.jA[r][1] != 0.0f || rows.jB[r][0] != 0.0f || rows.jB[r][1] != 0.0f)
+                    rows.jA[r][2] = rows.jB[r][2] = 0.0f;
         const int n = rows.count;
         const int limitRow = heldLimitRow(jc);
         // Γ = γ·K with K = J_A M_A⁻¹ J_Aᵀ + J_B M_B⁻¹ J_Bᵀ, the joint's own block.
-        const double invA[3] = {jc.invMassA, jc.invMassA, translateOnly ? 0.0 : jc.invIA},
-                     invB[3] = {jc.invMassB, jc.invMassB, translateOnly ? 0.0 : jc.invIB};
+        const double invA[3] = {jc.invMassA, jc.invMassA, jc.invIA}, invB[3] = {jc.invMassB, jc.invMassB, jc.invIB};
         // A row no body can act on (an angle row between bodies that do not
         // turn): moot, as in the joint's own sweep. Left in, its zero pivot
         // made the whole joint's block singular and dropped every row of it.
@@ -658,16 +664,17 @@ void solveJointTrees(WorldState& w, const JointContext& ctx, int positions) {
     }
 }
 
-// A push moves the bodies without turning them. Turning is linear in the
-// angle only for small angles, and the least correction in the bodies'
-// masses turns a body light in rotation: a disc of radius 0.2 m hinged
-// 0.5 m from its centre turns 12 times as readily as it moves (I⁻¹r² against
-// m⁻¹), so a joint 1 m open was to be closed by turning discs some 2 rad,
-// which moved their anchors elsewhere; pushes so made left a 40-disc chain
-// 31 m open after 2 s. Translated only, the same chain closes within half a
-// second (docs/joints.md, "Stretched joints"). A row only turning can act on
-// (a weld's angle) is moot in the push and left to the soft rows once the
-// points are closed.
+// A push closes a point's error by moving the bodies, not turning them.
+// Turning moves an anchor linearly in the angle only for small angles, and the
+// least correction in the bodies' masses turns a body light in rotation: a
+// disc of radius 0.2 m hinged 0.5 m from its centre turns 12 times as readily
+// as it moves (I⁻¹r² against m⁻¹), so a joint 1 m open was to be closed by
+// turning discs some 2 rad, which moved their anchors elsewhere; pushes so
+// made left a 40-disc chain 31 m open after 2 s. With its point rows moving
+// the bodies only, the same chain closes within half a second (docs/joints.md,
+// "Stretched joints"). An angle's row (a weld's) turns them, which is exact
+// in the angle; what the turn does to the anchors the next substep's push
+// closes.
 void pushJointTrees(WorldState& w, const JointContext& ctx) {
     SolverArrays& s = w.solver;
     JointTrees& t = s.trees;
@@ -687,7 +694,7 @@ void pushJointTrees(WorldState& w, const JointContext& ctx) {
         s.states[b].v = s.biasV[b];
         s.states[b].w = s.biasW[b];
     }
-    factor(w, s, t, 0.0, false, true);
+    factor(w, s, t, 0.0, false, /*push=*/true);
     solveFactored(s, t, {ctx.pushFactor * ctx.invH, 1.0f, 0.0f}, ctx.invH, true);
     t.factoredPositions = -1;  // the next solve factors the bodies as they are
     std::size_t body = 0, joint = 0;

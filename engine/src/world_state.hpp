@@ -8,6 +8,7 @@
 //   and the API facade (world*.cpp, debug_draw.cpp) on top.
 #pragma once
 
+#include <cmath>
 #include <cstdint>
 #include <vector>
 
@@ -155,14 +156,19 @@ inline bool isDeepJoint(const WorldState& w, const Joint& joint, Vec2 separation
            (touchesThroughContact(w, joint.bodyA) || touchesThroughContact(w, joint.bodyB));
 }
 
-/// A joint the game leaves with its point open wider than this (m) is a
-/// stretched joint (Joint::stretched, judgeStretch in joint.cpp) until its
-/// point closes within half of this (stillStretched).
+/// A joint the game leaves with its point or axis further off than this
+/// (m), or its angle further than kStretchedJointAngle (rad), is a stretched
+/// joint (Joint::stretched, judgeStretch in joint.cpp) until both close within
+/// half of that (isStretched).
 inline constexpr float kStretchedJointError = kDeepJointError;
+/// The turn that moves a point half a metre from the joint by kStretchedJointError.
+inline constexpr float kStretchedJointAngle = 0.1f;
 
-/// Whether a stretched joint whose point is `separation` open stays one.
-inline bool stillStretched(Vec2 separation) {
-    return lengthSquared(separation) > 0.25f * kStretchedJointError * kStretchedJointError;
+/// Whether a joint `stretch` off (jointStretch, joint.hpp) is stretched, given
+/// whether it was: from the full errors on, until within half of them.
+inline bool isStretched(bool was, JointStretch stretch) {
+    const float scale = was ? 0.5f : 1.0f;
+    return stretch.linear > scale * kStretchedJointError || std::fabs(stretch.angular) > scale * kStretchedJointAngle;
 }
 
 /// A contact as the API reports it (World::contacts, World::bodyContacts).
