@@ -131,10 +131,11 @@ public:
     Transform transform(BodyId id) const;
     /// Teleport the body's origin to `position` (m) at `angle` (rad), keeping
     /// its velocity (locked). Wakes it and the bodies it touches; moving a
-    /// static body also wakes the bodies near its shapes. A revolute joint or
-    /// rigid weld this leaves more than 5 cm open (as does creating one with
-    /// its anchors apart) is closed over the next steps by moving the bodies,
-    /// without giving them a velocity (docs/joints.md, "Stretched joints").
+    /// static body also wakes the bodies near its shapes. A joint this leaves
+    /// more than 5 cm open or off its axis, or 0.1 rad off its angle (as
+    /// creating one so does), is closed over the next steps by moving the
+    /// bodies without giving them a velocity (revolute, rigid weld, prismatic
+    /// and wheel joints; docs/joints.md, "Stretched joints").
     /// Throws i2d::Error when position or angle is not bounded.
     void setTransform(BodyId id, Vec2 position, float angle);
     /// Centre of mass, world frame (m).
