@@ -172,7 +172,7 @@ struct JointSlot {
     bool inTree = false;
     bool wide = false;       ///< solved eight at a time (wide_revolute.cpp), with no JointConstraint
     bool deepHinge = false;  ///< kept off the wide path as a deep joint (Joint::deepHinge)
-    bool stretched = false;  ///< Joint::stretched when the plan was made: its tree is solved exactly
+    bool stretched = false;  ///< Joint::stretched when the plan was made (its tree is solved exactly: selectTreeJoints)
 };
 
 /// What a joint's solve needs besides its row and its bodies' states.

@@ -53,9 +53,10 @@ struct JointTrees {
 /// bridge's or a grid's keeps one or more joints in the Gauss-Seidel sweep;
 /// only trees of unlike masses, WorldSettings::exactJointMassRatio, each
 /// judged by its own bodies: the trees hung from the same static bodies are
-/// judged apart) and marks them (JointSlot::inTree, false when called). The
-/// least and most inverse mass of the joints' movable bodies let a world of
-/// alike bodies skip the search.
+/// judged apart; and trees holding a stretched joint, JointSlot::stretched,
+/// that no loop closes) and marks them (JointSlot::inTree, false when
+/// called). The least and most inverse mass of the joints' movable bodies let
+/// a world of alike bodies without a stretched joint skip the search.
 void selectTreeJoints(WorldState& w, std::vector<JointSlot>& slots, float leastInverseMass, float mostInverseMass);
 /// Orders the trees' nodes over the rows in their final order.
 void buildJointTrees(WorldState& w);
@@ -68,7 +69,8 @@ void solveJointTrees(WorldState& w, const JointContext& ctx, int positions);
 
 /// Closes the trees' position error on the pseudo-velocities
 /// (SolverArrays::biasV, biasW) at ctx.pushFactor of it per substep, solved
-/// exactly with the bodies translating only: the error of a stretched joint
+/// exactly, a row that holds a point or a line moving its bodies and a row
+/// that holds an angle turning them: the error of a stretched joint
 /// (Joint::stretched). The velocities and the joints' impulses are left as
 /// they were.
 void pushJointTrees(WorldState& w, const JointContext& ctx);
