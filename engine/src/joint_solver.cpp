@@ -244,13 +244,9 @@ void prepareJoints(WorldState& w, float dt) {
                              double(jc.invIB) * lengthSquared(jc.rB);
         jc.singlePrecision = bound < kSinglePrecisionBound;
         jc.deep = !jc.inTree && holdsPoint(joint) && isDeepJoint(w, joint, jc.deltaCenter + jc.rB - jc.rA);
-        if (joint.stretched) {
-            if (!isStretched(true, jointStretch(w, joint))) {  // back to the soft rows from the next step
-                w.joints[slot.joint].stretched = false;
-                s.jointPlanStale = true;
-            } else {
-                s.pushTrees = s.pushTrees || jc.inTree;
-            }
+        if (joint.stretched && !isStretched(true, jointStretch(w, joint))) {  // back to the soft rows next step
+            w.joints[slot.joint].stretched = false;
+            s.jointPlanStale = true;
         }
         s.anyDeepJoint = s.anyDeepJoint || jc.deep;
         if (slot.deepHinge && !jc.deep) {  // back on the wide path from the next step
@@ -349,9 +345,7 @@ void solveJoints(WorldState& w, const JointContext& pass) {
         });
     s.wideFrameAt = s.positionUpdates;
     clearZeroState(s);
-    // A step that closes the trees' error on pseudo-velocities (pushJointTrees)
-    // solves them rigid in the biased pass.
-    solveJointTrees(w, s.pushTrees && pass.pass == SolvePass::soft_bias ? rigid : pass, s.positionUpdates);
+    solveJointTrees(w, pass, s.positionUpdates);
     clearZeroState(s);
 }
 

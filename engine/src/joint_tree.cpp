@@ -329,12 +329,23 @@ void buildJointTrees(WorldState& w) {
         TreeNode& node = nodes.emplace_back();
         node.body = body;
         node.parent = parent;
+        node.pushed = false;
     };
     auto addJoint = [&](int row, int parent) {
         rowTaken[static_cast<std::size_t>(row)] = 1;
         TreeNode& node = nodes.emplace_back();
         node.row = row;
         node.parent = parent;
+        node.pushed = false;
+    };
+    // A tree (the nodes from `head` on) holding a stretched joint is pushed whole.
+    auto markPushed = [&](std::size_t head) {
+        bool stretched = false;
+        for (std::size_t k = head; k < nodes.size() && !stretched; ++k)
+            stretched = nodes[k].row >= 0 && w.joints[s.joints[static_cast<std::size_t>(nodes[k].row)].joint].stretched;
+        if (!stretched) return;
+        for (std::size_t k = head; k < nodes.size(); ++k) nodes[k].pushed = true;
+        s.pushTrees = true;
     };
     auto expand = [&](std::size_t head) {
         for (; head < nodes.size(); ++head) {
@@ -358,6 +369,7 @@ void buildJointTrees(WorldState& w) {
         const std::size_t head = nodes.size();
         addJoint(t.adjacency[static_cast<std::size_t>(k)], -1);
         expand(head);
+        markPushed(head);
     }
     for (int body = 0; body < ground; ++body) {
         const std::size_t b = static_cast<std::size_t>(body);
@@ -365,6 +377,7 @@ void buildJointTrees(WorldState& w) {
         const std::size_t head = nodes.size();
         addBody(body, -1);
         expand(head);
+        markPushed(head);
     }
     if (nodes.empty()) return;
 
@@ -489,7 +502,7 @@ void factor(const WorldState& w, SolverArrays& s, JointTrees& t, double gammaSca
                 // row's mass, the light body's, it yielded to the load beyond
                 // (a 0.2 kg disc held at its limit under an 18 kg box crept
                 // 0.12 rad past it in 10 s; rigid, it stays at it).
-                const double g = r == limitRow || c == limitRow ? 0.0 : gammaScale;
+                const double g = r == limitRow || c == limitRow || node.pushed ? 0.0 : gammaScale;
                 node.compliance[r][c] = g * k;
                 node.diag[r][c] = -g * k;
             }
@@ -539,7 +552,7 @@ void solveFactored(SolverArrays& s, JointTrees& t, const RowBias& rb, float invH
     // Right-hand sides: 0 for bodies, r = −(J v + b·C + Γ λ) for joints.
     for (TreeNode& node : nodes) {
         node.rhs[0] = node.rhs[1] = node.rhs[2] = 0.0;
-        if (node.row < 0) continue;
+        if (node.row < 0 || (push && !node.pushed)) continue;  // (a tree not pushed: no change)
         const JointConstraint& jc = s.joints[static_cast<std::size_t>(node.row)];
         const BodyState& sA = jc.a >= 0 ? s.states[static_cast<std::size_t>(jc.a)] : zero;
         const BodyState& sB = jc.b >= 0 ? s.states[static_cast<std::size_t>(jc.b)] : zero;
@@ -554,8 +567,10 @@ void solveFactored(SolverArrays& s, JointTrees& t, const RowBias& rb, float invH
                               node.compliance[r][2] * lambda[2];
             // A held limit not reached yet closes its gap within the substep
             // (a push does not: the gap is no error).
+            // A pushed tree's rows are rigid in the soft pass (its error is the push's).
             const bool gap = node.speculative && r == heldLimitRow(jc);
-            const double bias = gap ? (push ? 0.0 : double(invH)) : double(rb.bias);
+            const bool rigid = node.pushed && !push && rb.impulseScale != 0.0f;
+            const double bias = gap ? (push ? 0.0 : double(invH)) : rigid ? 0.0 : double(rb.bias);
             node.rhs[r] = -(jv + bias * rows.error[r] + gl);
         }
     }

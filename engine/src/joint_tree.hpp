@@ -27,7 +27,8 @@ struct TreeNode {
     double compliance[3][3];     ///< joint node: Γ of its rows in the factored pass
     float mask[3];               ///< body node: 1 for a degree of freedom it has (non-zero inverse mass or inertia)
     bool speculative;            ///< joint node: its held limit is not reached yet (its target closes the gap)
-    EqualityRows rows;           ///< joint node: its rows at the factored positions
+    bool pushed;        ///< its tree holds a stretched joint: rigid in the biased pass, pushed (pushJointTrees)
+    EqualityRows rows;  ///< joint node: its rows at the factored positions
 };
 
 /// The trees of one step: nodes with every child before its parent.
