@@ -28,6 +28,13 @@ double energy(const World& world, const std::vector<BodyId>& bodies, float floor
     return e;
 }
 
+/// A plank 1 m × 0.2 m at (x, 10) (0.2 kg at density 1).
+BodyId plank(World& world, float x, float density) {
+    BodyId b = world.createBody({.type = BodyType::dynamic_body, .position = {x, 10}});
+    world.createPolygonShape(b, {.density = density}, makeBox(0.5f, 0.1f));
+    return b;
+}
+
 /// How far a revolute joint's anchors are apart (m).
 float opening(const World& world, JointId j) {
     const RevoluteJointDef d = world.revoluteJointDef(j);
@@ -102,10 +109,8 @@ TEST(StretchedJoints, AChainCreatedStretchedClosesWithinASecondWithoutGainingEne
 // soft rows closed it at 68 m/s a metre and the pair gained 450 J.
 TEST(StretchedJoints, ABodyMovedAwayFromItsHingeIsPulledBackWithoutGainingEnergy) {
     World world({.enableSleep = false});
-    BodyId a = world.createBody({.type = BodyType::dynamic_body, .position = {0, 10}});
-    world.createPolygonShape(a, {.density = 1.0f}, makeBox(0.5f, 0.1f));
-    BodyId b = world.createBody({.type = BodyType::dynamic_body, .position = {1, 10}});
-    world.createPolygonShape(b, {.density = 3.0f}, makeBox(0.5f, 0.1f));
+    BodyId a = plank(world, 0.0f, 1.0f);
+    BodyId b = plank(world, 1.0f, 3.0f);
     JointId hinge = world.createRevoluteJoint(
         {.bodyA = a, .bodyB = b, .localAnchorA = {0.5f, 0}, .localAnchorB = {-0.5f, 0}});
     world.setAngularVelocity(a, 2.0f);
@@ -141,12 +146,9 @@ TEST(StretchedJoints, ABodyMovedAwayFromItsHingeIsPulledBackWithoutGainingEnergy
 // once the points are.
 TEST(StretchedJoints, AWeldAndAHingeMovedApartCloseTheirPointsAndTheWeldItsAngle) {
     World world({.enableSleep = false});
-    BodyId a = world.createBody({.type = BodyType::dynamic_body, .position = {0, 10}});
-    world.createPolygonShape(a, {.density = 1.0f}, makeBox(0.5f, 0.1f));
-    BodyId b = world.createBody({.type = BodyType::dynamic_body, .position = {1, 10}});
-    world.createPolygonShape(b, {.density = 1.0f}, makeBox(0.5f, 0.1f));
-    BodyId c = world.createBody({.type = BodyType::dynamic_body, .position = {2, 10}});
-    world.createPolygonShape(c, {.density = 1.0f}, makeBox(0.5f, 0.1f));
+    BodyId a = plank(world, 0.0f, 1.0f);
+    BodyId b = plank(world, 1.0f, 1.0f);
+    BodyId c = plank(world, 2.0f, 1.0f);
     JointId hinge = world.createRevoluteJoint(
         {.bodyA = a, .bodyB = b, .localAnchorA = {0.5f, 0}, .localAnchorB = {-0.5f, 0}});
     JointId weld = world.createWeldJoint(
@@ -190,10 +192,8 @@ TEST(StretchedJoints, AWeldAndAHingeMovedApartCloseTheirPointsAndTheWeldItsAngle
 TEST(StretchedJoints, AWeldTurnedAboutItsAnchorTurnsBackWithoutGainingEnergy) {
     World world({.enableSleep = false});
     BodyId pin = world.createBody({});
-    BodyId a = world.createBody({.type = BodyType::dynamic_body, .position = {0, 10}});
-    world.createPolygonShape(a, {.density = 1.0f}, makeBox(0.5f, 0.1f));
-    BodyId b = world.createBody({.type = BodyType::dynamic_body, .position = {1, 10}});
-    world.createPolygonShape(b, {.density = 1.0f}, makeBox(0.5f, 0.1f));
+    BodyId a = plank(world, 0.0f, 1.0f);
+    BodyId b = plank(world, 1.0f, 1.0f);
     world.createRevoluteJoint({.bodyA = pin, .bodyB = a, .localAnchorA = {-0.5f, 10}, .localAnchorB = {-0.5f, 0}});
     JointId weld = world.createWeldJoint(
         {.bodyA = a, .bodyB = b, .localAnchorA = {0.5f, 0}, .localAnchorB = {-0.5f, 0}});
