@@ -86,7 +86,12 @@ JointStretch jointStretch(const WorldState& w, const Joint& joint) {
             return {offAxis(def.localAxisA), turn(def.referenceAngle)};
         }
         case JointType::wheel: return {offAxis(std::get<WheelJointDef>(joint.def).localAxisA), 0.0f};
-        default: return {};  // springs, ropes, drives: no error the push closes
+        case JointType::distance: {
+            const DistanceJointDef& def = std::get<DistanceJointDef>(joint.def);
+            if (!isRigidDistance(def)) return {};  // a spring: its stretch is physical
+            return {std::fabs(length(d) - def.length), 0.0f};
+        }
+        default: return {};  // drives and couplings: no error the push closes
     }
 }
 

@@ -54,8 +54,8 @@ struct Joint {
     /// Kept here, not in the plan, so that a kept plan and one made again
     /// decide alike; a change makes the plan again for the next step.
     bool deepHinge = false;
-    /// Left by the game with its point or axis more than kStretchedJointError
-    /// off, or its angle more than kStretchedJointAngle (judgeStretch), and
+    /// Left by the game with its point, axis or length more than
+    /// kStretchedJointError off, or its angle more than kStretchedJointAngle (judgeStretch), and
     /// not yet closed within half of them
     /// (isStretched, world_state.hpp): the joint plan puts it in an exact tree whatever the
     /// masses, and a step whose trees hold such a joint solves them rigid and
@@ -193,23 +193,30 @@ void linkJoint(WorldState& w, int joint);
 /// collide now).
 void destroyJoint(WorldState& w, int joint);
 
+/// A distance joint whose length is held (not a spring, or a spring pinned
+/// by equal limits).
+inline bool isRigidDistance(const DistanceJointDef& def) {
+    return !(def.enableSpring && (!def.enableLimit || def.minLength < def.maxLength));
+}
+
 /// Whether a joint's equality rows hold a point: a revolute joint's, a
 /// weld's without springs (the rows of other joints are soft or judged along
 /// their own axes). Only such a point makes a deep or a stretched joint.
 bool holdsPoint(const Joint& joint);
 
 /// How far a joint's bodies are from where its equality rows hold them, at
-/// their poses now: the point's opening (a revolute joint, a rigid weld) or
-/// the distance off the axis (a prismatic or wheel joint), m; the angle off
-/// its reference (a rigid weld, a prismatic joint), rad. Zero for the joints
-/// whose rows are soft or drives (distance joints, motor, mouse, pulley, gear).
+/// their poses now: the point's opening (a revolute joint, a rigid weld), the
+/// distance off the axis (a prismatic or wheel joint) or off the length (a
+/// rigid distance joint), m; the angle off its reference (a rigid weld, a
+/// prismatic joint), rad. Zero for springs and drives (a distance joint's
+/// spring, a soft weld, motor, mouse, pulley and gear joints).
 struct JointStretch {
     float linear = 0.0f, angular = 0.0f;
 };
 JointStretch jointStretch(const WorldState& w, const Joint& joint);
 
-/// Makes joint `j` a stretched joint (Joint::stretched) when its point or
-/// axis is further than kStretchedJointError off, or its angle further than
+/// Makes joint `j` a stretched joint (Joint::stretched) when its point, axis
+/// or length is further than kStretchedJointError off, or its angle further than
 /// kStretchedJointAngle (jointStretch), in soft_step. Called where the game
 /// sets where the bodies are or where the anchors are: a joint created, a
 /// body moved, a definition or the settings changed. An error the solver

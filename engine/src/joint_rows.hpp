@@ -253,11 +253,6 @@ int equalityRowCount(const Joint& joint);
 /// Whether those rows are a limit's, handed over only while it holds (a rope,
 /// a spring with limits): the tree takes such joints after the others.
 bool rowsOnlyAtLimit(const Joint& joint);
-/// A distance joint whose length is held (not a spring, or a spring pinned
-/// by equal limits).
-inline bool isRigidDistance(const DistanceJointDef& def) {
-    return !(def.enableSpring && (!def.enableLimit || def.minLength < def.maxLength));
-}
 /// Fills the rows at the states' current motion (count = equalityRowCount).
 void equalityRows(const JointConstraint& jc, const BodyState& sA, const BodyState& sB, EqualityRows& rows);
 /// The point rows of anchors rA, rB turned to now: C = p_B − p_A.

@@ -156,7 +156,7 @@ inline bool isDeepJoint(const WorldState& w, const Joint& joint, Vec2 separation
            (touchesThroughContact(w, joint.bodyA) || touchesThroughContact(w, joint.bodyB));
 }
 
-/// A joint the game leaves with its point or axis further off than this
+/// A joint the game leaves with its point, axis or length further off than this
 /// (m), or its angle further than kStretchedJointAngle (rad), is a stretched
 /// joint (Joint::stretched, judgeStretch in joint.cpp) until both close within
 /// half of that (isStretched).

@@ -132,10 +132,11 @@ public:
     /// Teleport the body's origin to `position` (m) at `angle` (rad), keeping
     /// its velocity (locked). Wakes it and the bodies it touches; moving a
     /// static body also wakes the bodies near its shapes. A joint this leaves
-    /// more than 5 cm open or off its axis, or 0.1 rad off its angle (as
-    /// creating one so does), is closed over the next steps by moving the
-    /// bodies without giving them a velocity (revolute, rigid weld, prismatic
-    /// and wheel joints; docs/joints.md, "Stretched joints").
+    /// more than 5 cm open, off its axis or off its length, or 0.1 rad off its
+    /// angle (as creating one so does), is closed over the next steps by
+    /// moving the bodies without giving them a velocity (revolute, rigid weld,
+    /// prismatic, wheel and rigid distance joints; docs/joints.md,
+    /// "Stretched joints").
     /// Throws i2d::Error when position or angle is not bounded.
     void setTransform(BodyId id, Vec2 position, float angle);
     /// Centre of mass, world frame (m).
