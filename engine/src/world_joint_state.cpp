@@ -93,7 +93,7 @@ void setDef(detail::WorldState& w, JointId id, const Def& def) {
         if (!def.enableLimit) jt.impulses.lower = jt.impulses.upper = 0.0f;
     applyCollideConnected(w, jt, def.collideConnected);
     wakeJoint(w, jt);
-    detail::judgeStretch(w, w.jointIndex(id));  // new anchors may leave the point open
+    detail::judgeStretch(w, w.jointIndex(id));  // new anchors, axis or length may leave the joint open
 }
 
 /// Changes one field of the joint's definition through `edit`, which returns
