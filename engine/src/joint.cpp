@@ -64,17 +64,17 @@ bool holdsPoint(const Joint& joint) {
     return def.linearHertz == 0.0f && def.angularHertz == 0.0f;
 }
 
+float jointAngleNow(const WorldState& w, const Joint& joint, float reference) {
+    return unwindAngle(angleOf(invMulRot(w.bodies[joint.bodyA].xf.q, w.bodies[joint.bodyB].xf.q)) - reference);
+}
+
 JointStretch jointStretch(const WorldState& w, const Joint& joint) {
-    const Transform& xfA = w.bodies[joint.bodyA].xf;
-    const Transform& xfB = w.bodies[joint.bodyB].xf;
     const JointAnchors anchors = jointAnchors(w, joint);
     const Vec2 d = anchors.b - anchors.a;
-    // angle(B) − angle(A) − reference, within ±π.
-    auto turn = [&](float reference) {
-        return std::remainder(angleOf(invMulRot(xfA.q, xfB.q)) - reference, 2.0f * 3.14159265358979f);
-    };
+    auto turn = [&](float reference) { return jointAngleNow(w, joint, reference); };
     // How far B's anchor is off the axis fixed in A.
-    auto offAxis = [&](Vec2 localAxis) { return std::fabs(cross(rotate(xfA.q, normalize(localAxis)), d)); };
+    const Rot qA = w.bodies[joint.bodyA].xf.q;
+    auto offAxis = [&](Vec2 localAxis) { return std::fabs(cross(rotate(qA, normalize(localAxis)), d)); };
     switch (joint.type) {
         case JointType::revolute: return {length(d), 0.0f};
         case JointType::weld: {

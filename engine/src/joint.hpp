@@ -193,6 +193,17 @@ void linkJoint(WorldState& w, int joint);
 /// collide now).
 void destroyJoint(WorldState& w, int joint);
 
+/// Wraps an angle to (−π, π].
+inline float unwindAngle(float a) {
+    constexpr float kPi = 3.14159265358979f;
+    if (a > kPi) return a - 2.0f * kPi;
+    if (a <= -kPi) return a + 2.0f * kPi;
+    return a;
+}
+
+/// angle(B) − angle(A) − `reference` at the bodies' poses now, in (−π, π].
+float jointAngleNow(const WorldState& w, const Joint& joint, float reference);
+
 /// A distance joint whose length is held (not a spring, or a spring pinned
 /// by equal limits).
 inline bool isRigidDistance(const DistanceJointDef& def) {

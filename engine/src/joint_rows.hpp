@@ -117,14 +117,6 @@ inline float relativeAngle(const JointConstraint& jc, const BodyState& sA, const
     return angleOf(invMulRot(qA, qB));
 }
 
-/// Wraps an angle to (−π, π].
-inline float unwindAngle(float a) {
-    constexpr float kPi = 3.14159265358979f;
-    if (a > kPi) return a - 2.0f * kPi;
-    if (a <= -kPi) return a + 2.0f * kPi;
-    return a;
-}
-
 /// Applies a linear impulse P at the anchors (and an extra angular impulse L) to A (−) and B (+).
 inline void applyImpulse(const JointConstraint& jc, Vec2 rA, Vec2 rB, Vec2 P, float L, BodyState& sA, BodyState& sB) {
     sA.v = mulSub(sA.v, jc.invMassA, P);

@@ -49,9 +49,9 @@ void addJointLoss(WorldState& w, const Joint& jt, std::vector<LostLoad>& lost);
 /// along −L, with r = min(1, |L| / Σ s_i). What each no longer gives the body
 /// at its other end is that body's lost load in turn; a static or kinematic
 /// body ends the path, and so does a body whose supports the load is less
-/// than 5 % of (r < 0.05: their warm start is nearly right). Each body is visited once, in the order its first
-/// lost load reached it (a load reaching it later, round a loop of
-/// contacts, is left).
+/// than 5 % of (r < 0.05: their warm start is nearly right). Each body is
+/// visited once, in the order its first lost load reached it (a load
+/// reaching it later, round a loop of contacts, is left).
 void releaseLostLoads(WorldState& w, std::vector<LostLoad>& lost);
 
 }  // namespace i2d::detail

@@ -221,9 +221,7 @@ float World::distanceJointCurrentLength(JointId id) const {
 float World::revoluteJointAngle(JointId id) const {
     const auto& w = state();
     const detail::Joint& jt = w.joints[w.jointIndex(id)];
-    const RevoluteJointDef& def = defOf<RevoluteJointDef>(jt);
-    const float a = angleOf(invMulRot(w.bodies[jt.bodyA].xf.q, w.bodies[jt.bodyB].xf.q));
-    return detail::unwindAngle(a - def.referenceAngle);
+    return detail::jointAngleNow(w, jt, defOf<RevoluteJointDef>(jt).referenceAngle);
 }
 
 float World::revoluteJointSpeed(JointId id) const {
