@@ -142,6 +142,9 @@ struct JointConstraint {
     /// Its limit pulled in this position's solve and was let go until the
     /// positions change (the tree's active set, joint_tree.cpp).
     bool limitReleased : 1 = false;
+    /// JointSlot::treePushed: its tree is rigid in the biased pass and its
+    /// error pushed on pseudo-velocities (pushJointTrees).
+    bool treePushed : 1 = false;
     /// A joint solved with its tree whose limit (a revolute joint's angle, a
     /// slider's translation, a rope's or limited spring's length) is held by
     /// the tree in this factorization: −1 the lower, +1 the upper, 0 none
@@ -173,6 +176,9 @@ struct JointSlot {
     bool wide = false;       ///< solved eight at a time (wide_revolute.cpp), with no JointConstraint
     bool deepHinge = false;  ///< kept off the wide path as a deep joint (Joint::deepHinge)
     bool stretched = false;  ///< Joint::stretched when the plan was made (its tree is solved exactly: selectTreeJoints)
+    bool pointLoad = false;  ///< a hinge or a rigid weld: carries its load at a point (holdsLoadAtPoint)
+    bool treePushed =
+        false;  ///< in a tree no loop closes: rigid in the biased pass, its error pushed (selectTreeJoints)
 };
 
 /// What a joint's solve needs besides its row and its bodies' states.

@@ -156,6 +156,7 @@ void planJoints(WorldState& w) {
         slot.equalityRows = static_cast<std::uint8_t>(equalityRowCount(joint));
         slot.rowsOnlyAtLimit = rowsOnlyAtLimit(joint);
         slot.stretched = joint.stretched;
+        slot.pointLoad = holdsLoadAtPoint(joint);
         slot.wide = wideCandidate(w, joint, bA, bB, slot) && !joint.stretched;
         if (slot.wide && joint.deepHinge) slot.wide = false, slot.deepHinge = true;
         for (float inverse : {slot.invMassA, slot.invMassB})
@@ -183,7 +184,7 @@ void planJoints(WorldState& w) {
 
 }  // namespace
 
-void prepareJoints(WorldState& w, float dt) {
+void prepareJoints(WorldState& w, float dt, float h) {
     SolverArrays& s = w.solver;
     // The plan is what a joint's bodies being awake, their masses and the
     // joint itself decide; in a jointed scene at rest or swinging, none of
@@ -217,6 +218,7 @@ void prepareJoints(WorldState& w, float dt) {
         jc.joint = slot.joint;
         jc.type = joint.type;
         jc.inTree = slot.inTree;
+        jc.treePushed = slot.treePushed;
         jc.a = slot.a, jc.b = slot.b;
         jc.invMassA = slot.invMassA, jc.invIA = slot.invIA, jc.invMassB = slot.invMassB, jc.invIB = slot.invIB;
         jc.deltaCenter = bB.center - bA.center;
@@ -254,7 +256,7 @@ void prepareJoints(WorldState& w, float dt) {
             s.jointPlanStale = true;
         }
     }
-    buildJointTrees(w);
+    buildJointTrees(w, h);
     s.wideDeep.assign(s.wideRevolutes.size(), 0);
     auto refresh = [&](int b, int e) { refreshWideRevolutes(w, s, b, e); };
     w.runner.run(static_cast<int>(s.wideRevolutes.size()), kWideGrain, refresh);

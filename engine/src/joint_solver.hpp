@@ -8,8 +8,9 @@ namespace i2d::detail {
 
 struct WorldState;
 
-/// Rows of every joint with an awake body, coloured; dt is the whole step.
-void prepareJoints(WorldState& w, float dt);
+/// Rows of every joint with an awake body, coloured; dt is the whole step, h
+/// a substep (the exact trees' geometric stiffness, buildJointTrees).
+void prepareJoints(WorldState& w, float dt, float h);
 void warmStartJoints(WorldState& w);
 /// One Gauss-Seidel sweep over the joint rows in ctx's pass.
 void solveJoints(WorldState& w, const JointContext& ctx);

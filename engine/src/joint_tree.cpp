@@ -16,7 +16,11 @@
 // Γ is the soft step's compliance: a row whose impulse is
 // −massScale·K⁻¹(Jv + b) − impulseScale·λ (joint_rows.hpp) satisfies
 // Jv + b + Γλ = 0 with Γ = K·impulseScale/massScale, K the joint's own block;
-// Γ = 0 in the relax and baumgarte passes.
+// Γ = 0 in the relax and baumgarte passes, and in the biased pass of a pushed
+// tree (no loop closes it and its joints are hinges or rigid welds, or it
+// holds a stretched joint), whose error is closed on pseudo-velocities
+// instead (pushJointTrees), its bodies' inertia raised by the tension's
+// geometric stiffness where the substep does not resolve it (stiffenTree).
 //
 // The graph of this matrix has a node per body and per joint, and an edge
 // where a joint acts on a body: a tree when the joints form one. Eliminating
@@ -259,35 +263,97 @@ void selectTreeJoints(WorldState& w, std::vector<JointSlot>& slots, float leastI
         t.lightest[root] = std::min(t.lightest[root], mass);
         t.heaviest[root] = std::max(t.heaviest[root], mass);
     }
-    // And those holding a stretched joint, whatever their masses
-    // (Joint::stretched), unless a joint outside the tree closes a loop
-    // through them: a net of loops created with its joints 1 m open, its
-    // spanning tree solved rigid and pushed while the loops' joints kept
-    // their soft rows, gained 1.4 times what it did with soft rows alone.
+    // A tree through which a joint outside it closes a loop (a net, a
+    // bridge's deck) keeps soft rows; one alone is rigid in the biased pass
+    // and its error is pushed (pushJointTrees).
     auto rootOf = [&](const JointSlot& jc) {
         const int a = movingSide(jc.a, jc.invMassA, jc.invIA, ground);
         const int side = a != ground ? a : movingSide(jc.b, jc.invMassB, jc.invIB, ground);
         return static_cast<std::size_t>(findRoot(t.unionParent, side));
     };
-    if (anyStretched) {
-        for (const JointSlot& jc : slots)
-            if (jc.inTree && jc.stretched) t.stretched[rootOf(jc)] = 1;
-        for (const JointSlot& jc : slots)
-            if (!jc.inTree && jc.equalityRows > 0 && !jc.rowsOnlyAtLimit &&
-                movingSide(jc.a, jc.invMassA, jc.invIA, ground) != movingSide(jc.b, jc.invMassB, jc.invIB, ground))
-                t.stretched[rootOf(jc)] = 0;
+    t.closed.assign(bodySlots, 0);
+    t.pointsOnly.assign(bodySlots, 1);
+    for (const JointSlot& jc : slots) {
+        if (!jc.inTree && jc.equalityRows > 0 && !jc.rowsOnlyAtLimit &&
+            movingSide(jc.a, jc.invMassA, jc.invIA, ground) != movingSide(jc.b, jc.invMassB, jc.invIB, ground))
+            t.closed[rootOf(jc)] = 1;
+        if (jc.inTree && !jc.pointLoad) t.pointsOnly[rootOf(jc)] = 0;
     }
+    // And those holding a stretched joint, whatever their masses
+    // (Joint::stretched), unless a loop closes through them: a net of loops
+    // created with its joints 1 m open, its spanning tree solved rigid and
+    // pushed while the loops' joints kept their soft rows, gained 1.4 times
+    // what it did with soft rows alone.
+    if (anyStretched)
+        for (const JointSlot& jc : slots)
+            if (jc.inTree && jc.stretched && !t.closed[rootOf(jc)]) t.stretched[rootOf(jc)] = 1;
     for (JointSlot& jc : slots) {
         if (!jc.inTree) continue;
         const std::size_t root = rootOf(jc);
         jc.inTree = t.heaviest[root] >= massRatio * t.lightest[root] || t.stretched[root];
+        jc.treePushed = jc.inTree && !t.closed[root] && (t.stretched[root] || t.pointsOnly[root]);
     }
 }
 
-void buildJointTrees(WorldState& w) {
+bool holdsLoadAtPoint(const Joint& joint) {
+    if (joint.type == JointType::revolute) return true;
+    return joint.type == JointType::weld && equalityRowCount(joint) == 3;
+}
+
+namespace {
+
+/// The tension's geometric stiffness (Andrews, Teichmann and Kry (2017),
+/// Geometric Stiffness for Real-time Constrained Multibody Dynamics): a body
+/// pulled by a load F at an anchor r from its centre turns as if on a spring
+/// of stiffness |F|·|r| (the load's moment changes as the anchor turns), and
+/// a link pulled at both ends by T turns at ω² ≈ T·L/I. One position update
+/// a substep holds that turn only while ωh < 2; a chain under a heavy end
+/// passes it (120 kN on a 6 kg, 1 m capsule link: ωh ≈ 1.9 at 4 substeps),
+/// its links then whip and the chain gains energy. Raising the body's inertia
+/// to h²·Σ|F|·|r| in the step's solve, where the substep does not resolve the
+/// turn (h²·Σ|F|·|r| > I), keeps ωh ≤ 1 there; it changes nothing where the
+/// substep resolves it. The load is the joint's accumulated point impulse
+/// (|F|·h, the warm start). Only in a pushed tree none of whose bodies
+/// touches anything (a manifold, speculative points included): a contact's
+/// rows turn a body with its own inertia, and the two metrics side by side
+/// gained energy (a free hinge tree with a 1000:1 body landing on the ground,
+/// its light links whirled by the stopped heavy body: 7.5 times what its fall
+/// releases).
+void stiffenTree(WorldState& w, std::size_t head, float h) {
+    SolverArrays& s = w.solver;
+    JointTrees& t = s.trees;
+    std::vector<TreeNode>& nodes = t.nodes;
+    for (std::size_t k = head; k < nodes.size(); ++k)
+        if (nodes[k].row < 0 && touchesThroughContact(w, s.stateBodies[static_cast<std::size_t>(nodes[k].body)]))
+            return;
+    std::vector<float>& extra = t.extraInertia;
+    if (extra.empty()) extra.assign(s.stateBodies.size(), 0.0f);
+    bool any = false;
+    for (std::size_t k = head; k < nodes.size(); ++k) {
+        if (nodes[k].row < 0) continue;
+        const JointConstraint& jc = s.joints[static_cast<std::size_t>(nodes[k].row)];
+        if (jc.type != JointType::revolute && jc.type != JointType::weld) continue;
+        const float load = length(jc.impulses.linear);
+        if (jc.a >= 0 && jc.invIA > 0.0f) extra[static_cast<std::size_t>(jc.a)] += h * load * length(jc.rA);
+        if (jc.b >= 0 && jc.invIB > 0.0f) extra[static_cast<std::size_t>(jc.b)] += h * load * length(jc.rB);
+        any = true;
+    }
+    if (!any) return;
+    for (std::size_t k = head; k < nodes.size(); ++k) {
+        if (nodes[k].row >= 0) continue;
+        const std::size_t b = static_cast<std::size_t>(nodes[k].body);
+        const float invI = w.bodies[s.stateBodies[b]].invInertia;
+        extra[b] = invI > 0.0f ? std::max(0.0f, extra[b] - 1.0f / invI) : 0.0f;
+    }
+}
+
+}  // namespace
+
+void buildJointTrees(WorldState& w, float h) {
     SolverArrays& s = w.solver;
     JointTrees& t = s.trees;
     t.nodes.clear();
+    t.extraInertia.clear();
     t.factoredPositions = -1;
     const int ground = static_cast<int>(s.stateBodies.size());
     const std::size_t bodySlots = static_cast<std::size_t>(ground) + 1;
@@ -338,13 +404,15 @@ void buildJointTrees(WorldState& w) {
         node.parent = parent;
         node.pushed = false;
     };
-    // A tree (the nodes from `head` on) holding a stretched joint is pushed whole.
+    // A tree (the nodes from `head` on) that no loop closes is pushed whole
+    // (selectTreeJoints: its joints are all or none JointConstraint::treePushed).
     auto markPushed = [&](std::size_t head) {
-        bool stretched = false;
-        for (std::size_t k = head; k < nodes.size() && !stretched; ++k)
-            stretched = nodes[k].row >= 0 && w.joints[s.joints[static_cast<std::size_t>(nodes[k].row)].joint].stretched;
-        if (!stretched) return;
+        bool pushed = false;
+        for (std::size_t k = head; k < nodes.size() && !pushed; ++k)
+            pushed = nodes[k].row >= 0 && s.joints[static_cast<std::size_t>(nodes[k].row)].treePushed;
+        if (!pushed) return;
         for (std::size_t k = head; k < nodes.size(); ++k) nodes[k].pushed = true;
+        stiffenTree(w, head, h);
         s.pushTrees = true;
     };
     auto expand = [&](std::size_t head) {
@@ -380,6 +448,16 @@ void buildJointTrees(WorldState& w) {
         markPushed(head);
     }
     if (nodes.empty()) return;
+    // The joints' rows turn the stiffened bodies with their raised inertia
+    // too (warm start, limits, motors), so that every impulse on them this
+    // step sees the same body.
+    if (!t.extraInertia.empty())
+        for (JointConstraint& jc : s.joints) {
+            if (jc.a >= 0 && jc.invIA > 0.0f)
+                jc.invIA = 1.0f / (1.0f / jc.invIA + t.extraInertia[static_cast<std::size_t>(jc.a)]);
+            if (jc.b >= 0 && jc.invIB > 0.0f)
+                jc.invIB = 1.0f / (1.0f / jc.invIB + t.extraInertia[static_cast<std::size_t>(jc.b)]);
+        }
 
     // Children before parents: reverse the order.
     const int last = static_cast<int>(nodes.size()) - 1;
@@ -414,7 +492,10 @@ void factor(const WorldState& w, SolverArrays& s, JointTrees& t, double gammaSca
         setZero(node.link);
         // M = diag(m, m, I); a degree of freedom the body lacks (zero inverse)
         // gets 1 and zero coupling, so its velocity change is zero.
-        const float invMass = b.invMass, invI = b.invInertia;
+        const float extra = node.body < static_cast<int>(t.extraInertia.size())
+                                ? t.extraInertia[static_cast<std::size_t>(node.body)]
+                                : 0.0f;
+        const float invMass = b.invMass, invI = b.invInertia > 0.0f ? 1.0f / (1.0f / b.invInertia + extra) : 0.0f;
         node.mask[0] = node.mask[1] = invMass != 0.0f ? 1.0f : 0.0f;
         node.mask[2] = invI != 0.0f ? 1.0f : 0.0f;
         node.diag[0][0] = node.diag[1][1] = invMass != 0.0f ? 1.0 / invMass : 1.0;

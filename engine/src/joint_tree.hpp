@@ -27,7 +27,7 @@ struct TreeNode {
     double compliance[3][3];     ///< joint node: Γ of its rows in the factored pass
     float mask[3];               ///< body node: 1 for a degree of freedom it has (non-zero inverse mass or inertia)
     bool speculative;            ///< joint node: its held limit is not reached yet (its target closes the gap)
-    bool pushed;        ///< its tree holds a stretched joint: rigid in the biased pass, pushed (pushJointTrees)
+    bool pushed;        ///< its tree is pushed (JointSlot::treePushed): rigid in the biased pass (pushJointTrees)
     EqualityRows rows;  ///< joint node: its rows at the factored positions
 };
 
@@ -38,6 +38,10 @@ struct JointTrees {
     std::vector<int> adjacency, adjacencyStart, nodeOfBody;
     std::vector<float> lightest, heaviest;  ///< per union-find root (kg)
     std::vector<std::uint8_t> stretched;    ///< per union-find root: holds a stretched joint
+    std::vector<float>
+        extraInertia;  ///< per solver state: inertia added for the geometric stiffness (kg·m²; empty: none)
+    std::vector<std::uint8_t> pointsOnly;  ///< per union-find root: every joint a hinge or a rigid weld
+    std::vector<std::uint8_t> closed;      ///< per union-find root: a joint outside the tree closes a loop through it
     /// What the factorization in `nodes` was made for (see solveJointTrees).
     int factoredPositions = -1;
     bool factoredSoft = false;
@@ -57,10 +61,20 @@ struct JointTrees {
 /// judged apart; and trees holding a stretched joint, JointSlot::stretched,
 /// that no loop closes) and marks them (JointSlot::inTree, false when
 /// called). The least and most inverse mass of the joints' movable bodies let
-/// a world of alike bodies without a stretched joint skip the search.
+/// a world of alike bodies without a stretched joint skip the search. A
+/// tree no joint outside it closes into a loop, whose joints all hold their
+/// load at a point or that holds a stretched joint, is pushed
+/// (JointSlot::treePushed): rigid in the biased pass, its error closed by
+/// pushJointTrees.
 void selectTreeJoints(WorldState& w, std::vector<JointSlot>& slots, float leastInverseMass, float mostInverseMass);
-/// Orders the trees' nodes over the rows in their final order.
-void buildJointTrees(WorldState& w);
+/// A hinge or a rigid weld: its rows hold a point (and an angle), whose load
+/// turns its bodies as the tension's geometric stiffness (buildJointTrees).
+bool holdsLoadAtPoint(const Joint& joint);
+/// Orders the trees' nodes over the rows in their final order, marks the
+/// trees no loop closes as pushed, and raises the inertia of their bodies
+/// by the tension's geometric stiffness where substeps of h do not resolve it
+/// (JointTrees::extraInertia; the joints' rows take it too).
+void buildJointTrees(WorldState& w, float h);
 
 /// Solves the trees' equality rows exactly for the velocities now, in ctx's
 /// pass: (J M⁻¹ Jᵀ + Γ) Δλ = −(J v + b + Γ λ), and applies Δλ. `positions`

@@ -404,7 +404,7 @@ void solve(WorldState& w, float dt) {
         prepareDeepOverlaps(w);
         beginDeepCarry(s);
     }
-    prepareJoints(w, dt);
+    prepareJoints(w, dt, h);
     w.profile.prepare = msSince(prepareStart);
     // Joint stiffness capped at 1/4 of the substep rate, so jointHertz 60 holds
     // at 4 substeps as in Box2D v3 (twice its contact hertz). Swept by one
@@ -492,7 +492,7 @@ void solve(WorldState& w, float dt) {
                     push.pushFactor = jointCtx.jointSoft.biasRate * h;
                     pushJoints(w, push, true);
                 }
-                // The stretched joints' trees' error, at the same rate (joint_tree.cpp).
+                // The pushed trees' error (rigid trees, stretched joints), at the same rate (joint_tree.cpp).
                 if (s.pushTrees) {
                     JointContext push = jointCtx;
                     push.pushFactor = jointCtx.jointSoft.biasRate * h;

@@ -86,7 +86,7 @@ struct SolverArrays {
     std::vector<std::uint32_t> bodyColours;  ///< per state: the joint colours its rows took (joint_solver.cpp)
     std::vector<int> deepContactCount;       ///< per state: contacts overlapping deeper than kDeepOverlap
     bool anyDeepJoint = false;               ///< some joint row is a deep joint this step (isDeepJoint)
-    bool pushTrees = false;                  ///< an exact tree holds a stretched joint this step (Joint::stretched)
+    bool pushTrees = false;                  ///< an exact tree is pushed this step (TreeNode::pushed)
     /// Per wide block: a hinge of it became a deep joint (refreshWideRevolutes).
     std::vector<std::uint8_t> wideDeep;
     bool anyDeepOverlap = false;          ///< some row overlaps deeper than kDeepOverlap this step

@@ -103,7 +103,7 @@ constexpr PinnedRun kPinned[] = {
     {"bounce_velocity_bias", "bounce", Variant::velocity_bias, 600, 0x174c92758aac4039ull},
     {"rain1000", "rain1000", Variant::as_shipped, 400, 0x901f161f267863bbull},
     {"newtons_cradle", "newtons_cradle", Variant::as_shipped, 600, 0xaa45fe8e0ac1c086ull},
-    {"heavy_chain", "heavy_chain", Variant::as_shipped, 300, 0x92901a09c3660056ull},
+    {"heavy_chain", "heavy_chain", Variant::as_shipped, 300, 0xf5e339732c958accull},
     {"tall_stack20_no_sleep", "tall_stack20", Variant::no_sleep, 600, 0x910a44099b729807ull},
     {"bullets", "bullets", Variant::as_shipped, 120, 0xeefd63c0abd16481ull},
 };

@@ -14,6 +14,7 @@
 
 #include "joint.hpp"
 #include "joint_tree.hpp"
+#include "world_fixtures.hpp"
 #include "world_state.hpp"
 
 namespace {
@@ -163,6 +164,88 @@ TEST(JointTree, RandomTreesOfUnlikeMassesNeverGainEnergy) {
     std::printf("[figure] random 1000:1 joint trees: %d of 20 gain energy when swept, 0 solved exactly\n", sweptGains);
 }
 
+/// Largest rise of the total energy of a free tree of hinged discs and boxes
+/// (3 to 12 bodies 1 m apart, one of them 1000 times as dense as the rest)
+/// dropped from 6 m onto the ground, over 5 s after its first step, as a
+/// fraction of the energy its fall can release (its weight times its height
+/// above the ground's top plus 1 m).
+double landingTreeGain(unsigned seed, int substeps) {
+    std::mt19937 rng(seed);
+    auto uniform = [&](float a, float b) { return std::uniform_real_distribution<float>(a, b)(rng); };
+    WorldSettings settings;
+    settings.enableSleep = false;
+    settings.substeps = substeps;
+    World world(settings);
+    const BodyId ground = world.createBody({});
+    world.createPolygonShape(ground, {}, makeOffsetBox(50.0f, 0.5f, {0.0f, -0.5f}, 0.0f));
+    const int n = 3 + static_cast<int>(rng() % 10);
+    const int heavy = static_cast<int>(rng() % static_cast<unsigned>(n));
+    std::vector<BodyId> bodies;
+    std::vector<Vec2> at;
+    const Filter apart{.groupIndex = -1};
+    for (int i = 0; i < n; ++i) {
+        const int parent = i == 0 ? -1 : static_cast<int>(rng() % static_cast<unsigned>(i));
+        Vec2 p{0.0f, 6.0f};
+        if (parent >= 0) {
+            const float angle = uniform(0.0f, 6.2831853f);
+            p = at[static_cast<std::size_t>(parent)] + Vec2{std::cos(angle), std::sin(angle)};
+        }
+        const BodyId b = world.createBody(
+            {.type = BodyType::dynamic_body, .position = p, .angle = uniform(-3.0f, 3.0f)});
+        const ShapeDef def{.density = i == heavy ? 1000.0f : 1.0f, .filter = apart};
+        if (rng() % 2)
+            world.createCircleShape(b, def, Circle{{0.0f, 0.0f}, uniform(0.1f, 0.35f)});
+        else
+            world.createPolygonShape(b, def, makeBox(uniform(0.1f, 0.35f), uniform(0.1f, 0.35f)));
+        if (parent >= 0) {
+            const BodyId a = bodies[static_cast<std::size_t>(parent)];
+            const Vec2 mid = 0.5f * (p + at[static_cast<std::size_t>(parent)]);
+            world.createRevoluteJoint({.bodyA = a,
+                                       .bodyB = b,
+                                       .localAnchorA = invTransformPoint(world.transform(a), mid),
+                                       .localAnchorB = invTransformPoint(world.transform(b), mid)});
+        }
+        bodies.push_back(b);
+        at.push_back(p);
+    }
+    const double g = -world.settings().gravity.y;
+    auto energy = [&] { return test::totalEnergy(world, bodies); };
+    double scale = 0.0;
+    for (BodyId b : bodies) scale += world.mass(b) * g * (world.worldCenterOfMass(b).y + 1.0);
+    world.step(1.0f / 60.0f);  // the first step takes out the velocities the joints forbid
+    const double start = energy();
+    double peak = start;
+    for (int i = 0; i < 300; ++i) {
+        world.step(1.0f / 60.0f);
+        peak = std::max(peak, energy());
+    }
+    return (peak - start) / scale;
+}
+
+// Hinge trees with a body 1000 times as dense as the rest, dropped on the
+// ground: a passive system, so no energy may be gained (the 1 %,
+// measured against what the fall can release). The heavy body stops on the
+// ground while its light links are still moving; the tension's geometric
+// stiffness is added to a tree's inertia only while none of its bodies
+// touches anything (joint_tree.cpp): added there as well, the contacts'
+// rows turning the same bodies with their own inertia, one of these trees
+// gained 7.5 times what its fall releases at 4 substeps (of 100 other such
+// trees, 3 at 4 substeps, the worst 562 times, and 2 at 2 substeps).
+TEST(JointTree, HingeTreesWithAHeavyBodyLandingNeverGainEnergy) {
+    for (int substeps : {4, 2, 1}) {
+        double worst = 0.0;
+        for (unsigned seed = 1; seed <= 100; ++seed) {
+            const double gain = landingTreeGain(seed, substeps);
+            ASSERT_TRUE(std::isfinite(gain)) << "seed " << seed;
+            EXPECT_LE(gain, 0.01) << "seed " << seed << ", " << substeps << " substeps";
+            worst = std::max(worst, gain);
+        }
+        std::printf("[figure] 100 landing 1000:1 hinge trees, %d substeps: energy at most %.4f of the fall's over the "
+                    "start\n",
+                    substeps, worst);
+    }
+}
+
 // A chain of thin links (0.1 m × 2.5 cm, 0.1 kg each) hinged end to end from
 // a pivot, with a disc on its last hinge `ratio` times a link's mass,
 // released level under gravity at the default settings (an exact tree: its
@@ -170,9 +253,10 @@ TEST(JointTree, RandomTreesOfUnlikeMassesNeverGainEnergy) {
 // Returns the largest total energy over `seconds`, relative to its start,
 // the potential measured from the lowest the chain can reach (hanging
 // straight down), so the start is the energy the chain has to give.
-double swingingChainPeakEnergy(int links, float ratio, float seconds) {
+double swingingChainPeakEnergy(int links, float ratio, float seconds, int substeps = WorldSettings{}.substeps) {
     WorldSettings settings;
     settings.enableSleep = false;
+    settings.substeps = substeps;
     World world(settings);
     const float length = 0.1f, halfThickness = 0.0125f, linkMass = 0.1f, radius = 0.05f;
     const BodyId pivot = world.createBody({});
@@ -199,17 +283,7 @@ double swingingChainPeakEnergy(int links, float ratio, float seconds) {
     world.createRevoluteJoint({.bodyA = previous, .bodyB = end, .localAnchorA = previousAnchor});
     bodies.push_back(end);
     const double lowest = -(links * length + radius);
-    auto energy = [&] {
-        double e = 0.0;
-        for (BodyId b : bodies) {
-            const Vec2 v = world.linearVelocity(b);
-            const double w = world.angularVelocity(b);
-            e += 0.5 * world.mass(b) * (double(v.x) * v.x + double(v.y) * v.y) +
-                 0.5 * world.rotationalInertia(b) * w * w +
-                 world.mass(b) * 10.0 * (double(world.worldCenterOfMass(b).y) - lowest);
-        }
-        return e;
-    };
+    auto energy = [&] { return test::totalEnergy(world, bodies, lowest); };
     const double start = energy();
     double peak = start;
     for (int i = 0; i < static_cast<int>(seconds * 60.0f); ++i) {
@@ -220,18 +294,24 @@ double swingingChainPeakEnergy(int links, float ratio, float seconds) {
     return peak / start;
 }
 
-// Swinging chains with a heavy end at the defaults keep their energy up to
-// a 200:1 end (docs/joints.md, "Extreme mass ratios"; at 300:1 the 10- and
-// 20-link chains gain). 1 % is the hard-cases issue's bound for a passive
-// system; 20 s covers 7 to 14 swings, long enough for a gain to show (the
-// 300:1 chains' gains show from 2 to 3 s on).
-TEST(JointTree, SwingingChainsWithAHeavyEndKeepTheirEnergyUpTo200To1) {
-    for (int links : {5, 10, 20}) {
-        for (float ratio : {100.0f, 200.0f}) {
-            const double peak = swingingChainPeakEnergy(links, ratio, 20.0f);
-            std::printf("[figure] swinging chain of %d links, %.0f:1 end: energy at most %.4f times its start\n", links,
-                        ratio, peak);
-            EXPECT_LE(peak, 1.01) << links << " links, " << ratio << ":1";
+// Swinging chains with a heavy end keep their energy up to a 1000:1 end at 4,
+// 2 and 1 substeps. They did up to 200:1 at 4 substeps only while the trees'
+// rows were soft relative to each link's own mass: from 300:1 (and from 100:1
+// at one substep) the links under the end's pull turned faster than a substep
+// resolves (the tension's geometric stiffness, joint_tree.cpp) and the chains
+// gained up to 6,000 times their energy. 1 % is the hard-cases issue's bound
+// for a passive system; 20 s covers 7 to 14 swings, long enough for a gain to
+// show (the gains showed from 2 to 3 s on).
+TEST(JointTree, SwingingChainsWithAHeavyEndKeepTheirEnergyUpTo1000To1) {
+    for (int substeps : {4, 2, 1}) {
+        for (int links : {5, 10, 20}) {
+            for (float ratio : {100.0f, 300.0f, 1000.0f}) {
+                const double peak = swingingChainPeakEnergy(links, ratio, 20.0f, substeps);
+                std::printf("[figure] swinging chain of %d links, %.0f:1 end, %d substeps: energy at most %.4f times "
+                            "its start\n",
+                            links, ratio, substeps, peak);
+                EXPECT_LE(peak, 1.01) << links << " links, " << ratio << ":1, " << substeps << " substeps";
+            }
         }
     }
 }

@@ -1,6 +1,8 @@
 // Small scene builders shared by the world tests.
 #pragma once
 
+#include <vector>
+
 #include <impulse2d/impulse2d.hpp>
 
 namespace i2d::test {
@@ -17,6 +19,21 @@ inline BodyId makeBox(World& world, Vec2 position, float halfExtent = 0.5f, floa
     BodyId body = world.createBody({.type = BodyType::dynamic_body, .position = position});
     world.createPolygonShape(body, {.density = density, .friction = friction}, i2d::makeBox(halfExtent, halfExtent));
     return body;
+}
+
+/// Kinetic (linear and rotational) plus potential energy of `bodies` in
+/// double precision (J), the potential in the world's gravity (along −y)
+/// measured from the height `floorY`.
+inline double totalEnergy(const World& world, const std::vector<BodyId>& bodies, double floorY = 0.0) {
+    const double g = -world.settings().gravity.y;
+    double e = 0.0;
+    for (BodyId b : bodies) {
+        const Vec2 v = world.linearVelocity(b);
+        const double w = world.angularVelocity(b);
+        e += 0.5 * world.mass(b) * (double(v.x) * v.x + double(v.y) * v.y) + 0.5 * world.rotationalInertia(b) * w * w +
+             world.mass(b) * g * (double(world.worldCenterOfMass(b).y) - floorY);
+    }
+    return e;
 }
 
 }  // namespace i2d::test
