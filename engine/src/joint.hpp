@@ -142,8 +142,7 @@ struct JointConstraint {
     /// Its limit pulled in this position's solve and was let go until the
     /// positions change (the tree's active set, joint_tree.cpp).
     bool limitReleased : 1 = false;
-    /// JointSlot::treePushed: its tree is rigid in the biased pass and its
-    /// error pushed on pseudo-velocities (pushJointTrees).
+    /// JointSlot::treePushed: its tree may be pushed (buildJointTrees).
     bool treePushed : 1 = false;
     /// A joint solved with its tree whose limit (a revolute joint's angle, a
     /// slider's translation, a rope's or limited spring's length) is held by
@@ -177,8 +176,12 @@ struct JointSlot {
     bool deepHinge = false;  ///< kept off the wide path as a deep joint (Joint::deepHinge)
     bool stretched = false;  ///< Joint::stretched when the plan was made (its tree is solved exactly: selectTreeJoints)
     bool pointLoad = false;  ///< a hinge or a rigid weld: carries its load at a point (holdsLoadAtPoint)
-    bool treePushed =
-        false;  ///< in a tree no loop closes: rigid in the biased pass, its error pushed (selectTreeJoints)
+    /// In a tree no loop closes, of hinges and rigid welds or holding a
+    /// stretched joint: the tree is pushed (rigid in the biased pass, its
+    /// error closed by pushJointTrees) while none of its bodies touches
+    /// anything, or always when it holds a stretched joint (selectTreeJoints,
+    /// buildJointTrees).
+    bool treePushed = false;
 };
 
 /// What a joint's solve needs besides its row and its bodies' states.

@@ -318,14 +318,11 @@ namespace {
 /// rows turn a body with its own inertia, and the two metrics side by side
 /// gained energy (a free hinge tree with a 1000:1 body landing on the ground,
 /// its light links whirled by the stopped heavy body: 7.5 times what its fall
-/// releases).
+/// releases). The caller (buildJointTrees) looks.
 void stiffenTree(WorldState& w, std::size_t head, float h) {
     SolverArrays& s = w.solver;
     JointTrees& t = s.trees;
     std::vector<TreeNode>& nodes = t.nodes;
-    for (std::size_t k = head; k < nodes.size(); ++k)
-        if (nodes[k].row < 0 && touchesThroughContact(w, s.stateBodies[static_cast<std::size_t>(nodes[k].body)]))
-            return;
     std::vector<float>& extra = t.extraInertia;
     if (extra.empty()) extra.assign(s.stateBodies.size(), 0.0f);
     bool any = false;
@@ -404,15 +401,27 @@ void buildJointTrees(WorldState& w, float h) {
         node.parent = parent;
         node.pushed = false;
     };
-    // A tree (the nodes from `head` on) that no loop closes is pushed whole
-    // (selectTreeJoints: its joints are all or none JointConstraint::treePushed).
+    // A tree (the nodes from `head` on) is pushed whole (selectTreeJoints: its
+    // joints are all or none JointConstraint::treePushed), unless a body of it
+    // touches something and it holds no stretched joint. Beside its contacts
+    // and its held limits, rigid with nothing to damp them, a ragdoll whose
+    // torso is 10 times as dense as its limbs kept jiggling on the ground
+    // (JointTree.RagdollsWithAHeavyTorsoComeToRestOnTheGround); its soft rows
+    // damp that.
     auto markPushed = [&](std::size_t head) {
-        bool pushed = false;
-        for (std::size_t k = head; k < nodes.size() && !pushed; ++k)
-            pushed = nodes[k].row >= 0 && s.joints[static_cast<std::size_t>(nodes[k].row)].treePushed;
-        if (!pushed) return;
+        bool pushed = false, stretched = false, touches = false;
+        for (std::size_t k = head; k < nodes.size(); ++k) {
+            if (nodes[k].row >= 0) {
+                const JointConstraint& jc = s.joints[static_cast<std::size_t>(nodes[k].row)];
+                pushed = pushed || jc.treePushed;
+                stretched = stretched || w.joints[jc.joint].stretched;
+            } else {
+                touches = touches || touchesThroughContact(w, s.stateBodies[static_cast<std::size_t>(nodes[k].body)]);
+            }
+        }
+        if (!pushed || (touches && !stretched)) return;
         for (std::size_t k = head; k < nodes.size(); ++k) nodes[k].pushed = true;
-        stiffenTree(w, head, h);
+        if (!touches) stiffenTree(w, head, h);
         s.pushTrees = true;
     };
     auto expand = [&](std::size_t head) {

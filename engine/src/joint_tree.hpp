@@ -63,16 +63,17 @@ struct JointTrees {
 /// called). The least and most inverse mass of the joints' movable bodies let
 /// a world of alike bodies without a stretched joint skip the search. A
 /// tree no joint outside it closes into a loop, whose joints all hold their
-/// load at a point or that holds a stretched joint, is pushed
-/// (JointSlot::treePushed): rigid in the biased pass, its error closed by
-/// pushJointTrees.
+/// load at a point or that holds a stretched joint, may be pushed
+/// (JointSlot::treePushed; buildJointTrees decides).
 void selectTreeJoints(WorldState& w, std::vector<JointSlot>& slots, float leastInverseMass, float mostInverseMass);
 /// A hinge or a rigid weld: its rows hold a point (and an angle), whose load
 /// turns its bodies as the tension's geometric stiffness (buildJointTrees).
 bool holdsLoadAtPoint(const Joint& joint);
-/// Orders the trees' nodes over the rows in their final order, marks the
-/// trees no loop closes as pushed, and raises the inertia of their bodies
-/// by the tension's geometric stiffness where substeps of h do not resolve it
+/// Orders the trees' nodes over the rows in their final order and marks the
+/// pushed trees: those that may be (JointSlot::treePushed) while none of their
+/// bodies touches anything through a contact, and those holding a stretched
+/// joint. The bodies of a pushed tree that touches nothing get the inertia of
+/// the tension's geometric stiffness where substeps of h do not resolve it
 /// (JointTrees::extraInertia; the joints' rows take it too).
 void buildJointTrees(WorldState& w, float h);
 
