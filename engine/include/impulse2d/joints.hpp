@@ -10,8 +10,9 @@
 //   collideConnected   whether the two bodies' shapes still collide
 //   userData           anything the game wants to keep with the joint
 // Rigid parts of a joint are softened like contacts in soft_step
-// (WorldSettings::jointHertz, jointDampingRatio) and pushed by the push factor
-// in baumgarte and split. Springs, motors and limits are optional features,
+// (WorldSettings::jointHertz, jointDampingRatio; an exact tree of hinges and
+// rigid welds touching nothing is rigid, WorldSettings::exactJointMassRatio)
+// and pushed by the push factor in baumgarte and split. Springs, motors and limits are optional features,
 // each off unless enabled.
 #pragma once
 

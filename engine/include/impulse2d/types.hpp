@@ -95,8 +95,12 @@ struct WorldSettings {
     /// equality rows (the revolute joint's point, a rigid weld, a rigid
     /// distance joint) solved exactly, not swept, when the tree's heaviest
     /// body is at least this many times its lightest: Gauss-Seidel leaves a
-    /// chain carrying a heavy body stretched (docs/joints.md). 1 solves every
-    /// tree exactly; infinity none. Dimensionless, ≥ 1.
+    /// chain carrying a heavy body stretched (docs/joints.md). Such a tree of
+    /// hinges and rigid welds is solved rigid in soft_step while none of its
+    /// bodies touches anything, its position error closed on pseudo-velocities
+    /// at the jointHertz rate (docs/joints.md, "Rigid trees and the tension's
+    /// geometric stiffness"). 1 solves every tree exactly; infinity none.
+    /// Dimensionless, ≥ 1.
     float exactJointMassRatio = 10.0f;
 
     /// Approach speed (m/s) below which a contact gets no restitution
