@@ -264,8 +264,9 @@ void selectTreeJoints(WorldState& w, std::vector<JointSlot>& slots, float leastI
         t.heaviest[root] = std::max(t.heaviest[root], mass);
     }
     // A tree through which a joint outside it closes a loop (a net, a
-    // bridge's deck) keeps soft rows; one alone is rigid in the biased pass
-    // and its error is pushed (pushJointTrees).
+    // bridge's deck) keeps soft rows; one alone, of hinges and rigid welds,
+    // may be pushed: rigid in the biased pass, its error closed by
+    // pushJointTrees (JointSlot::treePushed; buildJointTrees decides).
     auto rootOf = [&](const JointSlot& jc) {
         const int a = movingSide(jc.a, jc.invMassA, jc.invIA, ground);
         const int side = a != ground ? a : movingSide(jc.b, jc.invMassB, jc.invIB, ground);
