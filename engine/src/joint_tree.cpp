@@ -303,6 +303,10 @@ bool holdsLoadAtPoint(const Joint& joint) {
 
 namespace {
 
+/// The inverse of the inertia 1/invI + extra (0 stays 0: a body that does
+/// not turn).
+float raisedInverseInertia(float invI, float extra) { return invI > 0.0f ? 1.0f / (1.0f / invI + extra) : 0.0f; }
+
 /// The tension's geometric stiffness (Andrews, Teichmann and Kry (2017),
 /// Geometric Stiffness for Real-time Constrained Multibody Dynamics): a body
 /// pulled by a load F at an anchor r from its centre turns as if on a spring
@@ -463,10 +467,8 @@ void buildJointTrees(WorldState& w, float h) {
     // step sees the same body.
     if (!t.extraInertia.empty())
         for (JointConstraint& jc : s.joints) {
-            if (jc.a >= 0 && jc.invIA > 0.0f)
-                jc.invIA = 1.0f / (1.0f / jc.invIA + t.extraInertia[static_cast<std::size_t>(jc.a)]);
-            if (jc.b >= 0 && jc.invIB > 0.0f)
-                jc.invIB = 1.0f / (1.0f / jc.invIB + t.extraInertia[static_cast<std::size_t>(jc.b)]);
+            if (jc.a >= 0) jc.invIA = raisedInverseInertia(jc.invIA, t.extraInertia[static_cast<std::size_t>(jc.a)]);
+            if (jc.b >= 0) jc.invIB = raisedInverseInertia(jc.invIB, t.extraInertia[static_cast<std::size_t>(jc.b)]);
         }
 
     // Children before parents: reverse the order.
@@ -505,7 +507,7 @@ void factor(const WorldState& w, SolverArrays& s, JointTrees& t, double gammaSca
         const float extra = node.body < static_cast<int>(t.extraInertia.size())
                                 ? t.extraInertia[static_cast<std::size_t>(node.body)]
                                 : 0.0f;
-        const float invMass = b.invMass, invI = b.invInertia > 0.0f ? 1.0f / (1.0f / b.invInertia + extra) : 0.0f;
+        const float invMass = b.invMass, invI = raisedInverseInertia(b.invInertia, extra);
         node.mask[0] = node.mask[1] = invMass != 0.0f ? 1.0f : 0.0f;
         node.mask[2] = invI != 0.0f ? 1.0f : 0.0f;
         node.diag[0][0] = node.diag[1][1] = invMass != 0.0f ? 1.0 / invMass : 1.0;
