@@ -420,6 +420,31 @@ TEST(OverlapPiles, ASmallBodyInsideABigOneSlidesOut) {
         }
 }
 
+// A box that gravity does not pull (gravity scale 0) created 0.3 m deep in
+// the top of a box resting on the ground, 5 cm off its centre. Sliding it
+// aside, as a falling body is to keep from adding height (deep_overlap.cpp),
+// would move it 0.95 m (its width less the offset) where lifting it, at no
+// cost in energy, moves it 0.3 m: it is pushed out along the normal. The
+// world's gravity, which it does not feel, slid it 0.55 m aside in the first
+// second. The bounds: apart (B a box's height above A, less the slop), and
+// moved sideways less than the depth, which the long way could not do.
+TEST(OverlapPiles, AWeightlessBodyIsPushedOutTheShorterWay) {
+    World world({.enableSleep = false});
+    test::makeGround(world, 200.0f);
+    const ShapeDef def{.density = 1.0f, .friction = 0.6f};
+    BodyId below = world.createBody({.type = BodyType::dynamic_body, .position = {0.0f, 0.5f}});
+    world.createPolygonShape(below, def, makeBox(0.5f, 0.5f));
+    const Vec2 created{0.05f, 1.2f};
+    BodyId weightless = world.createBody({.type = BodyType::dynamic_body, .position = created, .gravityScale = 0.0f});
+    world.createPolygonShape(weightless, def, makeBox(0.5f, 0.5f));
+    for (int step = 0; step < 60; ++step) world.step(kDt);
+    const Vec2 p = world.position(weightless);
+    std::printf("[figure] weightless box after 1 s: %.3f m sideways, %.3f m above the box below\n",
+                std::abs(p.x - created.x), p.y - world.position(below).y);
+    EXPECT_GE(p.y - world.position(below).y, 1.0f - world.settings().penetrationSlop);
+    EXPECT_LT(std::abs(p.x - created.x), 0.3f);
+}
+
 // Two L-shaped bodies (two boxes each, 1 m across) created overlapping on
 // the ground, side by side at the same angle: each pair of their shapes is a
 // contact with its own normal, and the pushes of two of them oppose. A push
