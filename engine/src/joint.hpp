@@ -168,6 +168,11 @@ struct JointSlot {
     int joint = kNullIndex;
     int a = kNullIndex, b = kNullIndex, c = kNullIndex, d = kNullIndex;  ///< as JointConstraint's
     float invMassA = 0, invIA = 0, invMassB = 0, invIB = 0;
+    /// How each side gives at the joint's anchor: 1/m + |r|²/I (r from the
+    /// centre of mass to the anchor), the inverse of the mass the joint's rows
+    /// move there; the side's inverse mass for a joint without anchors, 0 for
+    /// a side that does not move (anchorMobility, joint_solver.cpp).
+    float anchorInvMassA = 0, anchorInvMassB = 0;
     bool movesC = false, movesD = false;  ///< gear: its joints' frames move
     std::uint8_t equalityRows = 0;        ///< rows the exact tree solve could take (joint_tree.cpp)
     bool rowsOnlyAtLimit = false;         ///< those rows are a limit's, handed over while it holds (a rope)

@@ -113,6 +113,26 @@ void fillBody(const WorldState& w, int body, int& index, float& invMass, float& 
     invI = index >= 0 ? b.invInertia : 0.0f;
 }
 
+/// 1/m + |r|²/I at the joint's anchor on `body` (JointSlot::anchorInvMassA):
+/// a body driven at an anchor far outside itself gives there as a much
+/// lighter one would (a 0.05 kg disc of radius 0.12 m hinged 0.5 m from its
+/// centre: as 1.4 g). A joint without anchors (motor, gear, mouse) takes
+/// the inverse mass.
+float anchorMobility(const Joint& joint, const Body& body, float invMass, float invI, bool sideA) {
+    const Vec2 anchor = std::visit(
+        [&](const auto& def) -> Vec2 {
+            if constexpr (requires {
+                              def.localAnchorA;
+                              def.localAnchorB;
+                          })
+                return sideA ? def.localAnchorA : def.localAnchorB;
+            else
+                return body.localCenter;
+        },
+        joint.def);
+    return invMass + invI * lengthSquared(anchor - body.localCenter);
+}
+
 /// A revolute joint with its point rows only, in a step that may solve it
 /// eight at a time (not split mode, whose push sweeps every row), with a point
 /// matrix that fits single precision (see solvePointRows).
@@ -146,6 +166,8 @@ void planJoints(WorldState& w) {
         slot.joint = j;
         fillBody(w, joint.bodyA, slot.a, slot.invMassA, slot.invIA);
         fillBody(w, joint.bodyB, slot.b, slot.invMassB, slot.invIB);
+        slot.anchorInvMassA = anchorMobility(joint, bA, slot.invMassA, slot.invIA, true);
+        slot.anchorInvMassB = anchorMobility(joint, bB, slot.invMassB, slot.invIB, false);
         if (joint.type == JointType::gear) {
             float m, i;
             fillBody(w, w.joints[joint.joint1].bodyA, slot.c, m, i);

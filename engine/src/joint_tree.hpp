@@ -37,7 +37,9 @@ struct JointTrees {
     std::vector<int> unionParent;  ///< scratch of the spanning-forest search
     std::vector<int> adjacency, adjacencyStart, nodeOfBody;
     std::vector<float> lightest, heaviest;  ///< per union-find root (kg)
-    std::vector<std::uint8_t> stretched;    ///< per union-find root: holds a stretched joint
+    std::vector<std::uint8_t> welds, weldCluster;
+    std::vector<float> lightestAnchor, heaviestAnchor;  ///< the masses at the tree joints' anchors, per root (kg)
+    std::vector<std::uint8_t> stretched;                ///< per union-find root: holds a stretched joint
     std::vector<float>
         extraInertia;  ///< per solver state: inertia added for the geometric stiffness (kg·m²; empty: none)
     std::vector<std::uint8_t> pointsOnly;  ///< per union-find root: every joint a hinge or a rigid weld

@@ -402,6 +402,97 @@ TEST(JointTree, SwingingChainsWithAHeavyEndKeepTheirEnergyUpTo1000To1) {
 
 }  // namespace
 
+namespace {
+
+/// A body of a hung tree (a box or, with no second half extent, a disc) and
+/// its joint to an earlier one (parent −1: the static pivot at (0, 12.5)).
+struct TreePart {
+    Vec2 at;
+    float angle, halfX, halfY;
+    int parent;
+    bool weld;
+    Vec2 anchorParent, anchorSelf;  ///< in the two bodies' frames
+    float referenceAngle;
+};
+
+/// Largest total energy over 5 s, relative to its start, of a tree hung from
+/// the pivot, its bodies alike in density and kept apart; the potential is
+/// measured from the lowest point a body's centre can reach (the pivot less
+/// the furthest centre's distance from it), so the energy is never negative.
+double hungTreePeakEnergy(const std::vector<TreePart>& parts, int substeps) {
+    WorldSettings settings;
+    settings.enableSleep = false;
+    settings.substeps = substeps;
+    World world(settings);
+    const BodyId ground = world.createBody({});
+    const Vec2 pivot{0.0f, 12.5f};
+    const ShapeDef def{.density = 1.0f, .filter = {.groupIndex = -1}};
+    std::vector<BodyId> bodies;
+    float reach = 0.0f;
+    for (const TreePart& part : parts) {
+        const BodyId b = world.createBody({.type = BodyType::dynamic_body, .position = part.at, .angle = part.angle});
+        if (part.halfY > 0.0f)
+            world.createPolygonShape(b, def, makeBox(part.halfX, part.halfY));
+        else
+            world.createCircleShape(b, def, Circle{{0.0f, 0.0f}, part.halfX});
+        const BodyId a = part.parent < 0 ? ground : bodies[static_cast<std::size_t>(part.parent)];
+        if (part.weld)
+            world.createWeldJoint({.bodyA = a,
+                                   .bodyB = b,
+                                   .localAnchorA = part.anchorParent,
+                                   .localAnchorB = part.anchorSelf,
+                                   .referenceAngle = part.referenceAngle});
+        else
+            world.createRevoluteJoint(
+                {.bodyA = a, .bodyB = b, .localAnchorA = part.anchorParent, .localAnchorB = part.anchorSelf});
+        bodies.push_back(b);
+        reach = std::max(reach, length(part.at - pivot));
+    }
+    auto energy = [&] { return test::totalEnergy(world, bodies, pivot.y - reach); };
+    const double start = energy();
+    double peak = start;
+    for (int i = 0; i < 300; ++i) {
+        world.step(1.0f / 60.0f);
+        peak = std::max(peak, energy());
+        if (!std::isfinite(peak)) break;
+    }
+    return peak / start;
+}
+
+}  // namespace
+
+// Two hung trees of bodies alike in density (0.05 to 0.34 kg, 0.1 to 0.35 m
+// across) whose joints sit 0.5 m from their centres, drawn from random trees
+// of hinges and welds that exploded in the soft step's sweep: a box with
+// three bodies welded to it, and a disc of radius 0.12 m, 1.4 g at its
+// anchors, hinged between bodies of 14 to 62 g there and welded to one.
+// Swept, the star reached 402, 110 and 35 times the energy it started with
+// at 4, 2 and 1 substeps, the lever tree 2,584 and 3,447 times at 2 and 1.
+// Trees with a body welded to two others or more (the star), or whose
+// masses at the anchors are exactJointMassRatio apart (the lever), are now
+// solved exactly (joint_tree.cpp). A passive system: the hard-cases issue's
+// bound, 1 % over 5 s at 4, 2 and 1 substeps.
+TEST(JointTree, LeversAndWeldedStarsOfAlikeBodiesKeepTheirEnergy) {
+    const std::vector<TreePart> star{
+        {{0.0f, 12.0f}, -2.6599f, 0.2319f, 0.3195f, -1, false, {0.0f, 12.5f}, {-0.2316f, -0.4431f}, 0.0f},
+        {{-0.9896f, 11.856f}, 0.2129f, 0.2875f, 0.0f, 0, true, {0.4718f, -0.1654f}, {0.4988f, -0.0342f}, 2.8728f},
+        {{-0.9935f, 11.8859f}, 2.887f, 0.2457f, 0.0f, 0, true, {0.4666f, -0.1795f}, {-0.4664f, -0.1803f}, -0.7362f},
+        {{-0.2185f, 11.0242f}, -1.4175f, 0.2234f, 0.2357f, 0, true, {0.3229f, 0.3818f}, {-0.4655f, 0.1825f}, 1.2424f}};
+    const std::vector<TreePart> lever{
+        {{0.0f, 12.0f}, 2.9287f, 0.2225f, 0.0f, -1, false, {0.0f, 12.5f}, {0.1057f, -0.4887f}, 0.0f},
+        {{-0.8381f, 12.5455f}, -1.5789f, 0.1229f, 0.0f, 0, false, {0.4672f, -0.1781f}, {0.2694f, 0.4212f}, 0.0f},
+        {{-1.1521f, 11.5961f}, -2.1825f, 0.2526f, 0.0f, 1, false, {0.476f, -0.1531f}, {-0.4788f, -0.1441f}, 0.0f},
+        {{-1.5142f, 13.2824f}, -0.7963f, 0.3312f, 0.0f, 1, true, {-0.3657f, -0.341f}, {0.4997f, -0.016f}, 0.7826f},
+        {{-1.8001f, 12.2726f}, -2.1793f, 0.3215f, 0.3005f, 1, false, {0.1404f, -0.4799f}, {-0.387f, 0.3166f}, 0.0f}};
+    for (int substeps : {4, 2, 1}) {
+        const double starPeak = hungTreePeakEnergy(star, substeps), leverPeak = hungTreePeakEnergy(lever, substeps);
+        std::printf("[figure] %d substeps: welded star at most %.4f times its start, lever tree %.4f\n", substeps,
+                    starPeak, leverPeak);
+        EXPECT_LE(starPeak, 1.01) << substeps << " substeps";
+        EXPECT_LE(leverPeak, 1.01) << substeps << " substeps";
+    }
+}
+
 // Trees hung from the same static bodies are judged by their own masses:
 // two hinge chains of alike links (1 kg) and one of alike links with a
 // 100 kg end, all three hung from the static node. Only the heavy-ended

@@ -94,8 +94,11 @@ struct WorldSettings {
     /// Joints whose bodies form a tree (a chain, a ragdoll) have their
     /// equality rows (the revolute joint's point, a rigid weld, a rigid
     /// distance joint) solved exactly, not swept, when the tree's heaviest
-    /// body is at least this many times its lightest: Gauss-Seidel leaves a
-    /// chain carrying a heavy body stretched (docs/joints.md). Such a tree of
+    /// body is at least this many times its lightest, or the masses its rows
+    /// see at the joints' anchors (1/(1/m + |r|²/I)) are, or one of its bodies
+    /// is rigidly welded to two others: Gauss-Seidel leaves a chain carrying a
+    /// heavy body stretched, and the soft step's sweep over such trees can
+    /// gain energy (docs/joints.md). Such a tree of
     /// hinges and rigid welds is solved rigid in soft_step while none of its
     /// bodies touches anything, its position error closed on pseudo-velocities
     /// at the jointHertz rate (docs/joints.md, "Rigid trees and the tension's
