@@ -235,7 +235,9 @@ void selectTreeJoints(WorldState& w, std::vector<JointSlot>& slots, float leastI
             }
         if (!isRigidWeld(jc)) continue;
         for (int index : {jc.a, jc.b})
-            if (index >= 0 && ++t.welds[static_cast<std::size_t>(index)] >= 2) anyWeldCluster = true;
+            if (index >= 0 && t.welds[static_cast<std::size_t>(index)] < 2 &&
+                ++t.welds[static_cast<std::size_t>(index)] == 2)
+                anyWeldCluster = true;
     }
     if (!(mostInverseMass >= massRatio * leastInverseMass) && !(mostAnchor >= massRatio * leastAnchor) &&
         !anyStretched && !anyWeldCluster)
@@ -302,17 +304,18 @@ void selectTreeJoints(WorldState& w, std::vector<JointSlot>& slots, float leastI
         for (const JointSlot& jc : slots) {
             if (!jc.inTree || !isRigidWeld(jc)) continue;
             for (int index : {jc.a, jc.b})
-                if (index >= 0 && ++t.welds[static_cast<std::size_t>(index)] >= 2)
+                if (index >= 0 && t.welds[static_cast<std::size_t>(index)] < 2 &&
+                    ++t.welds[static_cast<std::size_t>(index)] == 2)
                     t.weldCluster[static_cast<std::size_t>(findRoot(t.unionParent, index))] = 1;
         }
     }
     // The masses at the anchors, per tree: a body driven at an anchor far
     // outside itself gives there as a much lighter body would, and the sweep
     // converges as slowly on the rows around it. Of the same random trees,
-    // those whose bodies' masses were within the ratio but whose masses at the anchors
-    // were exactJointMassRatio apart gained up to 475 times their potential
-    // energy at 2 substeps; solved exactly, none of the 1,000 more than 11 %
-    // at any substep count.
+    // those whose bodies' masses were within the ratio but whose masses at
+    // the anchors were exactJointMassRatio apart gained up to 475 times their
+    // potential energy at 2 substeps; solved exactly, none of the 1,000 more
+    // than 11 % at any substep count.
     for (const JointSlot& jc : slots) {
         if (!jc.inTree) continue;
         for (const auto& [index, inverse] : {std::pair{jc.a, jc.anchorInvMassA}, std::pair{jc.b, jc.anchorInvMassB}}) {

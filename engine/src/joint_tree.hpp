@@ -37,7 +37,8 @@ struct JointTrees {
     std::vector<int> unionParent;  ///< scratch of the spanning-forest search
     std::vector<int> adjacency, adjacencyStart, nodeOfBody;
     std::vector<float> lightest, heaviest;  ///< per union-find root (kg)
-    std::vector<std::uint8_t> welds, weldCluster;
+    std::vector<std::uint8_t> welds;        ///< per solver state: rigid welds it holds (counted to 2; scratch)
+    std::vector<std::uint8_t> weldCluster;  ///< per union-find root: a body welded to two others or more
     std::vector<float> lightestAnchor, heaviestAnchor;  ///< the masses at the tree joints' anchors, per root (kg)
     std::vector<std::uint8_t> stretched;                ///< per union-find root: holds a stretched joint
     std::vector<float>
