@@ -223,8 +223,8 @@ void prepareDeepOverlaps(WorldState& w) {
         // weightless circles jammed in a box (Confined) were pushed sideways
         // from every row resting on the bottom wall and crowded into one
         // another: circles up to 0.99 m into each other and 10 to 25 J of
-        // jiggle after 10 s, against 0.85 m and 3 to 6 J pushed along the
-        // normals (docs/validation.md, "Hard cases not yet met").
+        // jiggle after 10 s, against up to 0.89 m and 2.6 to 5.9 J pushed
+        // along the normals (docs/validation.md, "Hard cases not yet met").
         if (upper.gravityScale <= 0.0f) continue;
         float depth = 0.0f;
         for (int j = 0; j < ct.manifold.pointCount; ++j) depth = std::max(depth, -ct.manifold.points[j].separation);
