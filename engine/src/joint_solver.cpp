@@ -154,7 +154,6 @@ void planJoints(WorldState& w) {
     SolverArrays& s = w.solver;
     std::vector<JointSlot>& slots = s.jointSlots;
     slots.clear();
-    float leastInverseMass = INFINITY, mostInverseMass = 0.0f;
     for (int j = 0; j < w.joints.capacity(); ++j) {
         const Joint& joint = w.joints[j];
         if (!joint.alive) continue;
@@ -181,13 +180,8 @@ void planJoints(WorldState& w) {
         slot.pointLoad = holdsLoadAtPoint(joint);
         slot.wide = wideCandidate(w, joint, bA, bB, slot) && !joint.stretched;
         if (slot.wide && joint.deepHinge) slot.wide = false, slot.deepHinge = true;
-        for (float inverse : {slot.invMassA, slot.invMassB})
-            if (inverse > 0.0f) {
-                leastInverseMass = std::min(leastInverseMass, inverse);
-                mostInverseMass = std::max(mostInverseMass, inverse);
-            }
     }
-    selectTreeJoints(w, slots, leastInverseMass, mostInverseMass);
+    selectTreeJoints(w, slots);
     colourJoints(s);
     // The scalar places of the order name rows: the slots the wide path does
     // not take, counted in slot order.

@@ -210,7 +210,7 @@ int movingSide(int index, float invMass, float invI, int ground) {
 
 }  // namespace
 
-void selectTreeJoints(WorldState& w, std::vector<JointSlot>& slots, float leastInverseMass, float mostInverseMass) {
+void selectTreeJoints(WorldState& w, std::vector<JointSlot>& slots) {
     SolverArrays& s = w.solver;
     JointTrees& t = s.trees;
     const int ground = static_cast<int>(s.stateBodies.size());
@@ -222,12 +222,19 @@ void selectTreeJoints(WorldState& w, std::vector<JointSlot>& slots, float leastI
     // alike parts) stops here.
     const bool anyStretched = std::any_of(slots.begin(), slots.end(), [](const JointSlot& jc) { return jc.stretched; });
     const float massRatio = w.settings.exactJointMassRatio;
-    // The masses the rows see at the anchors (JointSlot::anchorInvMassA),
-    // and whether a body is rigidly welded to two others or more (below).
+    // The movable bodies' inverse masses, those the rows see at the anchors
+    // (JointSlot::anchorInvMassA), and whether a body is rigidly welded to two
+    // others or more (below).
+    float leastInverseMass = INFINITY, mostInverseMass = 0.0f;
     float leastAnchor = INFINITY, mostAnchor = 0.0f;
     bool anyWeldCluster = false;
     t.welds.assign(bodySlots, 0);
     for (const JointSlot& jc : slots) {
+        for (float inverse : {jc.invMassA, jc.invMassB})
+            if (inverse > 0.0f) {
+                leastInverseMass = std::min(leastInverseMass, inverse);
+                mostInverseMass = std::max(mostInverseMass, inverse);
+            }
         for (float inverse : {jc.anchorInvMassA, jc.anchorInvMassB})
             if (inverse > 0.0f) {
                 leastAnchor = std::min(leastAnchor, inverse);

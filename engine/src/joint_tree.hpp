@@ -63,12 +63,12 @@ struct JointTrees {
 /// judged by its own bodies: the trees hung from the same static bodies are
 /// judged apart; and trees holding a stretched joint, JointSlot::stretched,
 /// that no loop closes) and marks them (JointSlot::inTree, false when
-/// called). The least and most inverse mass of the joints' movable bodies let
-/// a world of alike bodies without a stretched joint skip the search. A
+/// called). A world whose jointed bodies are alike (in mass and at their
+/// anchors), without a stretched joint or a welded cluster, skips the search. A
 /// tree no joint outside it closes into a loop, whose joints all hold their
 /// load at a point or that holds a stretched joint, may be pushed
 /// (JointSlot::treePushed; buildJointTrees decides).
-void selectTreeJoints(WorldState& w, std::vector<JointSlot>& slots, float leastInverseMass, float mostInverseMass);
+void selectTreeJoints(WorldState& w, std::vector<JointSlot>& slots);
 /// A hinge or a rigid weld: its rows hold a point (and an angle), whose load
 /// turns its bodies as the tension's geometric stiffness (buildJointTrees).
 bool holdsLoadAtPoint(const Joint& joint);

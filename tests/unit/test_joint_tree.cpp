@@ -258,8 +258,7 @@ double ragdollRestingEnergy(unsigned seed, float ratio) {
     WorldSettings settings;
     settings.enableSleep = false;
     World world(settings);
-    const BodyId ground = world.createBody({});
-    world.createPolygonShape(ground, {}, makeOffsetBox(50.0f, 1.0f, {0.0f, -1.0f}, 0.0f));
+    test::makeGround(world);
     const Vec2 origin{uniform(-1.0f, 1.0f), uniform(3.0f, 6.0f)};
     const Rot turn = makeRot(uniform(-3.0f, 3.0f));
     std::vector<BodyId> bodies;
@@ -523,7 +522,7 @@ TEST(JointTree, ChainsHungFromTheSameStaticBodyAreJudgedApart) {
             j.equalityRows = 2;
         }
     }
-    detail::selectTreeJoints(w, slots, 0.01f, 1.0f);
+    detail::selectTreeJoints(w, slots);
     for (std::size_t i = 0; i < slots.size(); ++i)
         EXPECT_EQ(slots[i].inTree, i / kLinks == 1) << "joint " << i << " of chain " << i / kLinks;
 }
