@@ -144,6 +144,9 @@ struct JointConstraint {
     bool limitReleased : 1 = false;
     /// JointSlot::treePushed: its tree may be pushed (buildJointTrees).
     bool treePushed : 1 = false;
+    /// JointSlot::treeLoop: its equality rows close a loop of the exact
+    /// trees and are solved with them (inTree is set too).
+    bool treeLoop : 1 = false;
     /// A joint solved with its tree whose limit (a revolute joint's angle, a
     /// slider's translation, a rope's or limited spring's length) is held by
     /// the tree in this factorization: −1 the lower, +1 the upper, 0 none
@@ -187,6 +190,11 @@ struct JointSlot {
     /// anything, or always when it holds a stretched joint (selectTreeJoints,
     /// buildJointTrees).
     bool treePushed = false;
+    /// Its equality rows close a loop through exact trees (both its moving
+    /// sides in trees solved exactly): they are solved with the trees as
+    /// auxiliary rows (joint_tree.cpp), not swept beside them. inTree is set
+    /// too (its equality rows leave the sweep), but it is no edge of a tree.
+    bool treeLoop = false;
 };
 
 /// What a joint's solve needs besides its row and its bodies' states.

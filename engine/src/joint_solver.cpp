@@ -235,6 +235,7 @@ void prepareJoints(WorldState& w, float dt, float h) {
         jc.type = joint.type;
         jc.inTree = slot.inTree;
         jc.treePushed = slot.treePushed;
+        jc.treeLoop = slot.treeLoop;
         jc.a = slot.a, jc.b = slot.b;
         jc.invMassA = slot.invMassA, jc.invIA = slot.invIA, jc.invMassB = slot.invMassB, jc.invIB = slot.invIB;
         jc.deltaCenter = bB.center - bA.center;

@@ -357,13 +357,45 @@ void selectTreeJoints(WorldState& w, std::vector<JointSlot>& slots) {
     if (anyStretched)
         for (const JointSlot& jc : slots)
             if (jc.inTree && jc.stretched && !t.closed[rootOf(jc)]) t.stretched[rootOf(jc)] = 1;
+    auto exact = [&](std::size_t root) {
+        return t.heaviest[root] >= massRatio * t.lightest[root] ||
+               t.heaviestAnchor[root] >= massRatio * t.lightestAnchor[root] || t.stretched[root] || t.weldCluster[root];
+    };
+    auto pushable = [&](std::size_t root) { return !t.closed[root] && (t.stretched[root] || t.pointsOnly[root]); };
     for (JointSlot& jc : slots) {
         if (!jc.inTree) continue;
         const std::size_t root = rootOf(jc);
-        jc.inTree = t.heaviest[root] >= massRatio * t.lightest[root] ||
-                    t.heaviestAnchor[root] >= massRatio * t.lightestAnchor[root] || t.stretched[root] ||
-                    t.weldCluster[root];
-        jc.treePushed = jc.inTree && !t.closed[root] && (t.stretched[root] || t.pointsOnly[root]);
+        jc.inTree = exact(root);
+        jc.treePushed = jc.inTree && pushable(root);
+    }
+    // The joints that close loops through exact trees: each of their moving
+    // sides in a tree solved exactly (a side that does not move closes the
+    // loop through the ground) and not pushed (a loop between two trees hung
+    // from the ground closes only the first, rootOf's, above; one through a
+    // pushed tree is left to the sweep). Swept beside the trees, such a
+    // joint's rows move each body by its own mass while the tree moves it as
+    // part of the whole: of 1,000 random hinge trees with loops, a quarter of
+    // their bodies 10 to 1,000 times as dense, 26, 15 and 10 gained more
+    // than 1 % of their energy at 4, 2 and 1 substeps, the worst 938 times
+    // (docs/validation.md, energy audit). Their equality rows are solved with
+    // the trees instead, as auxiliary rows (Baraff (1996), §8): at most
+    // kMaxLoopRows of them in a step, taken in slot order; the rest stay in
+    // the sweep.
+    int loopRows = 0;
+    for (JointSlot& jc : slots) {
+        if (jc.inTree || jc.equalityRows == 0 || jc.rowsOnlyAtLimit) continue;
+        const int a = movingSide(jc.a, jc.invMassA, jc.invIA, ground);
+        const int b = movingSide(jc.b, jc.invMassB, jc.invIB, ground);
+        if (a == b) continue;
+        bool exactSides = true;
+        for (int side : {a, b}) {
+            if (side == ground) continue;
+            const std::size_t root = static_cast<std::size_t>(findRoot(t.unionParent, side));
+            exactSides = exactSides && exact(root) && !pushable(root);
+        }
+        if (!exactSides || loopRows + jc.equalityRows > kMaxLoopRows) continue;
+        loopRows += jc.equalityRows;
+        jc.inTree = jc.treeLoop = true;
     }
 }
 
@@ -426,19 +458,23 @@ void buildJointTrees(WorldState& w, float h) {
     SolverArrays& s = w.solver;
     JointTrees& t = s.trees;
     t.nodes.clear();
+    t.loops.clear();
+    t.loopRows = 0;
     t.extraInertia.clear();
     t.factoredPositions = -1;
     const int ground = static_cast<int>(s.stateBodies.size());
     const std::size_t bodySlots = static_cast<std::size_t>(ground) + 1;
+    // A joint closing a loop (treeLoop) is no edge of its tree.
+    auto isEdge = [](const JointConstraint& jc) { return jc.inTree && !jc.treeLoop; };
     int treeJoints = 0;
-    for (const JointConstraint& jc : s.joints) treeJoints += jc.inTree;
+    for (const JointConstraint& jc : s.joints) treeJoints += isEdge(jc);
     if (treeJoints == 0) return;
     t.unionParent.resize(bodySlots);
 
     // Each body's tree joints (compressed rows).
     t.adjacencyStart.assign(bodySlots + 1, 0);
     for (const JointConstraint& jc : s.joints) {
-        if (!jc.inTree) continue;
+        if (!isEdge(jc)) continue;
         ++t.adjacencyStart[static_cast<std::size_t>(movingSide(jc.a, jc.invMassA, jc.invIA, ground)) + 1];
         ++t.adjacencyStart[static_cast<std::size_t>(movingSide(jc.b, jc.invMassB, jc.invIB, ground)) + 1];
     }
@@ -449,7 +485,7 @@ void buildJointTrees(WorldState& w, float h) {
         std::copy(t.adjacencyStart.begin(), t.adjacencyStart.end() - 1, fill.begin());
         for (std::size_t r = 0; r < s.joints.size(); ++r) {
             const JointConstraint& jc = s.joints[r];
-            if (!jc.inTree) continue;
+            if (!isEdge(jc)) continue;
             for (int side :
                  {movingSide(jc.a, jc.invMassA, jc.invIA, ground), movingSide(jc.b, jc.invMassB, jc.invIB, ground)})
                 t.adjacency[static_cast<std::size_t>(fill[static_cast<std::size_t>(side)]++)] = static_cast<int>(r);
@@ -557,9 +593,150 @@ void buildJointTrees(WorldState& w, float h) {
         node.nodeA = a == ground ? -1 : t.nodeOfBody[static_cast<std::size_t>(a)];
         node.nodeB = b == ground ? -1 : t.nodeOfBody[static_cast<std::size_t>(b)];
     }
+    // The loops' joints (selectTreeJoints took at most kMaxLoopRows rows), on
+    // the nodes of their bodies.
+    for (std::size_t r = 0; r < s.joints.size(); ++r) {
+        JointConstraint& jc = s.joints[r];
+        if (!jc.treeLoop) continue;
+        const int a = movingSide(jc.a, jc.invMassA, jc.invIA, ground);
+        const int b = movingSide(jc.b, jc.invMassB, jc.invIB, ground);
+        const int nodeA = a == ground ? -1 : t.nodeOfBody[static_cast<std::size_t>(a)];
+        const int nodeB = b == ground ? -1 : t.nodeOfBody[static_cast<std::size_t>(b)];
+        if ((a != ground && nodeA < 0) || (b != ground && nodeB < 0)) {
+            jc.inTree = jc.treeLoop = false;  // (a side outside the trees: the sweep keeps its rows)
+            continue;
+        }
+        TreeLoop& loop = t.loops.emplace_back();
+        loop.row = static_cast<int>(r);
+        loop.nodeA = nodeA;
+        loop.nodeB = nodeB;
+        loop.first = t.loopRows;
+        t.loopRows += equalityRowCount(w.joints[jc.joint]);
+    }
 }
 
 namespace {
+
+/// Solves the factored system for the right-hand sides in the nodes' rhs
+/// (leaving the solution there): forward, y_i = D_i⁻¹ r̂_i with
+/// r̂_parent −= B_iᵀ y_i; then backward, roots first, x_i = y_i − D_i⁻¹ B_i x_parent.
+void substitute(std::vector<TreeNode>& nodes) {
+    for (TreeNode& node : nodes) {
+        const double r0 = node.rhs[0], r1 = node.rhs[1], r2 = node.rhs[2];
+        for (int r = 0; r < 3; ++r) node.rhs[r] = node.diag[r][0] * r0 + node.diag[r][1] * r1 + node.diag[r][2] * r2;
+        if (node.parent < 0) continue;
+        TreeNode& parent = nodes[static_cast<std::size_t>(node.parent)];
+        for (int c = 0; c < 3; ++c)
+            parent.rhs[c] -= node.link[0][c] * node.rhs[0] + node.link[1][c] * node.rhs[1] +
+                             node.link[2][c] * node.rhs[2];
+    }
+    for (std::size_t k = nodes.size(); k-- > 0;) {
+        TreeNode& node = nodes[k];
+        if (node.parent < 0) continue;
+        const TreeNode& parent = nodes[static_cast<std::size_t>(node.parent)];
+        double bx[3];
+        for (int r = 0; r < 3; ++r)
+            bx[r] = node.link[r][0] * parent.rhs[0] + node.link[r][1] * parent.rhs[1] + node.link[r][2] * parent.rhs[2];
+        for (int r = 0; r < 3; ++r)
+            node.rhs[r] -= node.diag[r][0] * bx[0] + node.diag[r][1] * bx[1] + node.diag[r][2] * bx[2];
+    }
+}
+
+/// Adds scale · (row r of a loop's Jacobian)ᵀ to the right-hand sides of its
+/// body nodes (an impulse on the bodies, in the degrees of freedom they have).
+void addLoopImpulse(std::vector<TreeNode>& nodes, const TreeLoop& loop, int r, double scale) {
+    for (int side = 0; side < 2; ++side) {
+        const int n = side == 0 ? loop.nodeA : loop.nodeB;
+        if (n < 0) continue;
+        TreeNode& body = nodes[static_cast<std::size_t>(n)];
+        const float* j = side == 0 ? loop.rows.jA[r] : loop.rows.jB[r];
+        for (int d = 0; d < 3; ++d) body.rhs[d] += scale * double(j[d]) * body.mask[d];
+    }
+}
+
+/// Row r of a loop's Jacobian times the velocity changes in its body nodes' rhs.
+double loopRowOfChange(const std::vector<TreeNode>& nodes, const TreeLoop& loop, int r) {
+    double sum = 0.0;
+    for (int side = 0; side < 2; ++side) {
+        const int n = side == 0 ? loop.nodeA : loop.nodeB;
+        if (n < 0) continue;
+        const TreeNode& body = nodes[static_cast<std::size_t>(n)];
+        const float* j = side == 0 ? loop.rows.jA[r] : loop.rows.jB[r];
+        for (int d = 0; d < 3; ++d) sum += double(j[d]) * body.mask[d] * body.rhs[d];
+    }
+    return sum;
+}
+
+/// A loop row whose pivot is below this fraction of what it would be with no
+/// tree and no other loop row (the row's own J M⁻¹ Jᵀ, with its compliance)
+/// is dropped: the trees and the rows before it already hold it (a hinge
+/// doubling another, a slider closing a welded frame), and solving for what
+/// is left, rounding and near-locked geometry, takes impulses that many times
+/// the row's own scale. Relative to the pivot's own diagonal instead, a
+/// slider closing a frame of hinges and a weld (alike bodies) kept a pivot
+/// 10⁻¹¹ of its free mobility in the relax pass, was solved, and the frame
+/// gained 176 times its energy in one step.
+constexpr double kLoopPivot = 1e-6;
+
+/// The loops' rows at the current positions and their system through the
+/// factored trees (Baraff (1996), §8): column k of J_L P J_Lᵀ is what a unit
+/// impulse on loop row k does to every loop row once the trees' rows have
+/// answered it, one substitution per row. Then S = L Lᵀ (Cholesky), the rows
+/// that add nothing independent dropped (kLoopPivot).
+void factorLoops(SolverArrays& s, JointTrees& t, double gammaScale) {
+    if (t.loops.empty()) return;
+    BodyState& zero = s.states.back();
+    const int m = t.loopRows;
+    for (TreeLoop& loop : t.loops) {
+        JointConstraint& jc = s.joints[static_cast<std::size_t>(loop.row)];
+        const BodyState& sA = jc.a >= 0 ? s.states[static_cast<std::size_t>(jc.a)] : zero;
+        const BodyState& sB = jc.b >= 0 ? s.states[static_cast<std::size_t>(jc.b)] : zero;
+        EqualityRows& rows = loop.rows;
+        equalityRows(jc, sA, sB, rows);
+        // Γ = γ·K of the joint's own block, as a tree joint's (factor).
+        const double invA[3] = {jc.invMassA, jc.invMassA, jc.invIA}, invB[3] = {jc.invMassB, jc.invMassB, jc.invIB};
+        for (int r = 0; r < 3; ++r)
+            for (int c = 0; c < 3; ++c) {
+                double k = 0.0;
+                if (r < rows.count && c < rows.count)
+                    for (int d = 0; d < 3; ++d)
+                        k += double(rows.jA[r][d]) * invA[d] * rows.jA[c][d] +
+                             double(rows.jB[r][d]) * invB[d] * rows.jB[c][d];
+                loop.compliance[r][c] = gammaScale * k;
+                if (r == c && r < rows.count) t.loopOwnMobility[loop.first + r] = k;
+            }
+    }
+    double(&S)[kMaxLoopRows][kMaxLoopRows] = t.loopMatrix;
+    for (const TreeLoop& source : t.loops)
+        for (int r = 0; r < source.rows.count; ++r) {
+            for (TreeNode& node : t.nodes) node.rhs[0] = node.rhs[1] = node.rhs[2] = 0.0;
+            addLoopImpulse(t.nodes, source, r, 1.0);
+            substitute(t.nodes);
+            const int k = source.first + r;
+            for (const TreeLoop& loop : t.loops)
+                for (int q = 0; q < loop.rows.count; ++q) S[loop.first + q][k] = loopRowOfChange(t.nodes, loop, q);
+            for (int q = 0; q < source.rows.count; ++q) S[source.first + q][k] += source.compliance[q][r];
+        }
+    // Symmetrised (the two halves differ by rounding) and factored in place,
+    // the lower triangle holding L.
+    for (int i = 0; i < m; ++i)
+        for (int j = 0; j < i; ++j) S[i][j] = S[j][i] = 0.5 * (S[i][j] + S[j][i]);
+    for (int k = 0; k < m; ++k) {
+        double pivot = S[k][k];
+        for (int j = 0; j < k; ++j) pivot -= S[k][j] * S[k][j];
+        t.loopDropped[k] = !(pivot > kLoopPivot * (1.0 + gammaScale) * t.loopOwnMobility[k]) || !std::isfinite(pivot);
+        if (t.loopDropped[k]) {
+            for (int i = k; i < m; ++i) S[i][k] = 0.0;
+            continue;
+        }
+        S[k][k] = std::sqrt(pivot);
+        for (int i = k + 1; i < m; ++i) {
+            double v = S[i][k];
+            for (int j = 0; j < k; ++j) v -= S[i][j] * S[k][j];
+            S[i][k] = v / S[k][k];
+        }
+    }
+}
 
 /// The blocks of every node at the current positions (H_ii and the links),
 /// then their elimination, leaves first.
@@ -702,19 +879,17 @@ void factor(const WorldState& w, SolverArrays& s, JointTrees& t, double gammaSca
                 parent.diag[r][c] -= node.link[0][r] * db[0][c] + node.link[1][r] * db[1][c] +
                                      node.link[2][r] * db[2][c];
     }
+    if (!push) factorLoops(s, t, gammaScale);
 }
 
 }  // namespace
 
 namespace {
 
-/// One exact solve of the trees with the factorization in `t`.
-void solveFactored(SolverArrays& s, JointTrees& t, const RowBias& rb, float invH, bool push = false) {
-    std::vector<TreeNode>& nodes = t.nodes;
+/// The trees' joints' right-hand sides r = −(J v + b·C + Γ λ), 0 for the bodies.
+void treeRightHandSides(SolverArrays& s, JointTrees& t, const RowBias& rb, float invH, bool push) {
     BodyState& zero = s.states.back();
-
-    // Right-hand sides: 0 for bodies, r = −(J v + b·C + Γ λ) for joints.
-    for (TreeNode& node : nodes) {
+    for (TreeNode& node : t.nodes) {
         node.rhs[0] = node.rhs[1] = node.rhs[2] = 0.0;
         if (node.row < 0 || (push && !node.pushed)) continue;  // (a tree not pushed: no change)
         const JointConstraint& jc = s.joints[static_cast<std::size_t>(node.row)];
@@ -738,26 +913,72 @@ void solveFactored(SolverArrays& s, JointTrees& t, const RowBias& rb, float invH
             node.rhs[r] = -(jv + bias * rows.error[r] + gl);
         }
     }
-    // Forward: y_i = D_i⁻¹ r̂_i, r̂_parent −= B_iᵀ y_i.
-    for (TreeNode& node : nodes) {
-        const double r0 = node.rhs[0], r1 = node.rhs[1], r2 = node.rhs[2];
-        for (int r = 0; r < 3; ++r) node.rhs[r] = node.diag[r][0] * r0 + node.diag[r][1] * r1 + node.diag[r][2] * r2;
-        if (node.parent < 0) continue;
-        TreeNode& parent = nodes[static_cast<std::size_t>(node.parent)];
-        for (int c = 0; c < 3; ++c)
-            parent.rhs[c] -= node.link[0][c] * node.rhs[0] + node.link[1][c] * node.rhs[1] +
-                             node.link[2][c] * node.rhs[2];
+}
+
+/// The loops' impulses Δλ_L (Baraff (1996), §8): with Δv₀ the trees' answer
+/// to their own rows (in the nodes' rhs), S Δλ_L = −(J_L (v + Δv₀) + b·C + Γ λ),
+/// solved with the factors of factorLoops (a dropped row takes none).
+void solveLoops(SolverArrays& s, const JointTrees& t, const RowBias& rb, double out[kMaxLoopRows]) {
+    BodyState& zero = s.states.back();
+    const int m = t.loopRows;
+    double y[kMaxLoopRows];
+    for (const TreeLoop& loop : t.loops) {
+        const JointConstraint& jc = s.joints[static_cast<std::size_t>(loop.row)];
+        const BodyState& sA = jc.a >= 0 ? s.states[static_cast<std::size_t>(jc.a)] : zero;
+        const BodyState& sB = jc.b >= 0 ? s.states[static_cast<std::size_t>(jc.b)] : zero;
+        const EqualityRows& rows = loop.rows;
+        double lambda[3];
+        readImpulse(jc, lambda);
+        for (int r = 0; r < rows.count; ++r) {
+            const double jv = double(rows.jA[r][0]) * sA.v.x + double(rows.jA[r][1]) * sA.v.y +
+                              double(rows.jA[r][2]) * sA.w + double(rows.jB[r][0]) * sB.v.x +
+                              double(rows.jB[r][1]) * sB.v.y + double(rows.jB[r][2]) * sB.w +
+                              loopRowOfChange(t.nodes, loop, r);
+            const double gl = loop.compliance[r][0] * lambda[0] + loop.compliance[r][1] * lambda[1] +
+                              loop.compliance[r][2] * lambda[2];
+            y[loop.first + r] = -(jv + double(rb.bias) * rows.error[r] + gl);
+        }
     }
-    // Backward, roots first: x_i = y_i − D_i⁻¹ B_i x_parent.
-    for (std::size_t k = nodes.size(); k-- > 0;) {
-        TreeNode& node = nodes[k];
-        if (node.parent < 0) continue;
-        const TreeNode& parent = nodes[static_cast<std::size_t>(node.parent)];
-        double bx[3];
-        for (int r = 0; r < 3; ++r)
-            bx[r] = node.link[r][0] * parent.rhs[0] + node.link[r][1] * parent.rhs[1] + node.link[r][2] * parent.rhs[2];
-        for (int r = 0; r < 3; ++r)
-            node.rhs[r] -= node.diag[r][0] * bx[0] + node.diag[r][1] * bx[1] + node.diag[r][2] * bx[2];
+    const double(&L)[kMaxLoopRows][kMaxLoopRows] = t.loopMatrix;
+    for (int i = 0; i < m; ++i) {  // L y = r
+        if (t.loopDropped[i]) {
+            y[i] = 0.0;
+            continue;
+        }
+        for (int j = 0; j < i; ++j) y[i] -= L[i][j] * y[j];
+        y[i] /= L[i][i];
+    }
+    for (int i = m; i-- > 0;) {  // Lᵀ x = y
+        if (t.loopDropped[i]) {
+            out[i] = 0.0;
+            continue;
+        }
+        double v = y[i];
+        for (int j = i + 1; j < m; ++j) v -= L[j][i] * out[j];
+        out[i] = v / L[i][i];
+    }
+}
+
+/// One exact solve of the trees with the factorization in `t`.
+void solveFactored(SolverArrays& s, JointTrees& t, const RowBias& rb, float invH, bool push = false) {
+    std::vector<TreeNode>& nodes = t.nodes;
+    treeRightHandSides(s, t, rb, invH, push);
+    substitute(nodes);
+    if (!push && !t.loops.empty()) {
+        // With the loops: their impulses from the trees' answer, then the
+        // trees solved again with those impulses on their bodies.
+        double loopImpulse[kMaxLoopRows];
+        solveLoops(s, t, rb, loopImpulse);
+        treeRightHandSides(s, t, rb, invH, push);
+        for (const TreeLoop& loop : t.loops) {
+            double delta[3] = {0.0, 0.0, 0.0};
+            for (int r = 0; r < loop.rows.count; ++r) {
+                delta[r] = loopImpulse[loop.first + r];
+                addLoopImpulse(nodes, loop, r, delta[r]);
+            }
+            addImpulse(s.joints[static_cast<std::size_t>(loop.row)], delta);
+        }
+        substitute(nodes);
     }
     // Apply: Δv to the bodies, Δλ = −x to the joints.
     for (TreeNode& node : nodes) {
@@ -821,6 +1042,7 @@ void solveJointTrees(WorldState& w, const JointContext& ctx, int positions) {
         else
             saved.push_back(s.states[static_cast<std::size_t>(node.body)]);
     }
+    for (const TreeLoop& loop : t.loops) savedImpulses.push_back(s.joints[static_cast<std::size_t>(loop.row)].impulses);
     for (int attempt = 0;; ++attempt) {
         solveFactored(s, t, rb, ctx.invH);
         if (attempt == 2 || !releasePullingLimits(s, t)) break;
@@ -831,6 +1053,8 @@ void solveJointTrees(WorldState& w, const JointContext& ctx, int positions) {
             else
                 s.states[static_cast<std::size_t>(node.body)] = saved[body++];
         }
+        for (const TreeLoop& loop : t.loops)
+            s.joints[static_cast<std::size_t>(loop.row)].impulses = savedImpulses[joint++];
         factor(w, s, t, gammaScale, false);
     }
     // A limit that still pulls after the third solve keeps no pull.

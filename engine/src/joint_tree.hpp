@@ -31,10 +31,33 @@ struct TreeNode {
     EqualityRows rows;  ///< joint node: its rows at the factored positions
 };
 
+/// The most auxiliary rows (JointSlot::treeLoop) solved with the trees in a
+/// step: each costs a substitution through every node when the trees are
+/// factored, and their dense system grows as its cube.
+inline constexpr int kMaxLoopRows = 12;
+
+/// A joint closing a loop through the trees (JointSlot::treeLoop): its
+/// equality rows are auxiliary rows of the tree solve (Baraff (1996), §8).
+struct TreeLoop {
+    int row = -1;                ///< index in SolverArrays::joints
+    int nodeA = -1, nodeB = -1;  ///< the nodes of its bodies (−1: a body that does not move)
+    int first = 0;               ///< its first row in the dense system (JointTrees::loopMatrix)
+    double compliance[3][3];     ///< Γ of its rows in the factored pass
+    EqualityRows rows;           ///< its rows at the factored positions
+};
+
 /// The trees of one step: nodes with every child before its parent.
 struct JointTrees {
     std::vector<TreeNode> nodes;
-    std::vector<int> unionParent;  ///< scratch of the spanning-forest search
+    std::vector<TreeLoop> loops;  ///< the joints closing loops through them
+    int loopRows = 0;             ///< their rows in all
+    /// The loops' rows' system through the trees, S = J_L P J_Lᵀ + Γ_L (P the
+    /// bodies' mobility with the trees' rows held), factored as L Lᵀ with the
+    /// rows that add nothing independent dropped (loopDropped).
+    double loopMatrix[kMaxLoopRows][kMaxLoopRows];
+    bool loopDropped[kMaxLoopRows];
+    double loopOwnMobility[kMaxLoopRows];  ///< each loop row's own J M⁻¹ Jᵀ (no tree, no other row)
+    std::vector<int> unionParent;          ///< scratch of the spanning-forest search
     std::vector<int> adjacency, adjacencyStart, nodeOfBody;
     std::vector<float> lightest, heaviest;  ///< per union-find root (kg)
     std::vector<std::uint8_t> welds;        ///< per solver state: rigid welds it holds (counted to 2; scratch)

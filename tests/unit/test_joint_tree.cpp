@@ -1,7 +1,8 @@
 // The exact solve of joint trees (joint_tree.cpp; Baraff (1996), Linear-Time
 // Dynamics using Lagrange Multipliers): after one velocity pass the joints'
 // velocity rows hold exactly, whatever the masses, where a Gauss-Seidel sweep
-// leaves most of the error; loops stay in the sweep and stay finite.
+// leaves most of the error; a joint closing a loop through them is solved
+// with them.
 #include <gtest/gtest.h>
 
 #include <algorithm>
@@ -106,6 +107,20 @@ TEST(JointTree, OneExactPassHoldsEveryVelocityRow) {
         swept.world.step(1.0f / 60.0f);
         EXPECT_LT(exact.worstAnchorSpeed(centres), 1e-3f) << "seed " << seed;
         EXPECT_GT(swept.worstAnchorSpeed(centres), 0.1f) << "seed " << seed;
+    }
+}
+
+// The same with a hinge closing a loop (the last body to the first): its rows
+// are solved with the tree as auxiliary rows (joint_tree.cpp, Baraff (1996)
+// §8), so after one pass it holds as exactly as the tree's own hinges (the
+// same round-off bound). Swept beside the tree, it did not (a swept row moves
+// its bodies by their own masses, and the tree then moves them back).
+TEST(JointTree, OneExactPassHoldsAJointClosingALoopToo) {
+    for (unsigned seed = 1; seed <= 20; ++seed) {
+        RandomTree exact(seed, 20, 1.0f, true);
+        const std::vector<Vec2> centres = exact.centres();
+        exact.world.step(1.0f / 60.0f);
+        EXPECT_LT(exact.worstAnchorSpeed(centres), 1e-3f) << "seed " << seed;
     }
 }
 
@@ -489,6 +504,95 @@ TEST(JointTree, LeversAndWeldedStarsOfAlikeBodiesKeepTheirEnergy) {
                     starPeak, leverPeak);
         EXPECT_LE(starPeak, 1.01) << substeps << " substeps";
         EXPECT_LE(leverPeak, 1.01) << substeps << " substeps";
+    }
+}
+
+namespace {
+
+/// Largest total energy over 5 s, relative to its start, of a random tree of
+/// hinged discs and boxes (3 to 12 bodies, each 0.5 to 1.5 m from its parent,
+/// the hinge halfway between them or at the child's centre) hung from a
+/// static pivot, a quarter of its bodies 10, 100 or 1,000 times as dense as
+/// the rest, with one or two more hinges closing loops between bodies that are
+/// not parent and child (hinged halfway between them). The bodies are kept
+/// apart; the potential is measured from 20 m below the pivot, lower than any
+/// body can reach, so the energy is never negative.
+double loopedTreePeakEnergy(unsigned seed, int substeps) {
+    std::mt19937 rng(seed);
+    auto uniform = [&](float a, float b) { return std::uniform_real_distribution<float>(a, b)(rng); };
+    auto pick = [&](int a, int b) { return std::uniform_int_distribution<int>(a, b)(rng); };
+    WorldSettings settings;
+    settings.enableSleep = false;
+    settings.substeps = substeps;
+    World world(settings);
+    const Vec2 pivot{0.0f, 20.0f};
+    const BodyId ground = world.createBody({.position = pivot});
+    const int n = pick(3, 12);
+    const float ratio = std::pow(10.0f, static_cast<float>(pick(1, 3)));
+    std::vector<BodyId> bodies;
+    std::vector<int> parents;
+    auto hinge = [&](BodyId a, BodyId b, Vec2 at) {
+        world.createRevoluteJoint({.bodyA = a,
+                                   .bodyB = b,
+                                   .localAnchorA = invTransformPoint(world.transform(a), at),
+                                   .localAnchorB = invTransformPoint(world.transform(b), at)});
+    };
+    for (int i = 0; i < n; ++i) {
+        const int parent = i == 0 ? -1 : pick(0, i - 1);
+        const Vec2 from = parent < 0 ? pivot : world.position(bodies[static_cast<std::size_t>(parent)]);
+        const float heading = uniform(0.0f, 6.2832f), reach = uniform(0.5f, 1.5f);
+        const Vec2 at = from + reach * Vec2{std::cos(heading), std::sin(heading)};
+        const BodyId b = world.createBody(
+            {.type = BodyType::dynamic_body, .position = at, .angle = uniform(-3.14f, 3.14f)});
+        const ShapeDef def{.density = pick(0, 3) == 0 ? ratio : 1.0f, .filter = {.groupIndex = -1}};
+        if (pick(0, 1) == 0)
+            world.createCircleShape(b, def, Circle{{0.0f, 0.0f}, uniform(0.1f, 0.4f)});
+        else
+            world.createPolygonShape(b, def, makeBox(uniform(0.1f, 0.4f), uniform(0.1f, 0.4f)));
+        hinge(parent < 0 ? ground : bodies[static_cast<std::size_t>(parent)], b,
+              pick(0, 1) == 0 ? at : 0.5f * (from + at));
+        bodies.push_back(b);
+        parents.push_back(parent);
+    }
+    const int loops = pick(1, 2);
+    for (int k = 0; k < loops; ++k) {
+        const int i = pick(0, n - 1), j = pick(0, n - 1);
+        if (i == j || parents[static_cast<std::size_t>(i)] == j || parents[static_cast<std::size_t>(j)] == i) continue;
+        const BodyId a = bodies[static_cast<std::size_t>(i)], b = bodies[static_cast<std::size_t>(j)];
+        hinge(a, b, 0.5f * (world.position(a) + world.position(b)));
+    }
+    auto energy = [&] { return test::totalEnergy(world, bodies, pivot.y - 20.0); };
+    const double start = energy();
+    double peak = start;
+    for (int i = 0; i < 300; ++i) {
+        world.step(1.0f / 60.0f);
+        peak = std::max(peak, energy());
+        if (!std::isfinite(peak)) break;
+    }
+    return peak / start;
+}
+
+}  // namespace
+
+// Hinge trees holding a heavy body, with joints closing loops through them:
+// the loops' joints were swept beside the exact trees, each moving its bodies
+// by their own masses. Of these 40 layouts 3, 1 and 2 gained more than 1 % at
+// 4, 2 and 1 substeps, the worst 6.3 times its energy (of 1,000: 38, 25 and
+// 29, the worst 448 times). Their rows are now solved with the trees (Baraff
+// (1996) §8's auxiliary rows): none of the 40 rises above its start. A
+// passive system: the hard-cases issue's bound, 1 % over 5 s. Not all of the
+// 1,000 meet it yet: 3, 2 and 1 (the worst 2.3 times at 4 substeps, as much
+// as before; docs/validation.md, energy audit).
+TEST(JointTree, LoopsClosedThroughHeavyHingeTreesKeepTheirEnergy) {
+    for (int substeps : {4, 2, 1}) {
+        double worst = 0.0;
+        for (unsigned seed = 1; seed <= 40; ++seed) {
+            const double peak = loopedTreePeakEnergy(seed, substeps);
+            worst = std::max(worst, peak);
+            EXPECT_LE(peak, 1.01) << "seed " << seed << ", " << substeps << " substeps";
+        }
+        std::printf("[figure] %d substeps: 40 hinge trees with loops, at most %.4f times their start\n", substeps,
+                    worst);
     }
 }
 

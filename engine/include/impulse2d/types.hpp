@@ -98,8 +98,10 @@ struct WorldSettings {
     /// see at the joints' anchors (1/(1/m + |r|²/I)) are, or one of its bodies
     /// is rigidly welded to two others: Gauss-Seidel leaves a chain carrying a
     /// heavy body stretched, and the soft step's sweep over such trees can
-    /// gain energy (docs/joints.md). Such a tree of
-    /// hinges and rigid welds is solved rigid in soft_step while none of its
+    /// gain energy (docs/joints.md). A joint closing a loop through such
+    /// trees has its equality rows solved with them (up to 12 rows a step;
+    /// docs/joints.md, "Loops through exact trees"). Such a tree of
+    /// hinges and rigid welds, closed by no loop, is solved rigid in soft_step while none of its
     /// bodies touches anything, its position error closed on pseudo-velocities
     /// at the jointHertz rate (docs/joints.md, "Rigid trees and the tension's
     /// geometric stiffness"). 1 solves every tree exactly; infinity none.
