@@ -183,7 +183,7 @@ struct JointSlot {
     bool wide = false;       ///< solved eight at a time (wide_revolute.cpp), with no JointConstraint
     bool deepHinge = false;  ///< kept off the wide path as a deep joint (Joint::deepHinge)
     bool stretched = false;  ///< Joint::stretched when the plan was made (its tree is solved exactly: selectTreeJoints)
-    bool pointLoad = false;  ///< a hinge or a rigid weld: carries its load at a point (holdsLoadAtPoint)
+    bool pointLoad = false;  ///< a hinge or a weld with a rigid point: carries its load at a point (holdsLoadAtPoint)
     /// In a tree no loop closes, of hinges and rigid welds or holding a
     /// stretched joint: the tree is pushed (rigid in the biased pass, its
     /// error closed by pushJointTrees) while none of its bodies touches

@@ -52,8 +52,11 @@ int equalityRowCount(const Joint& joint) {
     switch (joint.type) {
         case JointType::revolute: return 2;
         case JointType::weld: {
+            // Its rigid parts: the point and the angle, the point alone (an
+            // angular spring, swept), the angle alone (a linear spring, swept).
             const WeldJointDef& def = std::get<WeldJointDef>(joint.def);
-            return def.linearHertz == 0.0f && def.angularHertz == 0.0f ? 3 : 0;
+            if (def.linearHertz == 0.0f) return def.angularHertz == 0.0f ? 3 : 2;
+            return def.angularHertz == 0.0f ? 1 : 0;
         }
         case JointType::distance: {
             // A rope or a spring with limits hands over a limit while it
@@ -117,6 +120,12 @@ int heldLimitRow(const JointConstraint& jc) {
     }
 }
 
+/// A weld whose only rigid part, the one its tree holds, is its angle (a
+/// linear spring): its one equality row is the angle's.
+bool weldAngleOnly(const JointConstraint& jc) {
+    return jc.type == JointType::weld && jc.row.weld.linearHertz != 0.0f && jc.row.weld.angularHertz == 0.0f;
+}
+
 void readImpulse(const JointConstraint& jc, double out[3]) {
     const JointImpulses& acc = jc.impulses;
     out[0] = out[1] = out[2] = 0.0;
@@ -124,9 +133,13 @@ void readImpulse(const JointConstraint& jc, double out[3]) {
         case JointType::distance: out[0] = jc.row.distance.rigid ? acc.axial : 0.0f; break;
         case JointType::revolute:
         case JointType::weld:
+            if (weldAngleOnly(jc)) {
+                out[0] = acc.angular;
+                break;
+            }
             out[0] = acc.linear.x;
             out[1] = acc.linear.y;
-            out[2] = jc.type == JointType::weld ? acc.angular : 0.0f;
+            out[2] = jc.type == JointType::weld && jc.row.weld.angularHertz == 0.0f ? acc.angular : 0.0f;
             break;
         case JointType::prismatic:  // the perpendicular and the angle
             out[0] = acc.axial;
@@ -149,9 +162,14 @@ void addImpulse(JointConstraint& jc, const double delta[3]) {
             break;
         case JointType::revolute:
         case JointType::weld:
+            if (weldAngleOnly(jc)) {
+                acc.angular += static_cast<float>(delta[0]);
+                break;
+            }
             acc.linear.x += static_cast<float>(delta[0]);
             acc.linear.y += static_cast<float>(delta[1]);
-            if (jc.type == JointType::weld) acc.angular += static_cast<float>(delta[2]);
+            if (jc.type == JointType::weld && jc.row.weld.angularHertz == 0.0f)
+                acc.angular += static_cast<float>(delta[2]);
             break;
         case JointType::prismatic:
             acc.axial += static_cast<float>(delta[0]);
@@ -401,7 +419,9 @@ void selectTreeJoints(WorldState& w, std::vector<JointSlot>& slots) {
 
 bool holdsLoadAtPoint(const Joint& joint) {
     if (joint.type == JointType::revolute) return true;
-    return joint.type == JointType::weld && equalityRowCount(joint) == 3;
+    // A weld whose point is rigid (its angle rigid too, or a spring: a hinge
+    // with an angular spring, as a revolute joint's).
+    return joint.type == JointType::weld && equalityRowCount(joint) >= 2;
 }
 
 namespace {

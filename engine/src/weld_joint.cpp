@@ -35,7 +35,10 @@ void solveWeldJoint(JointConstraint& jc, const JointContext& ctx, BodyState& sA,
     JointImpulses& acc = jc.impulses;
     const float iA = jc.invIA, iB = jc.invIB, mA = jc.invMassA, mB = jc.invMassB;
     const bool rigid = row.linearHertz == 0.0f && row.angularHertz == 0.0f;
-    if (!rigid && iA + iB > 0.0f) {
+    // A weld of an exact tree has its rigid parts solved with the tree
+    // (joint_tree.cpp): the point and the angle, the point alone beside an
+    // angular spring, or the angle alone beside a linear spring.
+    if (!rigid && iA + iB > 0.0f && !(jc.inTree && row.angularHertz == 0.0f)) {
         const float C = unwindAngle(relativeAngle(jc, sA, sB) - row.referenceAngle);
         const RowBias rb = row.angularHertz > 0.0f
                                ? springBias(makeSoft(row.angularHertz, row.angularDampingRatio, ctx.h), C)
@@ -45,7 +48,7 @@ void solveWeldJoint(JointConstraint& jc, const JointContext& ctx, BodyState& sA,
         sA.w -= iA * impulse;
         sB.w += iB * impulse;
     }
-    if (jc.inTree) return;  // a rigid weld is solved with its tree (joint_tree.cpp)
+    if (jc.inTree && row.linearHertz == 0.0f) return;  // the point (and a rigid weld's angle) is the tree's
     const Vec2 rA = rotate(sA.dq, jc.rA), rB = rotate(sB.dq, jc.rB);
     const Vec2 cdot = (sB.v + cross(sB.w, rB)) - (sA.v + cross(sA.w, rA));
     const Vec2 separation = (sB.dp - sA.dp) + (rB - rA) + jc.deltaCenter;
@@ -101,13 +104,22 @@ void solveWeldJoint(JointConstraint& jc, const JointContext& ctx, BodyState& sA,
 }
 
 void weldEqualityRows(const JointConstraint& jc, const BodyState& sA, const BodyState& sB, EqualityRows& rows) {
-    const Vec2 rA = rotate(sA.dq, jc.rA), rB = rotate(sB.dq, jc.rB);
-    rows.count = 3;
-    pointRows(rA, rB, (sB.dp - sA.dp) + (rB - rA) + jc.deltaCenter, rows);
-    rows.jA[2][0] = rows.jA[2][1] = rows.jB[2][0] = rows.jB[2][1] = 0.0f;
-    rows.jA[2][2] = -1.0f;
-    rows.jB[2][2] = 1.0f;
-    rows.error[2] = unwindAngle(relativeAngle(jc, sA, sB) - jc.row.weld.referenceAngle);
+    // Its rigid parts (equalityRowCount): the point (rows 0, 1) unless it is
+    // a spring, then the angle unless it is one.
+    const WeldRow& row = jc.row.weld;
+    int angle = 0;
+    if (row.linearHertz == 0.0f) {
+        const Vec2 rA = rotate(sA.dq, jc.rA), rB = rotate(sB.dq, jc.rB);
+        pointRows(rA, rB, (sB.dp - sA.dp) + (rB - rA) + jc.deltaCenter, rows);
+        angle = 2;
+    }
+    rows.count = angle;
+    if (row.angularHertz != 0.0f) return;
+    rows.count = angle + 1;
+    rows.jA[angle][0] = rows.jA[angle][1] = rows.jB[angle][0] = rows.jB[angle][1] = 0.0f;
+    rows.jA[angle][2] = -1.0f;
+    rows.jB[angle][2] = 1.0f;
+    rows.error[angle] = unwindAngle(relativeAngle(jc, sA, sB) - row.referenceAngle);
 }
 
 }  // namespace i2d::detail

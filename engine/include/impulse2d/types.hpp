@@ -92,8 +92,8 @@ struct WorldSettings {
     float jointHertz = 60.0f;
     float jointDampingRatio = 2.0f;
     /// Joints whose bodies form a tree (a chain, a ragdoll) have their
-    /// equality rows (the revolute joint's point, a rigid weld, a rigid
-    /// distance joint) solved exactly, not swept, when the tree's heaviest
+    /// equality rows (the revolute joint's point, a weld's rigid point and
+    /// angle, a rigid distance joint) solved exactly, not swept, when the tree's heaviest
     /// body is at least this many times its lightest, or the masses its rows
     /// see at the joints' anchors (1/(1/m + |r|²/I)) are, or one of its bodies
     /// is rigidly welded to two others: Gauss-Seidel leaves a chain carrying a
