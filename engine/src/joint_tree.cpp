@@ -906,6 +906,17 @@ void factor(const WorldState& w, SolverArrays& s, JointTrees& t, double gammaSca
 
 namespace {
 
+/// Row r of `rows` times the two bodies' velocities, J_r v.
+double rowSpeed(const EqualityRows& rows, int r, const BodyState& sA, const BodyState& sB) {
+    return double(rows.jA[r][0]) * sA.v.x + double(rows.jA[r][1]) * sA.v.y + double(rows.jA[r][2]) * sA.w +
+           double(rows.jB[r][0]) * sB.v.x + double(rows.jB[r][1]) * sB.v.y + double(rows.jB[r][2]) * sB.w;
+}
+
+/// Row r of Γ λ.
+double compliantImpulse(const double (&compliance)[3][3], int r, const double lambda[3]) {
+    return compliance[r][0] * lambda[0] + compliance[r][1] * lambda[1] + compliance[r][2] * lambda[2];
+}
+
 /// The trees' joints' right-hand sides r = −(J v + b·C + Γ λ), 0 for the bodies.
 void treeRightHandSides(SolverArrays& s, JointTrees& t, const RowBias& rb, float invH, bool push) {
     BodyState& zero = s.states.back();
@@ -919,11 +930,8 @@ void treeRightHandSides(SolverArrays& s, JointTrees& t, const RowBias& rb, float
         double lambda[3];
         readImpulse(jc, lambda);
         for (int r = 0; r < rows.count; ++r) {
-            const double jv = double(rows.jA[r][0]) * sA.v.x + double(rows.jA[r][1]) * sA.v.y +
-                              double(rows.jA[r][2]) * sA.w + double(rows.jB[r][0]) * sB.v.x +
-                              double(rows.jB[r][1]) * sB.v.y + double(rows.jB[r][2]) * sB.w;
-            const double gl = node.compliance[r][0] * lambda[0] + node.compliance[r][1] * lambda[1] +
-                              node.compliance[r][2] * lambda[2];
+            const double jv = rowSpeed(rows, r, sA, sB);
+            const double gl = compliantImpulse(node.compliance, r, lambda);
             // A held limit not reached yet closes its gap within the substep
             // (a push does not: the gap is no error).
             // A pushed tree's rows are rigid in the soft pass (its error is the push's).
@@ -950,12 +958,9 @@ void solveLoops(SolverArrays& s, const JointTrees& t, const RowBias& rb, double 
         double lambda[3];
         readImpulse(jc, lambda);
         for (int r = 0; r < rows.count; ++r) {
-            const double jv = double(rows.jA[r][0]) * sA.v.x + double(rows.jA[r][1]) * sA.v.y +
-                              double(rows.jA[r][2]) * sA.w + double(rows.jB[r][0]) * sB.v.x +
-                              double(rows.jB[r][1]) * sB.v.y + double(rows.jB[r][2]) * sB.w +
-                              loopRowOfChange(t.nodes, loop, r);
-            const double gl = loop.compliance[r][0] * lambda[0] + loop.compliance[r][1] * lambda[1] +
-                              loop.compliance[r][2] * lambda[2];
+            // With Δv₀: the velocities the trees' rows leave.
+            const double jv = rowSpeed(rows, r, sA, sB) + loopRowOfChange(t.nodes, loop, r);
+            const double gl = compliantImpulse(loop.compliance, r, lambda);
             y[loop.first + r] = -(jv + double(rb.bias) * rows.error[r] + gl);
         }
     }

@@ -430,6 +430,20 @@ struct TreePart {
     float referenceAngle;
 };
 
+/// The largest total energy of `bodies` over 5 s of stepping, relative to its
+/// start (the potential measured from `floorY`); NaN stops the run.
+double peakEnergyOver5s(World& world, const std::vector<BodyId>& bodies, double floorY) {
+    auto energy = [&] { return test::totalEnergy(world, bodies, floorY); };
+    const double start = energy();
+    double peak = start;
+    for (int i = 0; i < 300; ++i) {
+        world.step(1.0f / 60.0f);
+        peak = std::max(peak, energy());
+        if (!std::isfinite(peak)) break;
+    }
+    return peak / start;
+}
+
 /// Largest total energy over 5 s, relative to its start, of a tree hung from
 /// the pivot, its bodies alike in density and kept apart; the potential is
 /// measured from the lowest point a body's centre can reach (the pivot less
@@ -463,15 +477,7 @@ double hungTreePeakEnergy(const std::vector<TreePart>& parts, int substeps) {
         bodies.push_back(b);
         reach = std::max(reach, length(part.at - pivot));
     }
-    auto energy = [&] { return test::totalEnergy(world, bodies, pivot.y - reach); };
-    const double start = energy();
-    double peak = start;
-    for (int i = 0; i < 300; ++i) {
-        world.step(1.0f / 60.0f);
-        peak = std::max(peak, energy());
-        if (!std::isfinite(peak)) break;
-    }
-    return peak / start;
+    return peakEnergyOver5s(world, bodies, pivot.y - reach);
 }
 
 }  // namespace
@@ -562,15 +568,7 @@ double loopedTreePeakEnergy(unsigned seed, int substeps) {
         const BodyId a = bodies[static_cast<std::size_t>(i)], b = bodies[static_cast<std::size_t>(j)];
         hinge(a, b, 0.5f * (world.position(a) + world.position(b)));
     }
-    auto energy = [&] { return test::totalEnergy(world, bodies, pivot.y - 20.0); };
-    const double start = energy();
-    double peak = start;
-    for (int i = 0; i < 300; ++i) {
-        world.step(1.0f / 60.0f);
-        peak = std::max(peak, energy());
-        if (!std::isfinite(peak)) break;
-    }
-    return peak / start;
+    return peakEnergyOver5s(world, bodies, pivot.y - 20.0);
 }
 
 }  // namespace
