@@ -707,12 +707,21 @@ void factorLoops(SolverArrays& s, JointTrees& t, double gammaScale) {
     if (t.loops.empty()) return;
     BodyState& zero = s.states.back();
     const int m = t.loopRows;
-    for (TreeLoop& loop : t.loops) {
+    double(&S)[kMaxLoopRows][kMaxLoopRows] = t.loopMatrix;
+    // A row its joint does not hand over (none should) stays zero: dropped.
+    for (int i = 0; i < m; ++i) {
+        t.loopOwnMobility[i] = 0.0;
+        for (int j = 0; j < m; ++j) S[i][j] = 0.0;
+    }
+    for (std::size_t l = 0; l < t.loops.size(); ++l) {
+        TreeLoop& loop = t.loops[l];
         JointConstraint& jc = s.joints[static_cast<std::size_t>(loop.row)];
         const BodyState& sA = jc.a >= 0 ? s.states[static_cast<std::size_t>(jc.a)] : zero;
         const BodyState& sB = jc.b >= 0 ? s.states[static_cast<std::size_t>(jc.b)] : zero;
         EqualityRows& rows = loop.rows;
         equalityRows(jc, sA, sB, rows);
+        const int allotted = (l + 1 < t.loops.size() ? t.loops[l + 1].first : m) - loop.first;
+        rows.count = std::min(rows.count, allotted);
         // Γ = γ·K of the joint's own block, as a tree joint's (factor).
         const double invA[3] = {jc.invMassA, jc.invMassA, jc.invIA}, invB[3] = {jc.invMassB, jc.invMassB, jc.invIB};
         for (int r = 0; r < 3; ++r)
@@ -726,7 +735,6 @@ void factorLoops(SolverArrays& s, JointTrees& t, double gammaScale) {
                 if (r == c && r < rows.count) t.loopOwnMobility[loop.first + r] = k;
             }
     }
-    double(&S)[kMaxLoopRows][kMaxLoopRows] = t.loopMatrix;
     for (const TreeLoop& source : t.loops)
         for (int r = 0; r < source.rows.count; ++r) {
             for (TreeNode& node : t.nodes) node.rhs[0] = node.rhs[1] = node.rhs[2] = 0.0;
