@@ -184,8 +184,8 @@ struct JointSlot {
     bool deepHinge = false;  ///< kept off the wide path as a deep joint (Joint::deepHinge)
     bool stretched = false;  ///< Joint::stretched when the plan was made (its tree is solved exactly: selectTreeJoints)
     bool pointLoad = false;  ///< a hinge or a weld with a rigid point: carries its load at a point (holdsLoadAtPoint)
-    /// In a tree no loop closes, of hinges and rigid welds or holding a
-    /// stretched joint: the tree is pushed (rigid in the biased pass, its
+    /// In a tree no swept loop closes, of hinges and welds with a rigid point
+    /// or holding a stretched joint: the tree is pushed (rigid in the biased pass, its
     /// error closed by pushJointTrees) while none of its bodies touches
     /// anything, or always when it holds a stretched joint (selectTreeJoints,
     /// buildJointTrees).
