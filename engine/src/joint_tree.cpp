@@ -637,6 +637,12 @@ void buildJointTrees(WorldState& w, float h) {
 
 namespace {
 
+/// The solver state of a joint side, or the zero state kept after the awake
+/// bodies for a side without one (static, kinematic without a state, asleep).
+BodyState& sideState(SolverArrays& s, int index) {
+    return index >= 0 ? s.states[static_cast<std::size_t>(index)] : s.states.back();
+}
+
 /// Solves the factored system for the right-hand sides in the nodes' rhs
 /// (leaving the solution there): forward, y_i = D_i⁻¹ r̂_i with
 /// r̂_parent −= B_iᵀ y_i; then backward, roots first, x_i = y_i − D_i⁻¹ B_i x_parent.
@@ -705,7 +711,6 @@ constexpr double kLoopPivot = 1e-6;
 /// that add nothing independent dropped (kLoopPivot).
 void factorLoops(SolverArrays& s, JointTrees& t, double gammaScale) {
     if (t.loops.empty()) return;
-    BodyState& zero = s.states.back();
     const int m = t.loopRows;
     double(&S)[kMaxLoopRows][kMaxLoopRows] = t.loopMatrix;
     // A row its joint does not hand over (none should) stays zero: dropped.
@@ -716,8 +721,8 @@ void factorLoops(SolverArrays& s, JointTrees& t, double gammaScale) {
     for (std::size_t l = 0; l < t.loops.size(); ++l) {
         TreeLoop& loop = t.loops[l];
         JointConstraint& jc = s.joints[static_cast<std::size_t>(loop.row)];
-        const BodyState& sA = jc.a >= 0 ? s.states[static_cast<std::size_t>(jc.a)] : zero;
-        const BodyState& sB = jc.b >= 0 ? s.states[static_cast<std::size_t>(jc.b)] : zero;
+        const BodyState& sA = sideState(s, jc.a);
+        const BodyState& sB = sideState(s, jc.b);
         EqualityRows& rows = loop.rows;
         equalityRows(jc, sA, sB, rows);
         const int allotted = (l + 1 < t.loops.size() ? t.loops[l + 1].first : m) - loop.first;
@@ -771,7 +776,6 @@ void factorLoops(SolverArrays& s, JointTrees& t, double gammaScale) {
 void factor(const WorldState& w, SolverArrays& s, JointTrees& t, double gammaScale, bool newPositions,
             bool push = false) {
     std::vector<TreeNode>& nodes = t.nodes;
-    BodyState& zero = s.states.back();
     t.holdsLimits = false;
     for (TreeNode& node : nodes) {
         if (node.row >= 0) continue;
@@ -793,8 +797,8 @@ void factor(const WorldState& w, SolverArrays& s, JointTrees& t, double gammaSca
         TreeNode& node = nodes[i];
         if (node.row < 0) continue;
         JointConstraint& jc = s.joints[static_cast<std::size_t>(node.row)];
-        BodyState& sA = jc.a >= 0 ? s.states[static_cast<std::size_t>(jc.a)] : zero;
-        BodyState& sB = jc.b >= 0 ? s.states[static_cast<std::size_t>(jc.b)] : zero;
+        BodyState& sA = sideState(s, jc.a);
+        BodyState& sB = sideState(s, jc.b);
         // A limit reached is held with the tree (an active set: a limit that
         // pulls is let go until the positions change, solveJointTrees), and
         // so is one within a slop of it, with the gap as the row's
@@ -927,13 +931,12 @@ double compliantImpulse(const double (&compliance)[3][3], int r, const double la
 
 /// The trees' joints' right-hand sides r = −(J v + b·C + Γ λ), 0 for the bodies.
 void treeRightHandSides(SolverArrays& s, JointTrees& t, const RowBias& rb, float invH, bool push) {
-    BodyState& zero = s.states.back();
     for (TreeNode& node : t.nodes) {
         node.rhs[0] = node.rhs[1] = node.rhs[2] = 0.0;
         if (node.row < 0 || (push && !node.pushed)) continue;  // (a tree not pushed: no change)
         const JointConstraint& jc = s.joints[static_cast<std::size_t>(node.row)];
-        const BodyState& sA = jc.a >= 0 ? s.states[static_cast<std::size_t>(jc.a)] : zero;
-        const BodyState& sB = jc.b >= 0 ? s.states[static_cast<std::size_t>(jc.b)] : zero;
+        const BodyState& sA = sideState(s, jc.a);
+        const BodyState& sB = sideState(s, jc.b);
         const EqualityRows& rows = node.rows;
         double lambda[3];
         readImpulse(jc, lambda);
@@ -955,13 +958,12 @@ void treeRightHandSides(SolverArrays& s, JointTrees& t, const RowBias& rb, float
 /// to their own rows (in the nodes' rhs), S Δλ_L = −(J_L (v + Δv₀) + b·C + Γ λ),
 /// solved with the factors of factorLoops (a dropped row takes none).
 void solveLoops(SolverArrays& s, const JointTrees& t, const RowBias& rb, double out[kMaxLoopRows]) {
-    BodyState& zero = s.states.back();
     const int m = t.loopRows;
     double y[kMaxLoopRows];
     for (const TreeLoop& loop : t.loops) {
         const JointConstraint& jc = s.joints[static_cast<std::size_t>(loop.row)];
-        const BodyState& sA = jc.a >= 0 ? s.states[static_cast<std::size_t>(jc.a)] : zero;
-        const BodyState& sB = jc.b >= 0 ? s.states[static_cast<std::size_t>(jc.b)] : zero;
+        const BodyState& sA = sideState(s, jc.a);
+        const BodyState& sB = sideState(s, jc.b);
         const EqualityRows& rows = loop.rows;
         double lambda[3];
         readImpulse(jc, lambda);

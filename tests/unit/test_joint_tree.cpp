@@ -539,8 +539,9 @@ namespace {
 /// hinged discs and boxes (3 to 12 bodies, each 0.5 to 1.5 m from its parent,
 /// the hinge halfway between them or at the child's centre) hung from a
 /// static pivot, each body with one chance in four of being 10, 100 or 1,000
-/// times as dense as the rest (the layout's ratio), with one or two more hinges closing loops between bodies that are
-/// not parent and child (hinged halfway between them). The bodies are kept
+/// times as dense as the rest (the layout's ratio), with one or two more
+/// hinges closing loops between bodies that are not parent and child (hinged
+/// halfway between them). The bodies are kept
 /// apart; the potential is measured from 20 m below the pivot, lower than any
 /// body can reach, so the energy is never negative.
 double loopedTreePeakEnergy(unsigned seed, int substeps) {
