@@ -147,6 +147,8 @@ struct JointConstraint {
     /// JointSlot::treeLoop: its equality rows close a loop of the exact
     /// trees and are solved with them (inTree is set too).
     bool treeLoop : 1 = false;
+    /// JointSlot::treeSpring: its spring is solved with the exact trees.
+    bool treeSpring : 1 = false;
     /// A joint solved with its tree whose limit (a revolute joint's angle, a
     /// slider's translation, a rope's or limited spring's length) is held by
     /// the tree in this factorization: −1 the lower, +1 the upper, 0 none
@@ -184,6 +186,7 @@ struct JointSlot {
     bool deepHinge = false;  ///< kept off the wide path as a deep joint (Joint::deepHinge)
     bool stretched = false;  ///< Joint::stretched when the plan was made (its tree is solved exactly: selectTreeJoints)
     bool pointLoad = false;  ///< a hinge or a weld with a rigid point: carries its load at a point (holdsLoadAtPoint)
+    bool spring = false;     ///< has a spring the tree solve can take (hasSpringRow)
     /// In a tree no swept loop closes, of hinges and welds with a rigid point
     /// or holding a stretched joint: the tree is pushed (rigid in the biased pass, its
     /// error closed by pushJointTrees) while none of its bodies touches
@@ -195,6 +198,10 @@ struct JointSlot {
     /// auxiliary rows (joint_tree.cpp), not swept beside them. inTree is set
     /// too (its equality rows leave the sweep), but it is no edge of a tree.
     bool treeLoop = false;
+    /// Its spring (hasSpringRow) acts between bodies of exact trees: it is
+    /// solved with them as an auxiliary row with its own compliance
+    /// (joint_tree.cpp), not swept beside them.
+    bool treeSpring = false;
 };
 
 /// What a joint's solve needs besides its row and its bodies' states.

@@ -234,6 +234,13 @@ inline float axialMass(const JointConstraint& jc, const SliderFrame& f) {
     return k > 0.0f ? 1.0f / k : 0.0f;
 }
 
+/// A slider's spring along its axis: stiffness m·ω² and damping 2·m·ζ·ω with
+/// m the bodies' reduced mass (makeSpring, springMassRatio).
+inline Softness sliderSpring(const JointConstraint& jc, const SliderFrame& f, float hertz, float dampingRatio,
+                             float h) {
+    return makeSpring(hertz, dampingRatio, h, springMassRatio(jc, axialMass(jc, f)));
+}
+
 /// The equality rows a joint hands to the tree solve: the revolute joint's
 /// point, the rigid weld's point and angle, the rigid distance joint's length,
 /// the prismatic joint's perpendicular and angle, the wheel joint's
@@ -271,6 +278,25 @@ bool distanceLimitCoordinate(const JointConstraint& jc, const BodyState& sA, con
 /// no limit, or a joint type whose limits stay in the sweep).
 bool limitCoordinate(const JointConstraint& jc, const BodyState& sA, const BodyState& sB, LimitCoordinate& out);
 void distanceEqualityRows(const JointConstraint& jc, const BodyState& sA, const BodyState& sB, EqualityRows& rows);
+/// Whether a joint has a spring the tree solve can take as an auxiliary row
+/// (JointConstraint::treeSpring): a revolute, prismatic or wheel joint's
+/// enabled spring. The dispatch of the rows below is in joint_tree.cpp.
+bool hasSpringRow(const Joint& joint);
+/// A joint's spring as one row (rows.count = 1, C in rows.error[0]) and the
+/// softness its sweep gives it at substep h, so that the same implicit spring
+/// is solved with the tree as beside it.
+void springRow(const JointConstraint& jc, const BodyState& sA, const BodyState& sB, float h, EqualityRows& rows,
+               Softness& soft);
+/// A revolute joint's angular spring: ω_B − ω_A, C the angle from its reference.
+void revoluteSpringRow(const JointConstraint& jc, const BodyState& sA, const BodyState& sB, float h, EqualityRows& rows,
+                       Softness& soft);
+/// A slider's spring along its axis (prismatic, wheel): C the translation.
+inline void sliderSpringRow(const JointConstraint& jc, const SliderFrame& f, float hertz, float dampingRatio, float h,
+                            EqualityRows& rows, Softness& soft) {
+    rows.count = 1;
+    sliderRow(f.axis, f.aA, f.aB, f.translation, 0, rows);
+    soft = sliderSpring(jc, f, hertz, dampingRatio, h);
+}
 
 void prepareDistanceJoint(const WorldState& w, const Joint& joint, JointConstraint& jc);
 void warmStartDistanceJoint(const JointConstraint& jc, BodyState& sA, BodyState& sB);

@@ -178,6 +178,7 @@ void planJoints(WorldState& w) {
         slot.rowsOnlyAtLimit = rowsOnlyAtLimit(joint);
         slot.stretched = joint.stretched;
         slot.pointLoad = holdsLoadAtPoint(joint);
+        slot.spring = hasSpringRow(joint);
         slot.wide = wideCandidate(w, joint, bA, bB, slot) && !joint.stretched;
         if (slot.wide && joint.deepHinge) slot.wide = false, slot.deepHinge = true;
     }
@@ -236,6 +237,7 @@ void prepareJoints(WorldState& w, float dt, float h) {
         jc.inTree = slot.inTree;
         jc.treePushed = slot.treePushed;
         jc.treeLoop = slot.treeLoop;
+        jc.treeSpring = slot.treeSpring;
         jc.a = slot.a, jc.b = slot.b;
         jc.invMassA = slot.invMassA, jc.invIA = slot.invIA, jc.invMassB = slot.invMassB, jc.invIB = slot.invIB;
         jc.deltaCenter = bB.center - bA.center;

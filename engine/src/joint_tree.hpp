@@ -31,19 +31,32 @@ struct TreeNode {
     EqualityRows rows;  ///< joint node: its rows at the factored positions
 };
 
-/// The most auxiliary rows (JointSlot::treeLoop) solved with the trees in a
-/// step: each costs a substitution through every node when the trees are
-/// factored, and their dense system grows as its cube.
+/// The most auxiliary rows (JointSlot::treeLoop, JointSlot::treeSpring)
+/// solved with the trees in a step: each costs a substitution through every
+/// node when the trees are factored, and their dense system grows as its cube.
 inline constexpr int kMaxLoopRows = 12;
 
-/// A joint closing a loop through the trees (JointSlot::treeLoop): its
-/// equality rows are auxiliary rows of the tree solve (Baraff (1996), §8).
+/// Auxiliary rows of the tree solve (Baraff (1996), §8): the equality rows of
+/// a joint closing a loop through the trees (JointSlot::treeLoop), or the
+/// one row of a spring between the trees' bodies (JointSlot::treeSpring).
 struct TreeLoop {
     int row = -1;                ///< index in SolverArrays::joints
     int nodeA = -1, nodeB = -1;  ///< the nodes of its bodies (−1: a body that does not move)
     int first = 0;               ///< its first row in the dense system (JointTrees::loopMatrix)
-    double compliance[3][3];     ///< Γ of its rows in the factored pass
+    bool spring = false;         ///< the joint's spring (its impulse JointImpulses::spring), not its equality rows
+    float springRate = 0.0f;     ///< a spring's bias rate: b = rate·C in every pass (its softness, not the pass's)
+    double compliance[3][3];     ///< Γ of its rows in the factored pass (a spring's own in every pass)
     EqualityRows rows;           ///< its rows at the factored positions
+};
+
+/// A limit the trees held and let go of in a solve (it pulled), with what
+/// its impulse was: taken off through the trees in the solves that follow.
+struct ReleasedLimit {
+    int row = -1;                ///< index in SolverArrays::joints
+    bool lower = false;          ///< the lower limit (else the upper)
+    int nodeA = -1, nodeB = -1;  ///< the nodes of its bodies (−1: a body that does not move)
+    float jA[3], jB[3];          ///< its row's Jacobian
+    double impulse = 0.0;        ///< its accumulated impulse along +J when let go
 };
 
 /// The trees of one step: nodes with every child before its parent.
@@ -56,8 +69,10 @@ struct JointTrees {
     /// rows that add nothing independent dropped (loopDropped).
     double loopMatrix[kMaxLoopRows][kMaxLoopRows];
     bool loopDropped[kMaxLoopRows];
-    double loopOwnMobility[kMaxLoopRows];  ///< each loop row's own J M⁻¹ Jᵀ (no tree, no other row)
-    std::vector<int> unionParent;          ///< scratch of the spanning-forest search
+    /// Each loop row's least pivot (kLoopPivot times its own J M⁻¹ Jᵀ + Γ, no
+    /// tree, no other row): one below it is dropped.
+    double loopPivotFloor[kMaxLoopRows];
+    std::vector<int> unionParent;  ///< scratch of the spanning-forest search
     std::vector<int> adjacency, adjacencyStart, nodeOfBody;
     std::vector<float> lightest, heaviest;  ///< per union-find root (kg)
     std::vector<std::uint8_t> welds;        ///< per solver state: rigid welds it holds (counted to 2; scratch)
@@ -77,6 +92,7 @@ struct JointTrees {
     /// (solveJointTrees).
     std::vector<BodyState> savedStates;
     std::vector<JointImpulses> savedImpulses;
+    std::vector<ReleasedLimit> releasedLimits;  ///< let go of in the solve under way (solveJointTrees)
 };
 
 /// Picks the joints whose equality rows are solved exactly (a spanning forest

@@ -49,9 +49,9 @@ void solvePrismaticJoint(JointConstraint& jc, const JointContext& ctx, BodyState
     const SliderFrame f = sliderFrame(jc, row.axisA, sA, sB);
     const float mass = axialMass(jc, f);
 
-    if (row.enableSpring && row.hertz > 0.0f) {
-        const RowBias rb = springBias(makeSpring(row.hertz, row.dampingRatio, ctx.h, springMassRatio(jc, mass)),
-                                      f.translation);
+    // (A spring the tree solve takes is solved there, joint_tree.cpp.)
+    if (row.enableSpring && row.hertz > 0.0f && !jc.treeSpring) {
+        const RowBias rb = springBias(sliderSpring(jc, f, row.hertz, row.dampingRatio, ctx.h), f.translation);
         const float impulse = -rb.massScale * mass * (axialSpeed(f, sA, sB) + rb.bias) - rb.impulseScale * acc.spring;
         acc.spring += impulse;
         applySliderImpulse(jc, f, impulse, 0.0f, 0.0f, sA, sB);

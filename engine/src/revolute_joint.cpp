@@ -106,7 +106,8 @@ void solveRevoluteJoint(JointConstraint& jc, const JointContext& ctx, BodyState&
     if (turns && (row.enableSpring || row.enableLimit))
         angle = unwindAngle(relativeAngle(jc, sA, sB) - row.referenceAngle);
 
-    if (row.enableSpring && turns && row.hertz > 0.0f) {
+    // (A spring the tree solve takes is solved there, joint_tree.cpp.)
+    if (row.enableSpring && turns && row.hertz > 0.0f && !jc.treeSpring) {
         const RowBias rb = springBias(makeSoft(row.hertz, row.dampingRatio, ctx.h), angle);
         const float impulse = -rb.massScale * row.axialMass * (sB.w - sA.w + rb.bias) - rb.impulseScale * acc.spring;
         acc.spring += impulse;
@@ -176,6 +177,17 @@ void revoluteEqualityRows(const JointConstraint& jc, const BodyState& sA, const 
     rows.jA[2][2] = -1.0f;
     rows.jB[2][2] = 1.0f;
     rows.error[2] = angle - (jc.treeLimit < 0 ? row.lowerAngle : row.upperAngle);
+}
+
+void revoluteSpringRow(const JointConstraint& jc, const BodyState& sA, const BodyState& sB, float h, EqualityRows& rows,
+                       Softness& soft) {
+    const RevoluteRow& row = jc.row.revolute;
+    rows.count = 1;
+    rows.jA[0][0] = rows.jA[0][1] = rows.jB[0][0] = rows.jB[0][1] = 0.0f;
+    rows.jA[0][2] = -1.0f;
+    rows.jB[0][2] = 1.0f;
+    rows.error[0] = unwindAngle(relativeAngle(jc, sA, sB) - row.referenceAngle);
+    soft = makeSoft(row.hertz, row.dampingRatio, h);
 }
 
 }  // namespace i2d::detail
