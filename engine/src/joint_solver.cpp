@@ -342,6 +342,7 @@ void solveJoints(WorldState& w, const JointContext& pass) {
     // (isDeepJoint); pushJoints closes its error on pseudo-velocities.
     JointContext rigid = pass;
     rigid.pass = SolvePass::no_push;
+    holdTreeLimits(w, s.positionUpdates);
     sweepColours(
         s,
         [&](JointConstraint& jc) {

@@ -533,6 +533,7 @@ void buildJointTrees(WorldState& w, float h) {
     t.loopRows = 0;
     t.extraInertia.clear();
     t.factoredPositions = -1;
+    t.limitsDecidedAt = -1;
     const int ground = static_cast<int>(s.stateBodies.size());
     const std::size_t bodySlots = static_cast<std::size_t>(ground) + 1;
     // A joint closing a loop (treeLoop) is no edge of its tree.
@@ -859,34 +860,16 @@ void factorLoops(SolverArrays& s, JointTrees& t, double gammaScale, float h) {
     }
 }
 
-/// The blocks of every node at the current positions (H_ii and the links),
-/// then their elimination, leaves first.
-void factor(const WorldState& w, SolverArrays& s, JointTrees& t, double gammaScale, float h, bool newPositions,
-            bool push = false) {
-    std::vector<TreeNode>& nodes = t.nodes;
+/// Which limit each tree joint's node holds at the positions now
+/// (JointConstraint::treeLimit, TreeNode::speculative, JointTrees::holdsLimits);
+/// `newPositions` first forgets the limits let go of at the last positions.
+void decideHeldLimits(const WorldState& w, SolverArrays& s, JointTrees& t, bool newPositions) {
     t.holdsLimits = false;
-    for (TreeNode& node : nodes) {
-        if (node.row >= 0) continue;
-        const Body& b = w.bodies[s.stateBodies[static_cast<std::size_t>(node.body)]];
-        setZero(node.diag);
-        setZero(node.link);
-        // M = diag(m, m, I); a degree of freedom the body lacks (zero inverse)
-        // gets 1 and zero coupling, so its velocity change is zero.
-        const float extra = node.body < static_cast<int>(t.extraInertia.size())
-                                ? t.extraInertia[static_cast<std::size_t>(node.body)]
-                                : 0.0f;
-        const float invMass = b.invMass, invI = raisedInverseInertia(b.invInertia, extra);
-        node.mask[0] = node.mask[1] = invMass != 0.0f ? 1.0f : 0.0f;
-        node.mask[2] = invI != 0.0f ? 1.0f : 0.0f;
-        node.diag[0][0] = node.diag[1][1] = invMass != 0.0f ? 1.0 / invMass : 1.0;
-        node.diag[2][2] = invI != 0.0f ? 1.0 / invI : 1.0;
-    }
-    for (std::size_t i = 0; i < nodes.size(); ++i) {
-        TreeNode& node = nodes[i];
+    for (TreeNode& node : t.nodes) {
         if (node.row < 0) continue;
         JointConstraint& jc = s.joints[static_cast<std::size_t>(node.row)];
-        BodyState& sA = sideState(s, jc.a);
-        BodyState& sB = sideState(s, jc.b);
+        const BodyState& sA = sideState(s, jc.a);
+        const BodyState& sB = sideState(s, jc.b);
         // A limit reached is held with the tree (an active set: a limit that
         // pulls is let go until the positions change, solveJointTrees), and
         // so is one within a slop of it, with the gap as the row's
@@ -924,6 +907,37 @@ void factor(const WorldState& w, SolverArrays& s, JointTrees& t, double gammaSca
         }
         node.speculative = node.speculative && jc.treeLimit != 0;
         t.holdsLimits = t.holdsLimits || jc.treeLimit != 0;
+    }
+}
+
+/// The blocks of every node at the current positions (H_ii and the links),
+/// then their elimination, leaves first.
+void factor(const WorldState& w, SolverArrays& s, JointTrees& t, double gammaScale, float h, bool newPositions,
+            bool push = false) {
+    std::vector<TreeNode>& nodes = t.nodes;
+    decideHeldLimits(w, s, t, newPositions);
+    for (TreeNode& node : nodes) {
+        if (node.row >= 0) continue;
+        const Body& b = w.bodies[s.stateBodies[static_cast<std::size_t>(node.body)]];
+        setZero(node.diag);
+        setZero(node.link);
+        // M = diag(m, m, I); a degree of freedom the body lacks (zero inverse)
+        // gets 1 and zero coupling, so its velocity change is zero.
+        const float extra = node.body < static_cast<int>(t.extraInertia.size())
+                                ? t.extraInertia[static_cast<std::size_t>(node.body)]
+                                : 0.0f;
+        const float invMass = b.invMass, invI = raisedInverseInertia(b.invInertia, extra);
+        node.mask[0] = node.mask[1] = invMass != 0.0f ? 1.0f : 0.0f;
+        node.mask[2] = invI != 0.0f ? 1.0f : 0.0f;
+        node.diag[0][0] = node.diag[1][1] = invMass != 0.0f ? 1.0 / invMass : 1.0;
+        node.diag[2][2] = invI != 0.0f ? 1.0 / invI : 1.0;
+    }
+    for (std::size_t i = 0; i < nodes.size(); ++i) {
+        TreeNode& node = nodes[i];
+        if (node.row < 0) continue;
+        JointConstraint& jc = s.joints[static_cast<std::size_t>(node.row)];
+        BodyState& sA = sideState(s, jc.a);
+        BodyState& sB = sideState(s, jc.b);
         EqualityRows& rows = node.rows;
         equalityRows(jc, sA, sB, rows);
         // In a push, a row that holds a point or a line moves its bodies
@@ -1180,6 +1194,13 @@ bool releasePullingLimits(SolverArrays& s, JointTrees& t) {
 }
 
 }  // namespace
+
+void holdTreeLimits(WorldState& w, int positions) {
+    JointTrees& t = w.solver.trees;
+    if (t.nodes.empty() || t.limitsDecidedAt == positions) return;
+    decideHeldLimits(w, w.solver, t, true);
+    t.limitsDecidedAt = positions;
+}
 
 void solveJointTrees(WorldState& w, const JointContext& ctx, int positions) {
     SolverArrays& s = w.solver;

@@ -687,6 +687,119 @@ TEST(JointTree, LoopsClosedThroughHeavyHingeTreesKeepTheirEnergy) {
     }
 }
 
+namespace {
+
+/// Largest total energy over 5 s, relative to its start, of a random tree of
+/// discs and boxes (3 to 12 bodies, each 0.5 to 1.5 m from its parent) hung
+/// from a static pivot, each body with one chance in four of being 10, 100 or
+/// 1,000 times as dense as the rest (the layout's ratio). Each body joins its
+/// parent by a hinge (at the child's centre or halfway), plain or with an
+/// angular spring (0.5 to 5 Hz, damping ratio 0 to 1) and, half the time,
+/// an angle limit; or, one time in three, by a slider along the line from
+/// its parent, with a translation limit and, half the time, a spring. The
+/// springs start at rest, so leaving their energy out can only hide a gain.
+/// The bodies are kept apart; the potential is measured from 25 m below the
+/// pivot, lower than any body can reach (12 reaches of 1.5 m and 12 slides
+/// of 0.5 m).
+double springTreePeakEnergy(unsigned seed, int substeps) {
+    std::mt19937 rng(seed);
+    auto uniform = [&](float a, float b) { return std::uniform_real_distribution<float>(a, b)(rng); };
+    auto pick = [&](int a, int b) { return std::uniform_int_distribution<int>(a, b)(rng); };
+    WorldSettings settings;
+    settings.enableSleep = false;
+    settings.substeps = substeps;
+    World world(settings);
+    const Vec2 pivot{0.0f, 30.0f};
+    const BodyId ground = world.createBody({.position = pivot});
+    const int n = pick(3, 12);
+    const float ratio = std::pow(10.0f, static_cast<float>(pick(1, 3)));
+    std::vector<BodyId> bodies;
+    for (int i = 0; i < n; ++i) {
+        const int parent = i == 0 ? -1 : pick(0, i - 1);
+        const BodyId a = parent < 0 ? ground : bodies[static_cast<std::size_t>(parent)];
+        const Vec2 from = world.position(a);
+        const float heading = uniform(0.0f, 6.2832f), reach = uniform(0.5f, 1.5f);
+        const Vec2 dir{std::cos(heading), std::sin(heading)};
+        const Vec2 at = from + reach * dir;
+        const BodyId b = world.createBody(
+            {.type = BodyType::dynamic_body, .position = at, .angle = uniform(-3.14f, 3.14f)});
+        const ShapeDef def{.density = pick(0, 3) == 0 ? ratio : 1.0f, .filter = {.groupIndex = -1}};
+        if (pick(0, 1) == 0)
+            world.createCircleShape(b, def, Circle{{0.0f, 0.0f}, uniform(0.1f, 0.4f)});
+        else
+            world.createPolygonShape(b, def, makeBox(uniform(0.1f, 0.4f), uniform(0.1f, 0.4f)));
+        const Vec2 anchor = pick(0, 1) == 0 ? at : 0.5f * (from + at);
+        const Vec2 anchorA = invTransformPoint(world.transform(a), anchor);
+        const Vec2 anchorB = invTransformPoint(world.transform(b), anchor);
+        const float reference = std::remainder(world.angle(b) - world.angle(a), 6.2831853f);
+        const float hertz = uniform(0.5f, 5.0f), damping = uniform(0.0f, 1.0f);
+        const bool spring = pick(0, 1) == 0, limit = pick(0, 1) == 0;
+        if (parent >= 0 && pick(0, 2) == 0) {
+            world.createPrismaticJoint({.bodyA = a,
+                                        .bodyB = b,
+                                        .localAnchorA = anchorA,
+                                        .localAnchorB = anchorB,
+                                        .localAxisA = invRotate(world.transform(a).q, dir),
+                                        .referenceAngle = reference,
+                                        .enableLimit = true,
+                                        .lowerTranslation = -uniform(0.1f, 0.5f),
+                                        .upperTranslation = uniform(0.1f, 0.5f),
+                                        .enableSpring = spring,
+                                        .hertz = spring ? hertz : 0.0f,
+                                        .dampingRatio = damping});
+        } else {
+            world.createRevoluteJoint({.bodyA = a,
+                                       .bodyB = b,
+                                       .localAnchorA = anchorA,
+                                       .localAnchorB = anchorB,
+                                       .referenceAngle = reference,
+                                       .enableLimit = spring && limit,
+                                       .lowerAngle = -uniform(0.1f, 0.8f),
+                                       .upperAngle = uniform(0.1f, 0.8f),
+                                       .enableSpring = spring,
+                                       .hertz = spring ? hertz : 0.0f,
+                                       .dampingRatio = damping});
+        }
+        bodies.push_back(b);
+    }
+    auto energy = [&] { return test::totalEnergy(world, bodies, pivot.y - 25.0); };
+    const double start = energy();
+    double peak = start;
+    for (int i = 0; i < 300; ++i) {
+        world.step(1.0f / 60.0f);
+        peak = std::max(peak, energy());
+        if (!std::isfinite(peak)) break;
+    }
+    return peak / start;
+}
+
+}  // namespace
+
+// Trees of hinges and sliders with springs and limits, holding heavy bodies.
+// A spring between the trees' bodies was swept beside them, moving its two
+// bodies by their own masses, and a limit the trees held kept its warm-started
+// impulse when they let go of it, and was swept with its bodies' own masses
+// before each solve decided to hold it: of these 40 layouts 2, 2 and 3 gained
+// more than 1 % at 4, 2 and 1 substeps, the worst 1.34 times its energy (of
+// 1,000: 45, 56 and 82, the worst 376 times). With the springs solved with
+// the trees as auxiliary rows of their own compliance, a limit let go of
+// taken off through the trees, and the held limits decided before the sweep
+// (joint_tree.cpp), none of the 1,000 gains more than 0.5 %. A passive system
+// (the springs at rest at the start, their energy left out, which can only
+// hide a gain): the hard-cases issue's bound, 1 % over 5 s.
+TEST(JointTree, TreesOfSpringsAndLimitsHoldingHeavyBodiesKeepTheirEnergy) {
+    for (int substeps : {4, 2, 1}) {
+        double worst = 0.0;
+        for (unsigned seed = 1; seed <= 40; ++seed) {
+            const double peak = springTreePeakEnergy(seed, substeps);
+            worst = std::max(worst, peak);
+            EXPECT_LE(peak, 1.01) << "seed " << seed << ", " << substeps << " substeps";
+        }
+        std::printf("[figure] %d substeps: 40 trees of springs and limits, at most %.4f times their start\n", substeps,
+                    worst);
+    }
+}
+
 // Trees hung from the same static bodies are judged by their own masses:
 // two hinge chains of alike links (1 kg) and one of alike links with a
 // 100 kg end, all three hung from the static node. Only the heavy-ended
@@ -822,6 +935,37 @@ TEST(JointTree, AHeldLimitLetsGoWhenTheLoadTurns) {
     std::printf("[figure] held at %.3f rad, then down to %.3f rad after the box was thrown\n", double(held),
                 double(least));
     EXPECT_LT(least, held - 0.1f) << "the disc stayed at its limit";
+}
+
+// A limit the tree lets go of carries no torque: it held the pair's load
+// (128 N·m) and was warm started with it, and when the thrown box turned the
+// disc off the limit the tree let go of it but kept that impulse, which the
+// limit's sweep row (the disc's own inertia) took back a few percent a pass:
+// 128, 105 and 41 N·m over three steps while the disc left the limit. Now it
+// is taken off through the tree when let go (joint_tree.cpp, releaseLimits).
+TEST(JointTree, ALimitLetGoOfCarriesNoTorque) {
+    LimitedPair p(4);
+    for (int i = 0; i < 120; ++i) p.world.step(1.0f / 60.0f);
+    const float load = std::abs(p.world.jointReactionTorque(p.pin));
+    ASSERT_GT(load, 100.0f) << "the pair rests against its upper limit";
+    p.world.applyLinearImpulse(p.box, {0.0f, -400.0f}, p.world.worldCenterOfMass(p.box));
+    float previous = p.world.revoluteJointAngle(p.pin);
+    int leaving = 0;
+    for (int i = 0; i < 30; ++i) {
+        p.world.step(1.0f / 60.0f);
+        const float angle = p.world.revoluteJointAngle(p.pin);
+        // Moving away from the upper limit (0.393 rad) and off it, not yet
+        // within 2° (0.035 rad, where the tree may hold it) of the lower
+        // (−0.775 rad): nothing but the limits acts along the angle (no
+        // spring, no motor), so the torque is theirs, 0 but for rounding
+        // (10⁻³ of the load).
+        if (angle < previous && angle < 0.39f && angle > -0.74f) {
+            ++leaving;
+            EXPECT_LE(std::abs(p.world.jointReactionTorque(p.pin)), 1e-3f * load) << "step " << i;
+        }
+        previous = angle;
+    }
+    EXPECT_GT(leaving, 5) << "the disc left its limit";
 }
 
 namespace {
