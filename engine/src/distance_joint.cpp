@@ -91,7 +91,7 @@ void solveDistanceJoint(JointConstraint& jc, const JointContext& ctx, BodyState&
         float impulse = -rb.massScale * mass * (cdot() + rb.bias) - rb.impulseScale * jc.impulses.axial;
         impulse = boundedIncrement(jc.impulses.axial, impulse, -maxImpulse, maxImpulse);
         applyAxial(jc, f, impulse, sA, sB);
-    } else if (row.hertz > 0.0f) {
+    } else if (row.hertz > 0.0f && !jc.treeSpring) {  // (else it is solved with the trees, joint_tree.cpp)
         // A spring: its softness is physical, so it applies in every pass.
         const RowBias rb = springBias(makeSpring(row.hertz, row.dampingRatio, ctx.h, springMassRatio(jc, mass)),
                                       f.length - row.length);
@@ -135,6 +135,18 @@ void distanceEqualityRows(const JointConstraint& jc, const BodyState& sA, const 
     rows.jA[0][0] = -f.axis.x, rows.jA[0][1] = -f.axis.y, rows.jA[0][2] = -crA;
     rows.jB[0][0] = f.axis.x, rows.jB[0][1] = f.axis.y, rows.jB[0][2] = crB;
     rows.error[0] = f.length - (row.rigid ? row.length : jc.treeLimit < 0 ? row.minLength : row.maxLength);
+}
+
+void distanceSpringRow(const JointConstraint& jc, const BodyState& sA, const BodyState& sB, float h, EqualityRows& rows,
+                       Softness& soft) {
+    const DistanceRow& row = jc.row.distance;
+    const JointFrame f = currentFrame(jc, sA, sB);
+    const float crA = cross(f.rA, f.axis), crB = cross(f.rB, f.axis);
+    rows.count = 1;
+    rows.jA[0][0] = -f.axis.x, rows.jA[0][1] = -f.axis.y, rows.jA[0][2] = -crA;
+    rows.jB[0][0] = f.axis.x, rows.jB[0][1] = f.axis.y, rows.jB[0][2] = crB;
+    rows.error[0] = f.length - row.length;
+    soft = makeSpring(row.hertz, row.dampingRatio, h, springMassRatio(jc, axialMassOf(jc, f)));
 }
 
 void pushDistanceJoint(const JointConstraint& jc, const JointContext& ctx, const BodyState& sA, const BodyState& sB,

@@ -279,14 +279,20 @@ bool distanceLimitCoordinate(const JointConstraint& jc, const BodyState& sA, con
 bool limitCoordinate(const JointConstraint& jc, const BodyState& sA, const BodyState& sB, LimitCoordinate& out);
 void distanceEqualityRows(const JointConstraint& jc, const BodyState& sA, const BodyState& sB, EqualityRows& rows);
 /// Whether a joint has a spring the tree solve can take as an auxiliary row
-/// (JointConstraint::treeSpring): a revolute, prismatic or wheel joint's
-/// enabled spring. The dispatch of the rows below is in joint_tree.cpp.
+/// (JointConstraint::treeSpring): a revolute, prismatic, wheel or distance
+/// joint's enabled spring, or a weld's angular spring. The dispatch of the rows below is in joint_tree.cpp.
 bool hasSpringRow(const Joint& joint);
 /// A joint's spring as one row (rows.count = 1, C in rows.error[0]) and the
 /// softness its sweep gives it at substep h, so that the same implicit spring
 /// is solved with the tree as beside it.
 void springRow(const JointConstraint& jc, const BodyState& sA, const BodyState& sB, float h, EqualityRows& rows,
                Softness& soft);
+/// A distance joint's spring along its axis: C the length less its rest length.
+void distanceSpringRow(const JointConstraint& jc, const BodyState& sA, const BodyState& sB, float h, EqualityRows& rows,
+                       Softness& soft);
+/// A weld's angular spring: ω_B − ω_A, C the angle from its reference.
+void weldSpringRow(const JointConstraint& jc, const BodyState& sA, const BodyState& sB, float h, EqualityRows& rows,
+                   Softness& soft);
 /// A revolute joint's angular spring: ω_B − ω_A, C the angle from its reference.
 void revoluteSpringRow(const JointConstraint& jc, const BodyState& sA, const BodyState& sB, float h, EqualityRows& rows,
                        Softness& soft);

@@ -95,6 +95,11 @@ bool hasSpringRow(const Joint& joint) {
             const WheelJointDef& def = std::get<WheelJointDef>(joint.def);
             return def.enableSpring && def.hertz > 0.0f;
         }
+        case JointType::distance: {
+            const DistanceJointDef& def = std::get<DistanceJointDef>(joint.def);
+            return !isRigidDistance(def) && def.hertz > 0.0f;
+        }
+        case JointType::weld: return std::get<WeldJointDef>(joint.def).angularHertz > 0.0f;
         default: return false;
     }
 }
@@ -113,6 +118,8 @@ void springRow(const JointConstraint& jc, const BodyState& sA, const BodyState& 
             sliderSpringRow(jc, sliderFrame(jc, row.axisA, sA, sB), row.hertz, row.dampingRatio, h, rows, soft);
             break;
         }
+        case JointType::distance: distanceSpringRow(jc, sA, sB, h, rows, soft); break;
+        case JointType::weld: weldSpringRow(jc, sA, sB, h, rows, soft); break;
         default: rows.count = 0; break;
     }
 }
@@ -451,7 +458,8 @@ void selectTreeJoints(WorldState& w, std::vector<JointSlot>& slots) {
         loopRows += jc.equalityRows;
         jc.inTree = jc.treeLoop = true;
     }
-    // The springs of the exact trees' joints and of the loops': swept beside
+    // The springs of the exact trees' joints, of the loops' and of joints
+    // that are only a spring between the trees' bodies: swept beside
     // the trees, a spring's row moves its two bodies by their own masses, not
     // by the mass the tree gives that row, and it is not the implicit spring
     // it is meant to be. Of 1,000 random trees of hinges and sliders (a
@@ -462,7 +470,16 @@ void selectTreeJoints(WorldState& w, std::vector<JointSlot>& slots) {
     // spring's, in every pass), within kMaxLoopRows with the loops, in slot
     // order; the rest stay in the sweep.
     for (JointSlot& jc : slots) {
-        if (!jc.inTree || !jc.spring || loopRows >= kMaxLoopRows) continue;
+        if (!jc.spring || loopRows >= kMaxLoopRows) continue;
+        if (!jc.inTree) {  // (a spring alone, a distance joint's: both its moving sides in exact trees)
+            const int a = movingSide(jc.a, jc.invMassA, jc.invIA, ground);
+            const int b = movingSide(jc.b, jc.invMassB, jc.invIB, ground);
+            bool exactSides = a != b;
+            for (int side : {a, b})
+                if (side != ground)
+                    exactSides = exactSides && exact(static_cast<std::size_t>(findRoot(t.unionParent, side)));
+            if (!exactSides) continue;
+        }
         ++loopRows;
         jc.treeSpring = true;
     }
@@ -728,16 +745,24 @@ void substitute(std::vector<TreeNode>& nodes) {
 }
 
 /// The accumulated impulses of a loop's rows: its joint's equality rows', or its spring's.
+/// A joint's accumulated spring impulse (a distance joint keeps its spring's
+/// in its axial impulse, a weld its angular spring's in its angular one).
+template <class Constraint>
+auto& springImpulse(Constraint& jc) {
+    if (jc.type == JointType::distance) return jc.impulses.axial;
+    return jc.type == JointType::weld ? jc.impulses.angular : jc.impulses.spring;
+}
+
 void readLoopImpulse(const TreeLoop& loop, const JointConstraint& jc, double out[3]) {
     if (!loop.spring) return readImpulse(jc, out);
-    out[0] = jc.impulses.spring;
+    out[0] = springImpulse(jc);
     out[1] = out[2] = 0.0;
 }
 
 /// Adds `delta` to the accumulated impulses of a loop's rows.
 void accumulateLoopImpulse(const TreeLoop& loop, JointConstraint& jc, const double delta[3]) {
     if (!loop.spring) return addImpulse(jc, delta);
-    jc.impulses.spring += static_cast<float>(delta[0]);
+    springImpulse(jc) += static_cast<float>(delta[0]);
 }
 
 /// Adds scale · (a row's Jacobian jA, jB)ᵀ to the right-hand sides of its

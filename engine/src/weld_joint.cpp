@@ -38,7 +38,8 @@ void solveWeldJoint(JointConstraint& jc, const JointContext& ctx, BodyState& sA,
     // A weld of an exact tree has its rigid parts solved with the tree
     // (joint_tree.cpp): the point and the angle, the point alone beside an
     // angular spring, or the angle alone beside a linear spring.
-    if (!rigid && iA + iB > 0.0f && !(jc.inTree && row.angularHertz == 0.0f)) {
+    // (An angular spring the trees solve is solved there too.)
+    if (!rigid && iA + iB > 0.0f && !(jc.inTree && row.angularHertz == 0.0f) && !jc.treeSpring) {
         const float C = unwindAngle(relativeAngle(jc, sA, sB) - row.referenceAngle);
         const RowBias rb = row.angularHertz > 0.0f
                                ? springBias(makeSoft(row.angularHertz, row.angularDampingRatio, ctx.h), C)
@@ -101,6 +102,17 @@ void solveWeldJoint(JointConstraint& jc, const JointContext& ctx, BodyState& sA,
     const Vec2 impulse = -rb.massScale * x - rb.impulseScale * acc.linear;
     acc.linear += impulse;
     applyImpulse(jc, rA, rB, impulse, 0.0f, sA, sB);
+}
+
+void weldSpringRow(const JointConstraint& jc, const BodyState& sA, const BodyState& sB, float h, EqualityRows& rows,
+                   Softness& soft) {
+    const WeldRow& row = jc.row.weld;
+    rows.count = 1;
+    rows.jA[0][0] = rows.jA[0][1] = rows.jB[0][0] = rows.jB[0][1] = 0.0f;
+    rows.jA[0][2] = -1.0f;
+    rows.jB[0][2] = 1.0f;
+    rows.error[0] = unwindAngle(relativeAngle(jc, sA, sB) - row.referenceAngle);
+    soft = makeSoft(row.angularHertz, row.angularDampingRatio, h);
 }
 
 void weldEqualityRows(const JointConstraint& jc, const BodyState& sA, const BodyState& sB, EqualityRows& rows) {
