@@ -61,6 +61,12 @@ struct WorldState {
     std::vector<ShockEdge> shockEdges;
     std::vector<int> shockLocal, shockBodies, shockLevel, shockOffset, shockAdjacent, shockFill;
     std::vector<ShockSaved> shockSaved;
+    /// The impact stage's rigid clusters (bodies rigidly welded together,
+    /// struck as one body): per body slot its cluster, −1 outside one (reset
+    /// through weldClusterBodies); each cluster's bodies from
+    /// weldClusterStart[k] in weldClusterBodies.
+    std::vector<int> weldCluster, weldClusterStart, weldClusterBodies;
+    std::vector<int> weldClusterScratch, weldClusterNumber, weldClusterGrouped;  ///< findWeldClusters' scratch
     /// Per body slot: its place in the lost loads being released
     /// (lost_load.cpp), −1 outside a release.
     std::vector<int> lostLoadPlace;

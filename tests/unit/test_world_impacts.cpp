@@ -2,7 +2,10 @@
 // once, against the restitution-as-velocity-bias model.
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
+#include <cstdio>
+#include <random>
 #include <vector>
 
 #include "world_fixtures.hpp"
@@ -242,4 +245,77 @@ TEST(WorldImpacts, BodyStruckEarlyAndLateInAStepEndsOutsideBoth) {
             ASSERT_LE(overlap(b, c), slop) << "step " << i << (lateContactFirst ? ", late contact first" : "");
         }
     }
+}
+
+namespace {
+
+/// Largest total energy over 5 s, relative to its start, of two boxes (half
+/// sides 0.1 to 0.4 m) welded rigidly at the midpoint of their centres, the
+/// second `ratio` times as dense, dropped at random angles onto the ground
+/// from 1.5 to 3 m (the second 0.5 to 1 m from the first in a random
+/// direction, kept above 1 m); restitution 0. The potential is measured from
+/// 1 m below the ground's top, so the energy is never negative.
+double weldedPairPeakEnergy(unsigned seed, int substeps, float ratio) {
+    std::mt19937 rng(seed);
+    auto uniform = [&](float a, float b) { return std::uniform_real_distribution<float>(a, b)(rng); };
+    WorldSettings settings;
+    settings.enableSleep = false;
+    settings.substeps = substeps;
+    World world(settings);
+    const BodyId ground = world.createBody({});
+    world.createPolygonShape(ground, {}, makeOffsetBox(60.0f, 0.5f, {0.0f, -0.5f}, 0.0f));
+    std::vector<BodyId> bodies;
+    Vec2 at{0.0f, uniform(1.5f, 3.0f)};
+    for (int i = 0; i < 2; ++i) {
+        const BodyId b = world.createBody(
+            {.type = BodyType::dynamic_body, .position = at, .angle = uniform(-3.0f, 3.0f)});
+        world.createPolygonShape(b,
+                                 {.density = i == 1 ? ratio : 1.0f, .restitution = 0.0f, .filter = {.groupIndex = -1}},
+                                 makeBox(uniform(0.1f, 0.4f), uniform(0.1f, 0.4f)));
+        if (i > 0) {
+            const BodyId a = bodies.back();
+            const Vec2 mid = 0.5f * (at + world.position(a));
+            world.createWeldJoint({.bodyA = a,
+                                   .bodyB = b,
+                                   .localAnchorA = invTransformPoint(world.transform(a), mid),
+                                   .localAnchorB = invTransformPoint(world.transform(b), mid),
+                                   .referenceAngle = std::remainder(world.angle(b) - world.angle(a), 6.2831853f)});
+        }
+        bodies.push_back(b);
+        const float heading = uniform(0.0f, 6.2832f);
+        at = at + uniform(0.5f, 1.0f) * Vec2{std::cos(heading), std::sin(heading)};
+        if (at.y < 1.0f) at.y = 1.0f + uniform(0.0f, 1.0f);
+    }
+    auto energy = [&] { return test::totalEnergy(world, bodies, -1.0); };
+    const double start = energy();
+    double peak = start;
+    for (int i = 0; i < 300; ++i) {
+        world.step(1.0f / 60.0f);
+        peak = std::max(peak, energy());
+    }
+    return peak / start;
+}
+
+}  // namespace
+
+// Bodies welded rigidly are struck by the impact law as one rigid body
+// (impact_stage.cpp, findWeldClusters). Struck one at a time as free bodies,
+// the light box's rebound was worked out with its own mass and its start
+// shifted to fly at it, and the weld took that back from there: of these 200
+// drops of a pair 100 times as dense at one end, 13, 9 and 0 gained more than
+// 1 % at 4, 2 and 1 substeps, the worst thrown up with 2.2 times its start
+// (30 times as dense: 6, 5 and 0). A passive system (restitution 0): the
+// hard-cases issue's bound, 1 % over 5 s.
+TEST(WorldImpacts, RigidlyWeldedPairsLandWithoutGainingEnergy) {
+    for (float ratio : {30.0f, 100.0f})
+        for (int substeps : {4, 2, 1}) {
+            double worst = 0.0;
+            for (unsigned seed = 1; seed <= 200; ++seed) {
+                const double peak = weldedPairPeakEnergy(seed, substeps, ratio);
+                worst = std::max(worst, peak);
+                EXPECT_LE(peak, 1.01) << "seed " << seed << ", " << substeps << " substeps, " << ratio << ":1";
+            }
+            std::printf("[figure] %g:1, %d substeps: 200 welded pairs dropped, at most %.4f times their start\n",
+                        double(ratio), substeps, worst);
+        }
 }
