@@ -182,6 +182,13 @@ inline void sliderRow(Vec2 dir, float armA, float armB, float error, int r, Equa
     rows.jB[r][0] = dir.x, rows.jB[r][1] = dir.y, rows.jB[r][2] = armB;
     rows.error[r] = error;
 }
+/// Row r as the relative angle's: J v = ω_B − ω_A, its error `error`.
+inline void angleRow(float error, int r, EqualityRows& rows) {
+    rows.jA[r][0] = rows.jA[r][1] = rows.jB[r][0] = rows.jB[r][1] = 0.0f;
+    rows.jA[r][2] = -1.0f;
+    rows.jB[r][2] = 1.0f;
+    rows.error[r] = error;
+}
 /// A joint's limited coordinate now (a revolute joint's angle, a slider's
 /// translation, a distance joint's length) and its bounds.
 struct LimitCoordinate {

@@ -87,10 +87,7 @@ void prismaticEqualityRows(const JointConstraint& jc, const BodyState& sA, const
     const SliderFrame f = sliderFrame(jc, row.axisA, sA, sB);
     rows.count = 2;
     sliderRow(f.perp, f.sA, f.sB, dot(f.perp, f.d), 0, rows);
-    rows.jA[1][0] = rows.jA[1][1] = rows.jB[1][0] = rows.jB[1][1] = 0.0f;
-    rows.jA[1][2] = -1.0f;
-    rows.jB[1][2] = 1.0f;
-    rows.error[1] = unwindAngle(relativeAngle(jc, sA, sB) - row.referenceAngle);
+    angleRow(unwindAngle(relativeAngle(jc, sA, sB) - row.referenceAngle), 1, rows);
     if (jc.treeLimit == 0) return;
     // The limit the tree holds: an equality row along the axis whose error is
     // the translation beyond it (let go when it would pull, joint_tree.cpp).

@@ -173,20 +173,14 @@ void revoluteEqualityRows(const JointConstraint& jc, const BodyState& sA, const 
     const RevoluteRow& row = jc.row.revolute;
     const float angle = unwindAngle(relativeAngle(jc, sA, sB) - row.referenceAngle);
     rows.count = 3;
-    rows.jA[2][0] = rows.jA[2][1] = rows.jB[2][0] = rows.jB[2][1] = 0.0f;
-    rows.jA[2][2] = -1.0f;
-    rows.jB[2][2] = 1.0f;
-    rows.error[2] = angle - (jc.treeLimit < 0 ? row.lowerAngle : row.upperAngle);
+    angleRow(angle - (jc.treeLimit < 0 ? row.lowerAngle : row.upperAngle), 2, rows);
 }
 
 void revoluteSpringRow(const JointConstraint& jc, const BodyState& sA, const BodyState& sB, float h, EqualityRows& rows,
                        Softness& soft) {
     const RevoluteRow& row = jc.row.revolute;
     rows.count = 1;
-    rows.jA[0][0] = rows.jA[0][1] = rows.jB[0][0] = rows.jB[0][1] = 0.0f;
-    rows.jA[0][2] = -1.0f;
-    rows.jB[0][2] = 1.0f;
-    rows.error[0] = unwindAngle(relativeAngle(jc, sA, sB) - row.referenceAngle);
+    angleRow(unwindAngle(relativeAngle(jc, sA, sB) - row.referenceAngle), 0, rows);
     soft = makeSoft(row.hertz, row.dampingRatio, h);
 }
 

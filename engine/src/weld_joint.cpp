@@ -108,10 +108,7 @@ void weldSpringRow(const JointConstraint& jc, const BodyState& sA, const BodySta
                    Softness& soft) {
     const WeldRow& row = jc.row.weld;
     rows.count = 1;
-    rows.jA[0][0] = rows.jA[0][1] = rows.jB[0][0] = rows.jB[0][1] = 0.0f;
-    rows.jA[0][2] = -1.0f;
-    rows.jB[0][2] = 1.0f;
-    rows.error[0] = unwindAngle(relativeAngle(jc, sA, sB) - row.referenceAngle);
+    angleRow(unwindAngle(relativeAngle(jc, sA, sB) - row.referenceAngle), 0, rows);
     soft = makeSoft(row.angularHertz, row.angularDampingRatio, h);
 }
 
@@ -128,10 +125,7 @@ void weldEqualityRows(const JointConstraint& jc, const BodyState& sA, const Body
     rows.count = angle;
     if (row.angularHertz != 0.0f) return;
     rows.count = angle + 1;
-    rows.jA[angle][0] = rows.jA[angle][1] = rows.jB[angle][0] = rows.jB[angle][1] = 0.0f;
-    rows.jA[angle][2] = -1.0f;
-    rows.jB[angle][2] = 1.0f;
-    rows.error[angle] = unwindAngle(relativeAngle(jc, sA, sB) - row.referenceAngle);
+    angleRow(unwindAngle(relativeAngle(jc, sA, sB) - row.referenceAngle), angle, rows);
 }
 
 }  // namespace i2d::detail

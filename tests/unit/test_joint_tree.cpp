@@ -449,20 +449,6 @@ struct TreePart {
     float referenceAngle;
 };
 
-/// The largest total energy of `bodies` over 5 s of stepping, relative to its
-/// start (the potential measured from `floorY`); NaN stops the run.
-double peakEnergyOver5s(World& world, const std::vector<BodyId>& bodies, double floorY) {
-    auto energy = [&] { return test::totalEnergy(world, bodies, floorY); };
-    const double start = energy();
-    double peak = start;
-    for (int i = 0; i < 300; ++i) {
-        world.step(1.0f / 60.0f);
-        peak = std::max(peak, energy());
-        if (!std::isfinite(peak)) break;
-    }
-    return peak / start;
-}
-
 /// Largest total energy over 5 s, relative to its start, of a tree hung from
 /// the pivot, its bodies alike in density and kept apart; the potential is
 /// measured from the lowest point a body's centre can reach (the pivot less
@@ -496,7 +482,7 @@ double hungTreePeakEnergy(const std::vector<TreePart>& parts, int substeps) {
         bodies.push_back(b);
         reach = std::max(reach, length(part.at - pivot));
     }
-    return peakEnergyOver5s(world, bodies, pivot.y - reach);
+    return test::peakEnergyOver5s(world, bodies, pivot.y - reach);
 }
 
 }  // namespace
@@ -588,7 +574,7 @@ double loopedTreePeakEnergy(unsigned seed, int substeps) {
         const BodyId a = bodies[static_cast<std::size_t>(i)], b = bodies[static_cast<std::size_t>(j)];
         hinge(a, b, 0.5f * (world.position(a) + world.position(b)));
     }
-    return peakEnergyOver5s(world, bodies, pivot.y - 20.0);
+    return test::peakEnergyOver5s(world, bodies, pivot.y - 20.0);
 }
 
 }  // namespace
@@ -789,15 +775,7 @@ double springTreePeakEnergy(unsigned seed, int substeps) {
                                    .minLength = 0.7f * length,
                                    .maxLength = 1.3f * length});
     }
-    auto energy = [&] { return test::totalEnergy(world, bodies, pivot.y - 25.0); };
-    const double start = energy();
-    double peak = start;
-    for (int i = 0; i < 300; ++i) {
-        world.step(1.0f / 60.0f);
-        peak = std::max(peak, energy());
-        if (!std::isfinite(peak)) break;
-    }
-    return peak / start;
+    return test::peakEnergyOver5s(world, bodies, pivot.y - 25.0);
 }
 
 }  // namespace

@@ -286,14 +286,7 @@ double weldedPairPeakEnergy(unsigned seed, int substeps, float ratio) {
         at = at + uniform(0.5f, 1.0f) * Vec2{std::cos(heading), std::sin(heading)};
         if (at.y < 1.0f) at.y = 1.0f + uniform(0.0f, 1.0f);
     }
-    auto energy = [&] { return test::totalEnergy(world, bodies, -1.0); };
-    const double start = energy();
-    double peak = start;
-    for (int i = 0; i < 300; ++i) {
-        world.step(1.0f / 60.0f);
-        peak = std::max(peak, energy());
-    }
-    return peak / start;
+    return test::peakEnergyOver5s(world, bodies, -1.0);
 }
 
 }  // namespace

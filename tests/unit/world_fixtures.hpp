@@ -1,6 +1,8 @@
 // Small scene builders shared by the world tests.
 #pragma once
 
+#include <algorithm>
+#include <cmath>
 #include <vector>
 
 #include <impulse2d/impulse2d.hpp>
@@ -34,6 +36,20 @@ inline double totalEnergy(const World& world, const std::vector<BodyId>& bodies,
              world.mass(b) * g * (double(world.worldCenterOfMass(b).y) - floorY);
     }
     return e;
+}
+
+/// The largest total energy of `bodies` over 5 s of stepping at 60 Hz,
+/// relative to its start (the potential measured from `floorY`); a
+/// non-finite energy stops the run and is returned.
+inline double peakEnergyOver5s(World& world, const std::vector<BodyId>& bodies, double floorY) {
+    const double start = totalEnergy(world, bodies, floorY);
+    double peak = start;
+    for (int i = 0; i < 300; ++i) {
+        world.step(1.0f / 60.0f);
+        peak = std::max(peak, totalEnergy(world, bodies, floorY));
+        if (!std::isfinite(peak)) break;
+    }
+    return peak / start;
 }
 
 }  // namespace i2d::test
