@@ -790,7 +790,7 @@ double springTreePeakEnergy(unsigned seed, int substeps) {
 // worst 350 times). With the springs solved with the trees as auxiliary rows
 // of their own compliance, a limit let go of taken off through the trees,
 // and the held limits decided before the sweep (joint_tree.cpp), none of the
-// 40 gains; of the 1,000, one at each substep count (the worst 6.7 % at 4
+// 40 gains; of the 1,000, one at each substep count (the worst 8.1 % at 4
 // substeps). A passive system (the springs at rest at the start, their
 // energy left out, which can only hide a gain): the hard-cases issue's
 // bound, 1 % over 5 s.
