@@ -124,6 +124,21 @@ void springRow(const JointConstraint& jc, const BodyState& sA, const BodyState& 
     }
 }
 
+namespace {
+
+/// Whether a joint has a limit its tree may hold (limitCoordinate can be true).
+bool hasLimit(const JointConstraint& jc) {
+    switch (jc.type) {
+        case JointType::revolute: return jc.row.revolute.enableLimit;
+        case JointType::prismatic: return jc.row.prismatic.enableLimit;
+        case JointType::wheel: return jc.row.wheel.enableLimit;
+        case JointType::distance: return !jc.row.distance.rigid && jc.row.distance.enableLimit;
+        default: return false;
+    }
+}
+
+}  // namespace
+
 bool limitCoordinate(const JointConstraint& jc, const BodyState& sA, const BodyState& sB, LimitCoordinate& out) {
     auto slider = [&](Vec2 axisA, bool enabled, float lower, float upper) {
         if (!enabled) return false;
@@ -557,6 +572,7 @@ void buildJointTrees(WorldState& w, float h) {
     t.extraInertia.clear();
     t.factoredPositions = -1;
     t.limitsDecidedAt = -1;
+    t.anyLimit = false;
     const int ground = static_cast<int>(s.stateBodies.size());
     const std::size_t bodySlots = static_cast<std::size_t>(ground) + 1;
     // A joint closing a loop (treeLoop) is no edge of its tree.
@@ -607,6 +623,8 @@ void buildJointTrees(WorldState& w, float h) {
         node.row = row;
         node.parent = parent;
         node.pushed = false;
+        node.speculative = false;
+        t.anyLimit = t.anyLimit || hasLimit(s.joints[static_cast<std::size_t>(row)]);
     };
     // A tree (the nodes from `head` on) is pushed whole (selectTreeJoints: its
     // joints are all or none JointConstraint::treePushed), unless a body of it
@@ -896,6 +914,7 @@ void factorLoops(SolverArrays& s, JointTrees& t, double gammaScale, float h) {
 /// `newPositions` first forgets the limits let go of at the last positions.
 void decideHeldLimits(const WorldState& w, SolverArrays& s, JointTrees& t, bool newPositions) {
     t.holdsLimits = false;
+    if (!t.anyLimit) return;  // (no tree joint has a limit: none is ever held)
     for (TreeNode& node : t.nodes) {
         if (node.row < 0) continue;
         JointConstraint& jc = s.joints[static_cast<std::size_t>(node.row)];
@@ -944,9 +963,9 @@ void decideHeldLimits(const WorldState& w, SolverArrays& s, JointTrees& t, bool 
 /// The blocks of every node at the current positions (H_ii and the links),
 /// then their elimination, leaves first.
 void factor(const WorldState& w, SolverArrays& s, JointTrees& t, double gammaScale, float h, bool newPositions,
-            bool push = false) {
+            bool limitsDecided, bool push = false) {
     std::vector<TreeNode>& nodes = t.nodes;
-    decideHeldLimits(w, s, t, newPositions);
+    if (!limitsDecided) decideHeldLimits(w, s, t, newPositions);
     for (TreeNode& node : nodes) {
         if (node.row >= 0) continue;
         const Body& b = w.bodies[s.stateBodies[static_cast<std::size_t>(node.body)]];
@@ -1241,7 +1260,10 @@ void solveJointTrees(WorldState& w, const JointContext& ctx, int positions) {
     const bool soft = rb.impulseScale != 0.0f;
     const double gammaScale = soft && rb.massScale > 0.0f ? double(rb.impulseScale) / rb.massScale : 0.0;
     if (t.factoredPositions != positions || t.factoredSoft != soft) {
-        factor(w, s, t, gammaScale, ctx.h, t.factoredPositions != positions);
+        // At new positions the held limits were decided before the sweep
+        // (holdTreeLimits); again after a limit was let go of.
+        const bool newPositions = t.factoredPositions != positions;
+        factor(w, s, t, gammaScale, ctx.h, newPositions, newPositions && t.limitsDecidedAt == positions);
         t.factoredPositions = positions;
         t.factoredSoft = soft;
     }
@@ -1277,7 +1299,7 @@ void solveJointTrees(WorldState& w, const JointContext& ctx, int positions) {
         for (const TreeLoop& loop : t.loops)
             s.joints[static_cast<std::size_t>(loop.row)].impulses = savedImpulses[joint++];
         releaseLimits(s, t);
-        factor(w, s, t, gammaScale, ctx.h, false);
+        factor(w, s, t, gammaScale, ctx.h, false, false);
     }
     t.releasedLimits.clear();
     // A limit that still pulls after the third solve keeps no pull.
@@ -1320,7 +1342,7 @@ void pushJointTrees(WorldState& w, const JointContext& ctx) {
         s.states[b].v = s.biasV[b];
         s.states[b].w = s.biasW[b];
     }
-    factor(w, s, t, 0.0, ctx.h, false, /*push=*/true);
+    factor(w, s, t, 0.0, ctx.h, false, false, /*push=*/true);
     solveFactored(s, t, {ctx.pushFactor * ctx.invH, 1.0f, 0.0f}, ctx.invH, true);
     t.factoredPositions = -1;  // the next solve factors the bodies as they are
     std::size_t body = 0, joint = 0;

@@ -86,6 +86,7 @@ struct JointTrees {
     /// What the factorization in `nodes` was made for (see solveJointTrees).
     int factoredPositions = -1;
     int limitsDecidedAt = -1;  ///< the positions the held limits were last decided for (holdTreeLimits)
+    bool anyLimit = false;     ///< some tree joint has a limit (else none is ever held)
     bool factoredSoft = false;
     bool holdsLimits = false;  ///< some joint's limit is held in that factorization (JointConstraint::treeLimit)
     /// The trees' bodies' states and joints' impulses before a solve that
