@@ -287,7 +287,8 @@ bool limitCoordinate(const JointConstraint& jc, const BodyState& sA, const BodyS
 void distanceEqualityRows(const JointConstraint& jc, const BodyState& sA, const BodyState& sB, EqualityRows& rows);
 /// Whether a joint has a spring the tree solve can take as an auxiliary row
 /// (JointConstraint::treeSpring): a revolute, prismatic, wheel or distance
-/// joint's enabled spring, or a weld's angular spring. The dispatch of the rows below is in joint_tree.cpp.
+/// joint's enabled spring, or a weld's angular spring. The dispatch of the
+/// rows below is in joint_tree.cpp.
 bool hasSpringRow(const Joint& joint);
 /// A joint's spring as one row (rows.count = 1, C in rows.error[0]) and the
 /// softness its sweep gives it at substep h, so that the same implicit spring

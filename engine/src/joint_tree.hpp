@@ -43,7 +43,7 @@ struct TreeLoop {
     int row = -1;                ///< index in SolverArrays::joints
     int nodeA = -1, nodeB = -1;  ///< the nodes of its bodies (−1: a body that does not move)
     int first = 0;               ///< its first row in the dense system (JointTrees::loopMatrix)
-    bool spring = false;         ///< the joint's spring (its impulse JointImpulses::spring), not its equality rows
+    bool spring = false;         ///< the joint's spring (its accumulated impulse: springImpulse), not its equality rows
     float springRate = 0.0f;     ///< a spring's bias rate: b = rate·C in every pass (its softness, not the pass's)
     double compliance[3][3];     ///< Γ of its rows in the factored pass (a spring's own in every pass)
     EqualityRows rows;           ///< its rows at the factored positions
