@@ -436,9 +436,14 @@ void resolveImpacts(WorldState& w, float dt) {
                changed[static_cast<std::size_t>(l.bodyB)] != 1u;
     };
 
-    // Rigid clusters of welded bodies, struck as one body (findWeldClusters).
-    findWeldClusters(w);
+    // Rigid clusters of welded bodies, struck as one body (findWeldClusters),
+    // found at the step's first strike: most steps strike nothing.
+    bool clustersFound = false;
     auto struckSide = [&](int body, bool moves) {
+        if (!clustersFound) {
+            findWeldClusters(w);
+            clustersFound = true;
+        }
         StruckSide side;
         const int k = body < static_cast<int>(w.weldCluster.size()) ? w.weldCluster[static_cast<std::size_t>(body)]
                                                                     : -1;

@@ -241,11 +241,11 @@ inline float axialMass(const JointConstraint& jc, const SliderFrame& f) {
     return k > 0.0f ? 1.0f / k : 0.0f;
 }
 
-/// A slider's spring along its axis: stiffness m·ω² and damping 2·m·ζ·ω with
-/// m the bodies' reduced mass (makeSpring, springMassRatio).
-inline Softness sliderSpring(const JointConstraint& jc, const SliderFrame& f, float hertz, float dampingRatio,
-                             float h) {
-    return makeSpring(hertz, dampingRatio, h, springMassRatio(jc, axialMass(jc, f)));
+/// A slider's spring along its axis (`mass` its row's, axialMass): stiffness
+/// m·ω² and damping 2·m·ζ·ω with m the bodies' reduced mass (makeSpring,
+/// springMassRatio).
+inline Softness sliderSpring(const JointConstraint& jc, float mass, float hertz, float dampingRatio, float h) {
+    return makeSpring(hertz, dampingRatio, h, springMassRatio(jc, mass));
 }
 
 /// The equality rows a joint hands to the tree solve: the revolute joint's
@@ -298,18 +298,21 @@ void springRow(const JointConstraint& jc, const BodyState& sA, const BodyState& 
 /// A distance joint's spring along its axis: C the length less its rest length.
 void distanceSpringRow(const JointConstraint& jc, const BodyState& sA, const BodyState& sB, float h, EqualityRows& rows,
                        Softness& soft);
-/// A weld's angular spring: ω_B − ω_A, C the angle from its reference.
-void weldSpringRow(const JointConstraint& jc, const BodyState& sA, const BodyState& sB, float h, EqualityRows& rows,
-                   Softness& soft);
-/// A revolute joint's angular spring: ω_B − ω_A, C the angle from its reference.
-void revoluteSpringRow(const JointConstraint& jc, const BodyState& sA, const BodyState& sB, float h, EqualityRows& rows,
-                       Softness& soft);
+/// An angular spring (a revolute joint's, a weld's): ω_B − ω_A, C the angle
+/// from `referenceAngle`, the softness of a spring relative to the row's own
+/// mass (makeSoft), as the joints' sweeps give it.
+inline void angularSpringRow(const JointConstraint& jc, const BodyState& sA, const BodyState& sB, float referenceAngle,
+                             float hertz, float dampingRatio, float h, EqualityRows& rows, Softness& soft) {
+    rows.count = 1;
+    angleRow(unwindAngle(relativeAngle(jc, sA, sB) - referenceAngle), 0, rows);
+    soft = makeSoft(hertz, dampingRatio, h);
+}
 /// A slider's spring along its axis (prismatic, wheel): C the translation.
 inline void sliderSpringRow(const JointConstraint& jc, const SliderFrame& f, float hertz, float dampingRatio, float h,
                             EqualityRows& rows, Softness& soft) {
     rows.count = 1;
     sliderRow(f.axis, f.aA, f.aB, f.translation, 0, rows);
-    soft = sliderSpring(jc, f, hertz, dampingRatio, h);
+    soft = sliderSpring(jc, axialMass(jc, f), hertz, dampingRatio, h);
 }
 
 void prepareDistanceJoint(const WorldState& w, const Joint& joint, JointConstraint& jc);

@@ -107,7 +107,11 @@ bool hasSpringRow(const Joint& joint) {
 void springRow(const JointConstraint& jc, const BodyState& sA, const BodyState& sB, float h, EqualityRows& rows,
                Softness& soft) {
     switch (jc.type) {
-        case JointType::revolute: revoluteSpringRow(jc, sA, sB, h, rows, soft); break;
+        case JointType::revolute: {
+            const RevoluteRow& row = jc.row.revolute;
+            angularSpringRow(jc, sA, sB, row.referenceAngle, row.hertz, row.dampingRatio, h, rows, soft);
+            break;
+        }
         case JointType::prismatic: {
             const PrismaticRow& row = jc.row.prismatic;
             sliderSpringRow(jc, sliderFrame(jc, row.axisA, sA, sB), row.hertz, row.dampingRatio, h, rows, soft);
@@ -119,7 +123,11 @@ void springRow(const JointConstraint& jc, const BodyState& sA, const BodyState& 
             break;
         }
         case JointType::distance: distanceSpringRow(jc, sA, sB, h, rows, soft); break;
-        case JointType::weld: weldSpringRow(jc, sA, sB, h, rows, soft); break;
+        case JointType::weld: {
+            const WeldRow& row = jc.row.weld;
+            angularSpringRow(jc, sA, sB, row.referenceAngle, row.angularHertz, row.angularDampingRatio, h, rows, soft);
+            break;
+        }
         default: rows.count = 0; break;
     }
 }

@@ -176,12 +176,4 @@ void revoluteEqualityRows(const JointConstraint& jc, const BodyState& sA, const 
     angleRow(angle - (jc.treeLimit < 0 ? row.lowerAngle : row.upperAngle), 2, rows);
 }
 
-void revoluteSpringRow(const JointConstraint& jc, const BodyState& sA, const BodyState& sB, float h, EqualityRows& rows,
-                       Softness& soft) {
-    const RevoluteRow& row = jc.row.revolute;
-    rows.count = 1;
-    angleRow(unwindAngle(relativeAngle(jc, sA, sB) - row.referenceAngle), 0, rows);
-    soft = makeSoft(row.hertz, row.dampingRatio, h);
-}
-
 }  // namespace i2d::detail

@@ -104,14 +104,6 @@ void solveWeldJoint(JointConstraint& jc, const JointContext& ctx, BodyState& sA,
     applyImpulse(jc, rA, rB, impulse, 0.0f, sA, sB);
 }
 
-void weldSpringRow(const JointConstraint& jc, const BodyState& sA, const BodyState& sB, float h, EqualityRows& rows,
-                   Softness& soft) {
-    const WeldRow& row = jc.row.weld;
-    rows.count = 1;
-    angleRow(unwindAngle(relativeAngle(jc, sA, sB) - row.referenceAngle), 0, rows);
-    soft = makeSoft(row.angularHertz, row.angularDampingRatio, h);
-}
-
 void weldEqualityRows(const JointConstraint& jc, const BodyState& sA, const BodyState& sB, EqualityRows& rows) {
     // Its rigid parts (equalityRowCount): the point (rows 0, 1) unless it is
     // a spring, then the angle unless it is one.

@@ -53,7 +53,7 @@ void solveWheelJoint(JointConstraint& jc, const JointContext& ctx, BodyState& sA
     }
     // (A spring the tree solve takes is solved there, joint_tree.cpp.)
     if (row.enableSpring && row.hertz > 0.0f && !jc.treeSpring) {
-        const RowBias rb = springBias(sliderSpring(jc, f, row.hertz, row.dampingRatio, ctx.h), f.translation);
+        const RowBias rb = springBias(sliderSpring(jc, mass, row.hertz, row.dampingRatio, ctx.h), f.translation);
         const float impulse = -rb.massScale * mass * (axialSpeed(f, sA, sB) + rb.bias) - rb.impulseScale * acc.spring;
         acc.spring += impulse;
         applySliderImpulse(jc, f, impulse, 0.0f, 0.0f, sA, sB);
