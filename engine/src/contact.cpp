@@ -251,6 +251,7 @@ Update updateManifold(WorldState& w, int c) {
             ct.tangentImpulse[i] = ti[i];
         }
     }
+    ct.touchBegan = touching && !ct.touching;
     if (!reused) {
         ct.framed = false;
         if (ct.persists && m.pointCount > 0) recordManifoldFrame(ct, bodyA, bodyB);  // (no points: not framed)

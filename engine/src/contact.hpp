@@ -80,6 +80,9 @@ struct Contact {
     /// not surfaces meeting. The impact stage passes it over
     /// (passesOverImpacts); set and cleared by the narrowphase.
     bool overlapFromStart : 1 = false;
+    /// Its manifold got points in this step's narrowphase and had none
+    /// before: its rows start without the load they will carry (kWideCold).
+    bool touchBegan : 1 = false;
     /// How deep a point must be to count as a deep overlap, in 1/255 of
     /// kDeepOverlap (kFullDeepScale: kDeepOverlap itself); set from the two
     /// shapes' thickness when the contact is created (deepOverlapOf).

@@ -138,6 +138,11 @@ struct RowContext {
     bool biasRestitution;  ///< the classic modes' restitution target (velocity-bias impacts)
     bool soft;             ///< soft_step
     float fullDt, warm, pushRate;
+    /// soft_step with warm starting: the normal speed up to which a contact
+    /// without a warm start is at rest, one step of gravity (kWideCold);
+    /// negative otherwise (no row is cold).
+    float restingSpeed;
+    float restingDepth;  ///< ... and overlaps no deeper than this (the penetration slop)
 };
 RowContext makeRowContext(const WorldState& w, float h, bool soft);
 
@@ -148,6 +153,11 @@ RowContext makeRowContext(const WorldState& w, float h, bool soft);
 /// written at its place in colour order: the colouring (solver.cpp) comes first.
 void prepareContacts(WorldState& w, float h, bool soft);
 void warmStartContacts(WorldState& w);
+/// soft_step, after each substep's soft_bias sweep, in a step with cold
+/// lanes (SolverArrays::coldBlocks): more soft_bias sweeps of the blocks
+/// that hold them, colour by colour, until the cold rows' normal impulses
+/// settle (contact_solver.cpp).
+void settleColdContacts(WorldState& w, float h);
 /// soft_step with deep rows, once the rows are prepared (and packed): each
 /// deep row's DeepCarry, the impulses the step starts it with as its previous.
 void beginDeepCarry(SolverArrays& s);

@@ -214,6 +214,20 @@ int layoutWideBlocks(SolverArrays& s, const int* ends) {
     return blocks;
 }
 
+/// SolverArrays::coldBlocks and coldBlockStart from the lanes' flags.
+void listColdBlocks(SolverArrays& s) {
+    const std::vector<int>& start = s.wideContactColourStart;
+    s.coldBlockStart.assign(start.size(), 0);
+    for (std::size_t g = 0; g + 1 < start.size(); ++g) {
+        s.coldBlockStart[g] = static_cast<int>(s.coldBlocks.size());
+        for (int b = start[g]; b < start[g + 1]; ++b) {
+            const std::uint32_t* f = s.wideContacts[static_cast<std::size_t>(b)].flags;
+            if (((f[0] | f[1] | f[2] | f[3]) & kWideCold) != 0) s.coldBlocks.push_back(b);
+        }
+    }
+    s.coldBlockStart.back() = static_cast<int>(s.coldBlocks.size());
+}
+
 /// The contact rows of this step (after colourContacts). soft_step without
 /// rolling resistance solves the coloured rows four at a time: with
 /// closed-form impacts and no deep overlap each row is prepared straight
@@ -229,6 +243,9 @@ void prepareContactRows(WorldState& w, float h, bool soft) {
     s.wideContactsOnly = s.wideContactsActive && !s.anyDeepOverlap &&
                          w.settings.impactModel == ImpactModel::closed_form;
     s.contactOverflowStart = 0;
+    s.coldBlocks.clear();
+    // Whether a lane is cold (kWideCold), set by the workers that find one.
+    std::atomic<bool> anyCold{false};
     if (!s.wideContactsOnly) {
         prepareContacts(w, h, soft);  // leaves each colour's end in colourOffsets
         if (!s.wideContactsActive) {
@@ -238,12 +255,16 @@ void prepareContactRows(WorldState& w, float h, bool soft) {
         }
         const int blocks = layoutWideBlocks(s, s.colourOffsets.data());
         const std::vector<int>& blockRows = s.wideBlockRows;
+        const RowContext x = makeRowContext(w, h, soft);
         auto pack = [&](int b, int e) {
+            bool cold = false;
             for (int k = b; k < e; ++k)
-                packWideContactBlock(s, k, blockRows[static_cast<std::size_t>(2 * k)],
-                                     blockRows[static_cast<std::size_t>(2 * k + 1)]);
+                cold |= packWideContactBlock(s, k, blockRows[static_cast<std::size_t>(2 * k)],
+                                             blockRows[static_cast<std::size_t>(2 * k + 1)], &w, &x);
+            if (cold) anyCold.store(true, std::memory_order_relaxed);
         };
         w.runner.run(blocks, kPackGrain, pack);
+        if (anyCold.load(std::memory_order_relaxed)) listColdBlocks(s);
         return;
     }
     // colourOffsets holds each colour's first row, so the next colour's is its end.
@@ -272,6 +293,7 @@ void prepareContactRows(WorldState& w, float h, bool soft) {
     auto prepare = [&](int first, int last) {
         WideLaneTarget targets[4];
         int pending = 0;
+        bool cold = false;
         for (int k = first; k < last; ++k) {
             const int inGroup = s.rowContacts[static_cast<std::size_t>(k)];
             if (inGroup < 0) continue;
@@ -286,11 +308,12 @@ void prepareContactRows(WorldState& w, float h, bool soft) {
             const std::size_t blk = static_cast<std::size_t>(s.wideContactColourStart[group] + inGroup / 4);
             targets[pending++] = {contact, &s.wideContacts[blk], &s.wideContactCold[blk], inGroup % 4};
             if (pending == 4) {
-                prepareWideContactLanes(w, x, targets, pending);
+                cold |= prepareWideContactLanes(w, x, targets, pending);
                 pending = 0;
             }
         }
-        if (pending > 0) prepareWideContactLanes(w, x, targets, pending);
+        if (pending > 0) cold |= prepareWideContactLanes(w, x, targets, pending);
+        if (cold) anyCold.store(true, std::memory_order_relaxed);
     };
     w.runner.run(static_cast<int>(activeCount), kPrepareGrain, prepare);
     // The lanes past each group's last row stay empty.
@@ -302,6 +325,7 @@ void prepareContactRows(WorldState& w, float h, bool soft) {
         for (int lane = count % 4; lane < 4; ++lane)
             packEmptyWideContactLane(s.wideContacts[k], s.wideContactCold[k], lane, x.zeroState);
     }
+    if (anyCold.load(std::memory_order_relaxed)) listColdBlocks(s);
 }
 
 /// Joint sweeps in each substep's solve stage (soft_step). A chain carrying a
@@ -475,6 +499,7 @@ void solve(WorldState& w, float dt) {
             warmStart();
             for (int pass = 0; pass < kJointSolvePasses; ++pass) joints(SolvePass::soft_bias);
             contacts(SolvePass::soft_bias, h);
+            if (!s.coldBlocks.empty()) settleColdContacts(w, h);
             if (s.anyDeepOverlap || s.anyDeepJoint || s.pushTrees) {
                 stopNonFiniteBodies(s);  // (integratePositionsPushed does not look)
                 if (s.anyDeepOverlap) {

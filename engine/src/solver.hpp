@@ -105,7 +105,13 @@ struct SolverArrays {
     ScratchArray<int> rowContacts;  ///< per active contact: its place in its row group (colourContacts), −1 for none
     std::vector<int> wideContactColourStart;  ///< per row group: its first block; then the block count
     std::vector<int> wideBlockRows;           ///< per block: its first row and its group's end
-    int contactOverflowStart = 0;             ///< the first row of the scalar rest (the overflow group)
+    /// The blocks with a lane at rest and without a warm start (kWideCold),
+    /// ascending, and where each row group's begin in that list (as
+    /// wideContactColourStart's groups; then the list's size): empty when
+    /// no lane is cold (settleColdContacts, contact_solver.cpp).
+    std::vector<int> coldBlocks, coldBlockStart;
+    std::vector<float> coldImpulses;  ///< the cold lanes' normal impulses after a sweep (settleColdContacts)
+    int contactOverflowStart = 0;     ///< the first row of the scalar rest (the overflow group)
     /// This step sweeps the contact rows last to first (colour by colour,
     /// the overflow group's rows in reverse too): every other step, so the
     /// order of a Gauss-Seidel sweep leans no stack the same way each step

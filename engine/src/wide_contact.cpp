@@ -18,9 +18,18 @@ namespace i2d::detail {
 
 namespace {
 
+/// Whether contact ct may start cold (kWideCold): its manifold got points
+/// this step and neither body has a joint. The extra sweeps
+/// (settleColdContacts) solve contacts alone: beside a joint they would move
+/// its bodies with the joint left as it was.
+bool mayBeCold(const WorldState& w, const Contact& ct) {
+    return ct.touchBegan && w.bodies[ct.bodyA].joints.empty() && w.bodies[ct.bodyB].joints.empty();
+}
+
 /// Lane `lane` of block k from row cc (null: an empty lane), every field written.
-inline void packLane(WideContactBlock& k, WideContactCold& cold, int lane, const ContactConstraint* cc, int row,
-                     int zero) {
+inline bool packLane(WideContactBlock& k, WideContactCold& cold, int lane, const ContactConstraint* cc, int row,
+                     int zero, const BodyState* states = nullptr, const WorldState* w = nullptr,
+                     const RowContext* x = nullptr) {
     const bool used = cc != nullptr;
     k.a[lane] = used ? cc->a : zero;
     k.b[lane] = used ? cc->b : zero;
@@ -42,6 +51,19 @@ inline void packLane(WideContactBlock& k, WideContactCold& cold, int lane, const
         if (cc->pointCount > 0) flags |= kWidePoint0;
         if (cc->pointCount > 1) flags |= kWidePoint1;
         flags |= moveFlags(cc->invMassA, cc->invIA, cc->invMassB, cc->invIB);
+        // A contact at rest without a warm start, as prepareWideContactLanes finds it.
+        if (x && x->restingSpeed >= 0.0f && !cc->deepOverlap && mayBeCold(*w, w->contacts[cc->contact])) {
+            float warm[2], depth[2], speed[2];
+            for (int j = 0; j < cc->pointCount; ++j) {
+                const ContactPointConstraint& cp = cc->points[j];
+                warm[j] = cp.normalImpulse;
+                depth[j] = cp.adjustedSeparation + dot(cp.rB - cp.rA, cc->normal);
+                const BodyState& sA = states[cc->a];
+                const BodyState& sB = states[cc->b];
+                speed[j] = dot((sB.v + cross(sB.w, cp.rB)) - (sA.v + cross(sA.w, cp.rA)), cc->normal);
+            }
+            if (coldAtRest(*x, cc->pointCount, warm, depth, speed)) flags |= kWideCold;
+        }
     }
     k.flags[lane] = flags;
     for (int j = 0; j < 2; ++j) {
@@ -57,21 +79,26 @@ inline void packLane(WideContactBlock& k, WideContactCold& cold, int lane, const
         p.tangentImpulse[lane] = present ? cp->tangentImpulse : 0.0f;
         cold.maxNormalImpulse[j][lane] = present ? cp->maxNormalImpulse : 0.0f;
     }
+    return (flags & kWideCold) != 0;
 }
 
 }  // namespace
 
-void packWideContactBlock(SolverArrays& s, int block, int start, int last) {
+bool packWideContactBlock(SolverArrays& s, int block, int start, int last, const WorldState* w, const RowContext* x) {
     const int zero = static_cast<int>(s.states.size()) - 1;
     WideContactBlock& k = s.wideContacts[static_cast<std::size_t>(block)];
     WideContactCold& cold = s.wideContactCold[static_cast<std::size_t>(block)];
+    bool anyCold = false;
     for (int lane = 0; lane < 4; ++lane) {
         const int r = start + lane;
-        packLane(k, cold, lane, r < last ? &s.constraints[static_cast<std::size_t>(r)] : nullptr, r, zero);
+        anyCold |= packLane(k, cold, lane, r < last ? &s.constraints[static_cast<std::size_t>(r)] : nullptr, r, zero,
+                            s.states.data(), w, x);
     }
+    return anyCold;
 }
 
-void prepareWideContactLanes(const WorldState& w, const RowContext& x, const WideLaneTarget* targets, int count) {
+bool prepareWideContactLanes(const WorldState& w, const RowContext& x, const WideLaneTarget* targets, int count) {
+    bool anyCold = false;
     // Each lane's contact and bodies are read one lane at a time, as
     // prepareContactRow reads them; what the arithmetic below does not change
     // goes straight to the lane, the rest to these arrays as well. Lanes past
@@ -146,6 +173,23 @@ void prepareWideContactLanes(const WorldState& w, const RowContext& x, const Wid
             p.normalImpulse[lane] = x.warm * ct.normalImpulse[j];
             p.tangentImpulse[lane] = x.warm * ct.tangentImpulse[j];
         }
+        // A contact at rest that began touching this step (kWideCold); the
+        // speeds of others are not computed.
+        if (x.restingSpeed >= 0.0f && (f & kWideDeep) == 0 && mayBeCold(w, ct)) {
+            const BodyState& sA = w.solver.states[static_cast<std::size_t>(bA.state)];
+            const BodyState& sB = w.solver.states[static_cast<std::size_t>(bB.state)];
+            float warm[2], depth[2], speed[2];
+            for (int j = 0; j < points; ++j) {
+                warm[j] = ct.normalImpulse[j];
+                depth[j] = ct.manifold.points[j].separation;
+                const Vec2 rA{rAx[j][i], rAy[j][i]}, rB{rBx[j][i], rBy[j][i]};
+                speed[j] = dot((sB.v + cross(sB.w, rB)) - (sA.v + cross(sA.w, rA)), n);
+            }
+            if (coldAtRest(x, points, warm, depth, speed)) {
+                f |= kWideCold;
+                anyCold = true;
+            }
+        }
         flags[i] = f;
     }
     // The arithmetic of prepareContactRow and finishContactRow (soft_step),
@@ -207,6 +251,7 @@ void prepareWideContactLanes(const WorldState& w, const RowContext& x, const Wid
             p.tangentMass[lane] = outTangentMass[j][i];
         }
     }
+    return anyCold;
 }
 
 void packEmptyWideContactLane(WideContactBlock& k, WideContactCold& cold, int lane, int zeroState) {

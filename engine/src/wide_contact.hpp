@@ -12,6 +12,7 @@
 // carries is set in the block (carryDeepLoads, contact_solver.cpp).
 #pragma once
 
+#include <cmath>
 #include <cstdint>
 #include <vector>
 
@@ -46,7 +47,23 @@ enum WideContactFlag : std::uint32_t {
     kWidePoint1 = 1u << 6,         ///< and its second
     kWideMovesA = 1u << 7,         ///< A can move (a nonzero inverse mass or inertia): the sweeps write its velocity
     kWideMovesB = 1u << 8,         ///< the same for B
+    kWideCold = 1u << 9,           ///< a contact at rest without a warm start: settled (settleColdContacts)
 };
+
+/// Whether the row of a contact whose manifold got points this step
+/// (Contact::touchBegan) starts cold and at rest (kWideCold): no point
+/// carries an impulse (`warm[j]`, its warm-start normal impulse), overlaps
+/// deeper than the penetration slop (`separation[j]`: an overlap is pushed
+/// apart, not a load to find), or closes or opens faster than one step of
+/// gravity (`speed[j]`, its normal speed; RowContext::restingSpeed).
+inline bool coldAtRest(const RowContext& x, int points, const float* warm, const float* separation,
+                       const float* speed) {
+    if (points == 0) return false;
+    for (int j = 0; j < points; ++j)
+        if (warm[j] != 0.0f || !(separation[j] >= -x.restingDepth) || !(std::abs(speed[j]) <= x.restingSpeed))
+            return false;
+    return true;
+}
 
 /// kWideMovesA and kWideMovesB for a lane (a contact's or a hinge's) with
 /// these inverse masses and inertias: a side moves (and the eight-lane
@@ -90,8 +107,11 @@ struct WideContactCold {
 
 /// Packs the rows [start, min(start + 4, last)) of SolverArrays::constraints
 /// (of one colour, which ends at `last`) into block `block` of
-/// s.wideContacts (sized by the caller), every field written.
-void packWideContactBlock(SolverArrays& s, int block, int start, int last);
+/// s.wideContacts (sized by the caller), every field written. Returns
+/// whether a lane is cold (kWideCold), looked for when the world `w` and
+/// the rows' context `x` are given.
+bool packWideContactBlock(SolverArrays& s, int block, int start, int last, const WorldState* w = nullptr,
+                          const RowContext* x = nullptr);
 /// Where one contact's lane goes (prepareWideContactLanes).
 struct WideLaneTarget {
     int contact;  ///< contact slot
@@ -105,8 +125,8 @@ struct WideLaneTarget {
 /// are read one by one, the arithmetic of prepareContactRow and
 /// finishContactRow runs in the lanes of Float4 in the same order, so the
 /// bits are the scalar row's. Writes those lanes only, so lanes may be
-/// prepared on any worker.
-void prepareWideContactLanes(const WorldState& w, const RowContext& x, const WideLaneTarget* targets, int count);
+/// prepared on any worker. Returns whether a lane is cold (kWideCold).
+bool prepareWideContactLanes(const WorldState& w, const RowContext& x, const WideLaneTarget* targets, int count);
 /// Lane `lane` of block k empty: the zero state on both sides, no points.
 void packEmptyWideContactLane(WideContactBlock& k, WideContactCold& cold, int lane, int zeroState);
 /// The accumulated impulses of blocks [firstBlock, lastBlock) into their
