@@ -51,18 +51,17 @@ inline bool packLane(WideContactBlock& k, WideContactCold& cold, int lane, const
         if (cc->pointCount > 0) flags |= kWidePoint0;
         if (cc->pointCount > 1) flags |= kWidePoint1;
         flags |= moveFlags(cc->invMassA, cc->invIA, cc->invMassB, cc->invIB);
-        // A contact at rest without a warm start, as prepareWideContactLanes finds it.
+        // A contact that began touching at rest, as prepareWideContactLanes finds it.
         if (x && x->restingSpeed >= 0.0f && !cc->deepOverlap && mayBeCold(*w, w->contacts[cc->contact])) {
-            float warm[2], depth[2], speed[2];
+            const BodyState& sA = states[cc->a];
+            const BodyState& sB = states[cc->b];
+            float depth[2], speed[2];
             for (int j = 0; j < cc->pointCount; ++j) {
                 const ContactPointConstraint& cp = cc->points[j];
-                warm[j] = cp.normalImpulse;
                 depth[j] = cp.adjustedSeparation + dot(cp.rB - cp.rA, cc->normal);
-                const BodyState& sA = states[cc->a];
-                const BodyState& sB = states[cc->b];
                 speed[j] = dot((sB.v + cross(sB.w, cp.rB)) - (sA.v + cross(sA.w, cp.rA)), cc->normal);
             }
-            if (coldAtRest(*x, cc->pointCount, warm, depth, speed)) flags |= kWideCold;
+            if (coldAtRest(*x, cc->pointCount, depth, speed)) flags |= kWideCold;
         }
     }
     k.flags[lane] = flags;
@@ -178,14 +177,13 @@ bool prepareWideContactLanes(const WorldState& w, const RowContext& x, const Wid
         if (x.restingSpeed >= 0.0f && (f & kWideDeep) == 0 && mayBeCold(w, ct)) {
             const BodyState& sA = w.solver.states[static_cast<std::size_t>(bA.state)];
             const BodyState& sB = w.solver.states[static_cast<std::size_t>(bB.state)];
-            float warm[2], depth[2], speed[2];
+            float depth[2], speed[2];
             for (int j = 0; j < points; ++j) {
-                warm[j] = ct.normalImpulse[j];
                 depth[j] = ct.manifold.points[j].separation;
                 const Vec2 rA{rAx[j][i], rAy[j][i]}, rB{rBx[j][i], rBy[j][i]};
                 speed[j] = dot((sB.v + cross(sB.w, rB)) - (sA.v + cross(sA.w, rA)), n);
             }
-            if (coldAtRest(x, points, warm, depth, speed)) {
+            if (coldAtRest(x, points, depth, speed)) {
                 f |= kWideCold;
                 anyCold = true;
             }

@@ -51,17 +51,15 @@ enum WideContactFlag : std::uint32_t {
 };
 
 /// Whether the row of a contact whose manifold got points this step
-/// (Contact::touchBegan) starts cold and at rest (kWideCold): no point
-/// carries an impulse (`warm[j]`, its warm-start normal impulse), overlaps
-/// deeper than the penetration slop (`separation[j]`: an overlap is pushed
-/// apart, not a load to find), or closes or opens faster than one step of
-/// gravity (`speed[j]`, its normal speed; RowContext::restingSpeed).
-inline bool coldAtRest(const RowContext& x, int points, const float* warm, const float* separation,
-                       const float* speed) {
+/// (Contact::touchBegan, so it has no warm start: the manifold before had no
+/// point to carry one) starts cold and at rest (kWideCold): no point
+/// overlaps deeper than the penetration slop (`separation[j]`: an overlap is
+/// pushed apart, not a load to find) or closes or opens faster than one step
+/// of gravity (`speed[j]`, its normal speed; RowContext::restingSpeed).
+inline bool coldAtRest(const RowContext& x, int points, const float* separation, const float* speed) {
     if (points == 0) return false;
     for (int j = 0; j < points; ++j)
-        if (warm[j] != 0.0f || !(separation[j] >= -x.restingDepth) || !(std::abs(speed[j]) <= x.restingSpeed))
-            return false;
+        if (!(separation[j] >= -x.restingDepth) || !(std::abs(speed[j]) <= x.restingSpeed)) return false;
     return true;
 }
 
