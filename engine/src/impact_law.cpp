@@ -56,6 +56,9 @@ void validate(const ImpactInput& in) {
 
 double cross(const Vec2d& a, const Vec2d& b) { return a.x * b.y - a.y * b.x; }
 
+/// det K / trace² below which a K of two rotations alone is singular (resolveImpact).
+constexpr double kSingularDetRatio = 1e-12;
+
 }  // namespace
 
 const char* toString(ImpactCase kind) {
@@ -104,7 +107,16 @@ ImpactResult resolveImpact(const ImpactInput& in) {
     const double rA2 = rA.x * rA.x + rA.y * rA.y, rB2 = rB.x * rB.x + rB.y * rB.y;
     const double rAxrB = cross(rA, rB);
     const double detK = m * m + m * (iIA * rA2 + iIB * rB2) + iIA * iIB * rAxrB * rAxrB;
-    if (!(detK > 0.0))
+    // With both inverse masses zero, K is a sum of two rank-one terms, singular
+    // when the lever arms are parallel; rotated into the normal's frame,
+    // exactly parallel arms keep a rounding-sized det K (about 1e-24 for arms
+    // of 4.6 and 14 m), which passed a test for 0 and made the law divide by
+    // it: 1.3e5 J in, 2e10 J out (fuzz_impact). Such a K is singular to
+    // double precision: refused when its condition number, at least
+    // trace²/det, passes 1e12 (a K⁻¹ then keeps no more than 4 of its 16
+    // digits). With a mass to move, det K ≥ m² and K is well conditioned.
+    const double trace = K11 + K22;
+    if (!(detK > 0.0) || (m == 0.0 && !(detK > kSingularDetRatio * trace * trace)))
         throw Error("resolveImpact: the collision matrix K is singular (neither body can move the contact point "
                     "in every direction: zero inverse masses and parallel or zero lever arms)");
 
