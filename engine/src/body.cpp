@@ -12,6 +12,7 @@ void updateMass(WorldState& w, int b) {
     body.mass = body.invMass = body.inertia = body.invInertia = 0.0f;
     body.localCenter = {};
     if (body.type != BodyType::dynamic_body) {
+        body.reach = solidReach(w, body);  // from the origin: a turn of a kinematic body, a manifold's reuse
         body.center = transformPoint(body.xf, body.localCenter);
         return;
     }

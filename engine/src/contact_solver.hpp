@@ -158,6 +158,10 @@ void warmStartContacts(WorldState& w);
 /// that hold them, colour by colour, until the cold rows' normal impulses
 /// settle (contact_solver.cpp).
 void settleColdContacts(WorldState& w, float h);
+/// soft_step, after each substep's relax sweep, in a step with deep overlaps
+/// in the wide blocks (SolverArrays::deepBlocks): more `pass` sweeps of the
+/// blocks that hold them until their normal impulses settle (contact_solver.cpp).
+void relaxDeepContacts(WorldState& w, float h, SolvePass pass);
 /// soft_step with deep rows, once the rows are prepared (and packed): each
 /// deep row's DeepCarry, the impulses the step starts it with as its previous.
 void beginDeepCarry(SolverArrays& s);

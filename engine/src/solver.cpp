@@ -214,18 +214,20 @@ int layoutWideBlocks(SolverArrays& s, const int* ends) {
     return blocks;
 }
 
-/// SolverArrays::coldBlocks and coldBlockStart from the lanes' flags.
-void listColdBlocks(SolverArrays& s) {
+/// The blocks with a lane flagged `flag`, ascending, and where each row
+/// group's begin in that list (SolverArrays::coldBlocks, deepBlocks).
+void listBlocks(const SolverArrays& s, std::uint32_t flag, std::vector<int>& list, std::vector<int>& begin) {
     const std::vector<int>& start = s.wideContactColourStart;
-    s.coldBlockStart.assign(start.size(), 0);
+    list.clear();
+    begin.assign(start.size(), 0);
     for (std::size_t g = 0; g + 1 < start.size(); ++g) {
-        s.coldBlockStart[g] = static_cast<int>(s.coldBlocks.size());
+        begin[g] = static_cast<int>(list.size());
         for (int b = start[g]; b < start[g + 1]; ++b) {
             const std::uint32_t* f = s.wideContacts[static_cast<std::size_t>(b)].flags;
-            if (((f[0] | f[1] | f[2] | f[3]) & kWideCold) != 0) s.coldBlocks.push_back(b);
+            if (((f[0] | f[1] | f[2] | f[3]) & flag) != 0) list.push_back(b);
         }
     }
-    s.coldBlockStart.back() = static_cast<int>(s.coldBlocks.size());
+    begin.back() = static_cast<int>(list.size());
 }
 
 /// The contact rows of this step (after colourContacts). soft_step without
@@ -244,6 +246,7 @@ void prepareContactRows(WorldState& w, float h, bool soft) {
                          w.settings.impactModel == ImpactModel::closed_form;
     s.contactOverflowStart = 0;
     s.coldBlocks.clear();
+    s.deepBlocks.clear();
     // Whether a lane is cold (kWideCold), set by the workers that find one.
     std::atomic<bool> anyCold{false};
     if (!s.wideContactsOnly) {
@@ -264,7 +267,8 @@ void prepareContactRows(WorldState& w, float h, bool soft) {
             if (cold) anyCold.store(true, std::memory_order_relaxed);
         };
         w.runner.run(blocks, kPackGrain, pack);
-        if (anyCold.load(std::memory_order_relaxed)) listColdBlocks(s);
+        if (anyCold.load(std::memory_order_relaxed)) listBlocks(s, kWideCold, s.coldBlocks, s.coldBlockStart);
+        if (s.anyDeepOverlap) listBlocks(s, kWideDeep, s.deepBlocks, s.deepBlockStart);
         return;
     }
     // colourOffsets holds each colour's first row, so the next colour's is its end.
@@ -325,7 +329,7 @@ void prepareContactRows(WorldState& w, float h, bool soft) {
         for (int lane = count % 4; lane < 4; ++lane)
             packEmptyWideContactLane(s.wideContacts[k], s.wideContactCold[k], lane, x.zeroState);
     }
-    if (anyCold.load(std::memory_order_relaxed)) listColdBlocks(s);
+    if (anyCold.load(std::memory_order_relaxed)) listBlocks(s, kWideCold, s.coldBlocks, s.coldBlockStart);
 }
 
 /// Joint sweeps in each substep's solve stage (soft_step). A chain carrying a
@@ -530,7 +534,9 @@ void solve(WorldState& w, float dt) {
             }
             ++s.positionUpdates;  // the joint trees and wide hinges keep what they made until then
             joints(SolvePass::soft_relax);
-            contacts(i + 1 == substeps ? SolvePass::soft_relax_last : SolvePass::soft_relax, h);
+            const SolvePass relax = i + 1 == substeps ? SolvePass::soft_relax_last : SolvePass::soft_relax;
+            contacts(relax, h);
+            if (!s.deepBlocks.empty()) relaxDeepContacts(w, h, relax);
         }
         stopNonFiniteBodies(s);    // the last sweep's, before the impulses are stored
         if (s.wideContactsOnly) {  // blocks without rows store into their contacts

@@ -110,8 +110,12 @@ struct SolverArrays {
     /// wideContactColourStart's groups; then the list's size): empty when
     /// no lane is cold (settleColdContacts, contact_solver.cpp).
     std::vector<int> coldBlocks, coldBlockStart;
-    std::vector<float> coldImpulses;  ///< the cold lanes' normal impulses after a sweep (settleColdContacts)
-    int contactOverflowStart = 0;     ///< the first row of the scalar rest (the overflow group)
+    /// The same for the blocks with a lane of a deep overlap (kWideDeep):
+    /// empty in a step without one, or whose rows are not in wide blocks
+    /// (relaxDeepContacts, contact_solver.cpp).
+    std::vector<int> deepBlocks, deepBlockStart;
+    std::vector<float> listedImpulses;  ///< a listed lane's normal impulses after a sweep (contact_solver.cpp)
+    int contactOverflowStart = 0;       ///< the first row of the scalar rest (the overflow group)
     /// This step sweeps the contact rows last to first (colour by colour,
     /// the overflow group's rows in reverse too): every other step, so the
     /// order of a Gauss-Seidel sweep leans no stack the same way each step

@@ -210,14 +210,16 @@ TEST(OverlapPiles, InTheAirAtOnePoint) {
 // substep (energy up to 1.067 times the start plus the lift out of the
 // ground; 9 beyond 1.02). Now each body's share of a sideways move is held to
 // its own width, and a supported body's lift is paid from its fall. The
-// issue's bounds, no tolerance added, except for circles, of which one layout
-// (8, seed 31) gains 1.02002 as they part (the other eleven stay within
-// 1.002), held at 1.025. At 30 Hz with ζ 10, the defaults before, that
-// layout gained 1.039 (1.059 before the soft rows' lift was paid from the
-// fall: docs/validation.md, "Overlaps that separate gently"), and the last
-// overlaps of one 20-box layout (seed 83) took until 2.15 s to come within
-// 2 cm, so the 20-body piles were held at 4 cm at 2 s; at the default 50 Hz,
-// ζ 25, every pile is within 2 cm by 1.7 s (deepest at 2 s: 7.8 mm).
+// issue's bounds, no tolerance added. One layout of circles (8, seed 31)
+// gained 1.02002 as they part and was held at 1.025 (1.039 at 30 Hz with
+// ζ 10, the defaults before; 1.059 before the soft rows' lift was paid from
+// the fall: docs/validation.md, "Overlaps that separate gently"): the relax
+// sweep passed the soft rows' push out of the ground on to the circles
+// resting on the pushed ones, and a step with a deep overlap now relaxes
+// its deep rows until they settle (contact_solver.cpp, relaxDeepContacts):
+// 1.0101. The last overlaps of one 20-box layout (seed 83) took until 2.15 s
+// to come within 2 cm at 30 Hz; at the default 50 Hz, ζ 25, every pile is
+// within 2 cm by 1.7 s.
 TEST(OverlapPiles, OnTheGround) {
     for (Kind kind : {Kind::box, Kind::circle, Kind::capsule})
         for (int count : {8, 20})
@@ -231,7 +233,7 @@ TEST(OverlapPiles, OnTheGround) {
                 EXPECT_LE(f.deepestAt2s, 0.02f) << what;
                 EXPECT_LE(f.speedExcess, 0.0f) << what;
                 EXPECT_LE(f.rise, 0.5f) << what;
-                EXPECT_LE(f.energyRatio, kind == Kind::circle ? 1.025f : 1.02f) << what;
+                EXPECT_LE(f.energyRatio, 1.02f) << what;
             }
 }
 
