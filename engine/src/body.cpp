@@ -12,7 +12,8 @@ void updateMass(WorldState& w, int b) {
     body.mass = body.invMass = body.inertia = body.invInertia = 0.0f;
     body.localCenter = {};
     if (body.type != BodyType::dynamic_body) {
-        body.reach = solidReach(w, body);  // from the origin: a turn of a kinematic body, a manifold's reuse
+        // Its reach is kept as it is: grown as shapes are added (createShape),
+        // so a level of many shapes on one static body is built in linear time.
         body.center = transformPoint(body.xf, body.localCenter);
         return;
     }
@@ -52,14 +53,17 @@ void updateMass(WorldState& w, int b) {
     body.v += cross(body.w, body.center - oldCenter);
 }
 
+float shapeReach(const Shape& shape, Vec2 from) {
+    if (shape.isSensor) return -1.0f;
+    float reach = -1.0f;
+    const ShapeCore core = shapeCore(shape);
+    for (int k = 0; k < core.count; ++k) reach = std::max(reach, length(core.points[k] - from));
+    return reach;
+}
+
 float solidReach(const WorldState& w, const Body& body) {
     float reach = -1.0f;
-    for (int s : bodyShapes(w.shapes, body)) {
-        const Shape& shape = w.shapes[s];
-        if (shape.isSensor) continue;
-        const ShapeCore core = shapeCore(shape);
-        for (int k = 0; k < core.count; ++k) reach = std::max(reach, length(core.points[k] - body.localCenter));
-    }
+    for (int s : bodyShapes(w.shapes, body)) reach = std::max(reach, shapeReach(w.shapes[s], body.localCenter));
     return reach;
 }
 

@@ -20,6 +20,7 @@
 namespace i2d::detail {
 
 struct WorldState;
+struct Shape;
 
 struct Body {
     // What the solver's preparation reads of every body, every step (joint
@@ -45,7 +46,10 @@ struct Body {
     float sleepTime = 0.0f;  ///< seconds at rest (island.cpp)
     /// Farthest core point of a solid shape from the centre of mass (m); −1
     /// when the body has no solid shape. Bounds how far a turn moves its
-    /// surface (continuous.cpp). Set by updateMass.
+    /// surface (continuous.cpp, a kept manifold's reuse, the speculative
+    /// margin). Set by updateMass for a dynamic body; a static or kinematic
+    /// body's (from its origin) grows as shapes are added and stays when one
+    /// is destroyed, an upper bound that every reader may take.
     float reach = -1.0f;
     /// The highest its centre of mass has been, along −gravity, at the end of
     /// a step (m; −∞ before its first step). A push between bodies does not
@@ -129,6 +133,8 @@ void updateMass(WorldState& w, int body);
 
 /// Body::reach from the body's solid shapes.
 float solidReach(const WorldState& w, const Body& body);
+/// The farthest core point of a solid shape from `from` (body coordinates); −1 for a sensor.
+float shapeReach(const Shape& shape, Vec2 from);
 
 /// True when a joint between the two bodies forbids their shapes to collide.
 bool jointPreventsCollision(const WorldState& w, int bodyA, int bodyB);

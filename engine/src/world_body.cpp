@@ -159,6 +159,8 @@ void World::setBodyType(BodyId id, BodyType type) {
     }
     for (int s : detail::bodyShapes(w.shapes, body)) detail::createProxy(w, s);
     detail::updateMass(w, b);
+    // Now measured from the origin (updateMass keeps a static or kinematic body's reach).
+    if (type != BodyType::dynamic_body) body.reach = detail::solidReach(w, body);
 }
 
 Vec2 World::position(BodyId id) const { return state().bodies[state().bodyIndex(id)].xf.p; }
