@@ -34,11 +34,11 @@ int createShape(WorldState& w, int b, const ShapeDef& def, ShapeType type, const
         body.firstShape = s;
     body.lastShape = s;
     createProxy(w, s);
+    // A static or kinematic body has no mass to update, only its reach.
+    if (body.type != BodyType::dynamic_body) body.reach = std::max(body.reach, shapeReach(sh, body.localCenter));
     // A sleeping body stays asleep (a level built asleep stays asleep, as in
     // Box2D): its new shape's contacts wake it when one begins to touch an
     // awake body.
-    // A static or kinematic body has no mass to update, only its reach.
-    if (body.type != BodyType::dynamic_body) body.reach = std::max(body.reach, shapeReach(sh, body.localCenter));
     if (updateBodyMass) updateMass(w, b);
     return s;
 }
