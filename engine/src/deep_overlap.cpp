@@ -106,29 +106,6 @@ constexpr float kSidewaysPushFactor = 2.0f;
 // at twice (docs/validation.md, "Three times the cap in the air").
 constexpr float kUnsupportedSidewaysPushFactor = 3.0f;
 
-/// The largest d·x over a shape's points in world coordinates.
-float supportAlong(const Shape& sh, const Transform& xf, Vec2 d) {
-    switch (sh.type) {
-        case ShapeType::circle:
-            return dot(transformPoint(xf, sh.geometry.circle.center), d) + sh.geometry.circle.radius;
-        case ShapeType::capsule: {
-            const Capsule& c = sh.geometry.capsule;
-            return std::max(dot(transformPoint(xf, c.center1), d), dot(transformPoint(xf, c.center2), d)) + c.radius;
-        }
-        case ShapeType::segment: {
-            const Segment& c = sh.geometry.segment;
-            return std::max(dot(transformPoint(xf, c.point1), d), dot(transformPoint(xf, c.point2), d));
-        }
-        case ShapeType::polygon: {
-            const Polygon& p = sh.geometry.polygon;
-            float m = -std::numeric_limits<float>::max();
-            for (int i = 0; i < p.count; ++i) m = std::max(m, dot(transformPoint(xf, p.vertices[i]), d));
-            return m + p.radius;
-        }
-    }
-    return 0.0f;
-}
-
 /// Whether bodies a and b also touch through a contact other than c (bodies
 /// of several shapes).
 bool touchElsewhere(const WorldState& w, int c, int a, int b) {
@@ -231,8 +208,8 @@ void prepareDeepOverlaps(WorldState& w) {
         if (dot(upper.center, up) + depth * std::abs(nu) <= upper.highest) continue;
         const Shape& shA = w.shapes[ct.shapeA];
         const Shape& shB = w.shapes[ct.shapeB];
-        const float hiA = supportAlong(shA, bA.xf, side), loA = -supportAlong(shA, bA.xf, -side);
-        const float hiB = supportAlong(shB, bB.xf, side), loB = -supportAlong(shB, bB.xf, -side);
+        const float hiA = shapeSupport(shA, bA.xf, side), loA = -shapeSupport(shA, bA.xf, -side);
+        const float hiB = shapeSupport(shB, bB.xf, side), loB = -shapeSupport(shB, bB.xf, -side);
         const float toSide = hiA - loB, toOtherSide = hiB - loA;  // how far B must move along ±side to clear A
         const float clear = std::min(toSide, toOtherSide);
         const float widthA = hiA - loA, widthB = hiB - loB;

@@ -565,8 +565,19 @@ void resolveImpacts(WorldState& w, float dt) {
         in.friction = sweepStamp == kShockStamp ? 0.0f : ct.friction;
         in.normal = {n.x, n.y};
         Vec2 rB = point - sideB.center, rA = point - sideA.center;
-        in.a = {bTakes ? sideB.invMass : 0.0, bTakes ? sideB.invInertia : 0.0, {rB.x, rB.y}, {vB0.x, vB0.y}, wB0};
-        in.b = {aTakes ? sideA.invMass : 0.0, aTakes ? sideA.invInertia : 0.0, {rA.x, rA.y}, {vA0.x, vA0.y}, wA0};
+        // A body the shock pass holds is immovable for the law, and stops
+        // the other's approach as the ground would. Moving towards the
+        // other at the point, it would also drive the other away at its own
+        // speed, taking nothing back: it is struck as still along the normal
+        // there, and what it closes is left to the solver's rows.
+        auto heldStill = [&](Vec2 v, float spin, Vec2 r, float towards) {
+            const float u = towards * dot(v + cross(spin, r), n);
+            return u > 0.0f ? v - (towards * u) * n : v;
+        };
+        const Vec2 vLawA = holdA ? heldStill(vA0, wA0, rA, 1.0f) : vA0;
+        const Vec2 vLawB = holdB ? heldStill(vB0, wB0, rB, -1.0f) : vB0;
+        in.a = {bTakes ? sideB.invMass : 0.0, bTakes ? sideB.invInertia : 0.0, {rB.x, rB.y}, {vLawB.x, vLawB.y}, wB0};
+        in.b = {aTakes ? sideA.invMass : 0.0, aTakes ? sideA.invInertia : 0.0, {rA.x, rA.y}, {vLawA.x, vLawA.y}, wA0};
         ImpactResult r;
         try {
             r = resolveImpact(in);

@@ -118,6 +118,55 @@ inline std::optional<MassData> shapeMass(const Shape& s) {
 }
 
 /// A shape as a convex core (points) and a radius, for the distance function.
+/// The largest d·x over a shape's points in world coordinates (its support
+/// along d, rounding included).
+inline float shapeSupport(const Shape& s, const Transform& xf, Vec2 d) {
+    switch (s.type) {
+        case ShapeType::circle: return dot(transformPoint(xf, s.geometry.circle.center), d) + s.geometry.circle.radius;
+        case ShapeType::capsule: {
+            const Capsule& c = s.geometry.capsule;
+            return std::max(dot(transformPoint(xf, c.center1), d), dot(transformPoint(xf, c.center2), d)) + c.radius;
+        }
+        case ShapeType::segment: {
+            const Segment& c = s.geometry.segment;
+            return std::max(dot(transformPoint(xf, c.point1), d), dot(transformPoint(xf, c.point2), d));
+        }
+        case ShapeType::polygon: {
+            const Polygon& p = s.geometry.polygon;
+            float m = dot(transformPoint(xf, p.vertices[0]), d);
+            for (int i = 1; i < p.count; ++i) m = std::max(m, dot(transformPoint(xf, p.vertices[i]), d));
+            return m + p.radius;
+        }
+    }
+    return 0.0f;
+}
+
+/// The outward normals of a shape's flat sides in world coordinates: a
+/// polygon's faces, both sides of a capsule or a segment, none for a circle.
+/// Returns how many were written to `out` (at most kMaxPolygonVertices).
+inline int shapeFaceNormals(const Shape& s, const Transform& xf, Vec2* out) {
+    switch (s.type) {
+        case ShapeType::circle: return 0;
+        case ShapeType::capsule:
+        case ShapeType::segment: {
+            const Vec2 p1 = s.type == ShapeType::capsule ? s.geometry.capsule.center1 : s.geometry.segment.point1;
+            const Vec2 p2 = s.type == ShapeType::capsule ? s.geometry.capsule.center2 : s.geometry.segment.point2;
+            const Vec2 d = rotate(xf.q, p2 - p1);
+            const float len = length(d);
+            if (!(len > 0.0f)) return 0;
+            out[0] = {-d.y / len, d.x / len};
+            out[1] = -out[0];
+            return 2;
+        }
+        case ShapeType::polygon: {
+            const Polygon& p = s.geometry.polygon;
+            for (int i = 0; i < p.count; ++i) out[i] = rotate(xf.q, p.normals[i]);
+            return p.count;
+        }
+    }
+    return 0;
+}
+
 struct ShapeCore {
     Vec2 points[kMaxPolygonVertices];
     int count = 0;

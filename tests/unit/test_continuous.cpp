@@ -63,6 +63,33 @@ TEST(Continuous, WithoutItStraightShotsStopAtSpeculativeContacts) {
     }
 }
 
+// The speculative margin is measured along the manifold's normal, which
+// between two corners points from one to the other: a box falling 0.1 m to
+// the side of a ledge, its lower corner above the ledge's upper one, closes
+// along that diagonal at 0.7 times its speed though its side never meets the
+// ledge. Struck there as an impact, it was thrown sideways. The ledge's side
+// keeps them 0.1 m apart whatever the fall, so no point may be kept
+// (contact.cpp, apartAlongASide): the box falls past untouched, with no
+// sideways speed and no spin.
+TEST(Continuous, ABoxFallingPastACornerIsNotTouched) {
+    WorldSettings s;
+    s.enableSleep = false;
+    World world(s);
+    BodyId ledge = world.createBody({});
+    world.createPolygonShape(ledge, {}, makeBox(0.5f, 0.5f));
+    // Lower-left corner at (0.6, 0.6): 0.1 m right of the ledge's side, 0.1 m above its top.
+    BodyId box = world.createBody(
+        {.type = BodyType::dynamic_body, .position = {1.1f, 1.1f}, .linearVelocity = {0.0f, -14.0f}});
+    world.createPolygonShape(box, {}, makeBox(0.5f, 0.5f));
+    for (int i = 0; i < 20; ++i) {
+        world.step(1.0f / 60.0f);
+        // Gravity acts along y alone: anything else came from a contact.
+        EXPECT_EQ(world.linearVelocity(box).x, 0.0f) << "step " << i;
+        EXPECT_EQ(world.angularVelocity(box), 0.0f) << "step " << i;
+    }
+    EXPECT_LT(world.position(box).y, -3.0f);  // it fell past (4.7 m in 20 steps)
+}
+
 // A box sliding fast along the ground (gap under the speculative distance)
 // must not be stopped by the sweep against the ground it rests on: in 0.5 s
 // at 30 m/s with friction 0 it travels 15 m.
