@@ -28,9 +28,10 @@ constexpr float kG = 10.0f;  // test::makeGround's worlds use the default gravit
 constexpr int kSide = 7;
 
 struct Landing {
-    float fastestUp = 0.0f;    ///< m/s: the largest upward speed of any box over the run
-    float speedExcess = 0.0f;  ///< m/s: the largest speed beyond a free fall from the box's highest point + the push cap
-    float sideways = 0.0f;     ///< m: the largest distance of a box of the top row from its column at the end
+    float fastestUp = 0.0f;  ///< m/s: the largest upward speed of any box over the run
+    float speedExcess =
+        0.0f;               ///< m/s: the largest speed beyond a free fall from the box's highest point + the push cap
+    float sideways = 0.0f;  ///< m: the largest distance of a box of the top row from its column at the end
     float energyRatio = 0.0f;  ///< the largest total energy over the start's
 };
 
