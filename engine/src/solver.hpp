@@ -95,7 +95,9 @@ struct SolverArrays {
     std::vector<SidePush> sidePushes;     ///< deep rows pushed sideways, in row order (deep_overlap.cpp)
     std::vector<DeepCarry> deepCarry;     ///< per deep row, in deepRows' order (contact_solver.cpp)
     std::vector<std::uint8_t> supported;  ///< per state: rests on something immovable (deep_overlap.cpp)
-    std::vector<std::uint8_t> sweeps;     ///< per state: 1 when continuous collision sweeps it (needsSweep)
+    std::vector<std::uint8_t>
+        pushedOffFixed;                ///< per state: has a deep row against an immovable body (deep_overlap.cpp)
+    std::vector<std::uint8_t> sweeps;  ///< per state: 1 when continuous collision sweeps it (needsSweep)
     std::vector<int> supportStart, supportAbove, supportQueue;  ///< deep_overlap.cpp's lists of what rests on what
     std::vector<RollingConstraint> rolling;         ///< contacts with rolling resistance (contact_solver.cpp)
     ScratchArray<WideContactBlock> wideContacts;    ///< the coloured contact rows four at a time (wide_contact.cpp)
