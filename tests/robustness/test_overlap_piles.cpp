@@ -288,9 +288,9 @@ TEST(OverlapPiles, FiftyCapsulesAtOnePointAreNotThrown) {
 // 50 boxes created at one point 3 m up (seed 20012): once the pile rested on
 // the ground, a box whose velocity stayed at zero was pushed up on
 // pseudo-velocities from 2.7 to 3.7 m, 0.45 m above the highest it had been,
-// and rose 0.66 m above where it was created. A supported body is now lifted
-// back to the highest it has been at most, unless a row pushes it out of
-// something that cannot move (deep_overlap.cpp): 0.46 m. The bounds
+// and rose 0.66 m above where it was created. No body is now lifted above
+// the highest it has been, unless a row pushes it out of something that
+// cannot move (deep_overlap.cpp). The bounds
 // for rise and energy, no tolerance added. (Not its 2 cm at 2 s: 11 cm;
 // docs/validation.md, "Variants beyond the layouts".)
 TEST(OverlapPiles, ABoxOfAPileAtRestIsNotPushedAboveItsHighest) {

@@ -111,33 +111,35 @@ TEST(DeepPush, WithoutGravityTwiceTheCapInEveryDirection) {
 
 // The same row stood on end: the first body 0.5 m deep in something
 // immovable below it, each of the others 0.5 m deep in the one below, all
-// supported and at rest. A supported body is lifted back to the highest it
-// has been at most (deep_overlap.cpp): at its highest it is not lifted at
-// all, however hard the rows below push, and 1 m below it the cap applies.
-// The first body, pushed out of what cannot move, is lifted either way.
-TEST(DeepPush, ASupportedBodyIsLiftedBackToItsHighestAtMost) {
+// at rest. No body is lifted above the highest it has been
+// (deep_overlap.cpp): at its highest a body is not lifted at all, however
+// hard the rows below push, whether it rests on something or not, and 1 m
+// below it the cap applies. The first body, pushed out of what cannot move,
+// is lifted either way.
+TEST(DeepPush, ABodyIsLiftedBackToItsHighestAtMost) {
     const float c = WorldSettings{}.maxPushSpeed;
     const float h = 1.0f / 240.0f;
-    for (float below : {0.0f, 1.0f}) {
-        WorldState w({}, 1);
-        deepRow(w, {0.0f, -10.0f}, true);
-        for (int r = 0; r < kBodies; ++r) {
-            w.solver.constraints[static_cast<std::size_t>(r)].normal = {0.0f, 1.0f};
-            w.bodies[w.solver.stateBodies[static_cast<std::size_t>(r)]].highest = below;  // centres at 0
+    for (bool supported : {true, false})
+        for (float below : {0.0f, 1.0f}) {
+            WorldState w({}, 1);
+            deepRow(w, {0.0f, -10.0f}, supported);
+            for (int r = 0; r < kBodies; ++r) {
+                w.solver.constraints[static_cast<std::size_t>(r)].normal = {0.0f, 1.0f};
+                w.bodies[w.solver.stateBodies[static_cast<std::size_t>(r)]].highest = below;  // centres at 0
+            }
+            pushDeepOverlaps(w, h);
+            const std::vector<Vec2>& v = w.solver.biasV;
+            // Lifted, within the cap (the rows above it push back on it: 2.05 m/s).
+            EXPECT_GT(v[0].y, 0.5f * c) << below << " m below its highest";
+            EXPECT_LE(v[0].y, c + kRounding) << below << " m below its highest";
+            for (std::size_t i = 1; i < kBodies; ++i) {
+                EXPECT_EQ(v[i].x, 0.0f);
+                if (below == 0.0f)
+                    EXPECT_EQ(v[i].y, 0.0f) << "body " << i << " at its highest, supported " << supported;
+                else
+                    EXPECT_NEAR(v[i].y, c, kRounding) << "body " << i << ", 1 m below its highest";
+            }
         }
-        pushDeepOverlaps(w, h);
-        const std::vector<Vec2>& v = w.solver.biasV;
-        // Lifted, within the cap (the rows above it push back on it: 2.05 m/s).
-        EXPECT_GT(v[0].y, 0.5f * c) << below << " m below its highest";
-        EXPECT_LE(v[0].y, c + kRounding) << below << " m below its highest";
-        for (std::size_t i = 1; i < kBodies; ++i) {
-            EXPECT_EQ(v[i].x, 0.0f);
-            if (below == 0.0f)
-                EXPECT_EQ(v[i].y, 0.0f) << "body " << i << " at its highest";
-            else
-                EXPECT_NEAR(v[i].y, c, kRounding) << "body " << i << ", 1 m below its highest";
-        }
-    }
 }
 
 }  // namespace
