@@ -102,6 +102,29 @@ void reportHit(WorldState& w, const Contact& ct) {
         {w.shapeHandle(ct.shapeA), w.shapeHandle(ct.shapeB), m.points[best].point, m.normal, fastest});
 }
 
+/// Whether a flat side of either shape keeps the two further apart than
+/// `margin` through the step of length dt, each body closing along that
+/// side's normal at most as fast as at the step's start (its turn moving
+/// its surface by up to |ω|·reach), as in computeManifold's bound: the
+/// separating axis then holds for the whole step.
+bool apartAlongASide(const Shape& sa, const Body& A, const Shape& sb, const Body& B, float dt, float margin) {
+    const float turnA = std::abs(A.w) * std::max(A.reach, 0.0f);
+    const float turnB = std::abs(B.w) * std::max(B.reach, 0.0f);
+    auto apart = [&](Vec2 u) {  // u points from A towards B
+        const float gap = -shapeSupport(sb, B.xf, -u) - shapeSupport(sa, A.xf, u);
+        const float closing = std::max(dot(A.v, u), 0.0f) + turnA + std::max(-dot(B.v, u), 0.0f) + turnB;
+        return gap - dt * closing > margin;
+    };
+    Vec2 normals[kMaxPolygonVertices];
+    int count = shapeFaceNormals(sa, A.xf, normals);
+    for (int i = 0; i < count; ++i)
+        if (apart(normals[i])) return true;
+    count = shapeFaceNormals(sb, B.xf, normals);
+    for (int i = 0; i < count; ++i)
+        if (apart(-normals[i])) return true;
+    return false;
+}
+
 // The speculative margin of a pair of moving bodies follows their motion. A
 // point is kept while its gap is within the fixed speculative distance plus
 // how far the two bodies can close at that point within this step: the solver's
@@ -130,29 +153,6 @@ void reportHit(WorldState& w, const Contact& ct) {
 // into a local and then copied into the contact was written in 4-byte pieces
 // and read back in 16-byte ones at once, a store-forwarding stall per
 // contact that was a quarter of the manifold update's time in rain1000.
-/// Whether a flat side of either shape keeps the two further apart than
-/// `margin` through the step of length dt, each body closing along that
-/// side's normal at most as fast as at the step's start (its turn moving
-/// its surface by up to |ω|·reach), as in computeManifold's bound: the
-/// separating axis then holds for the whole step.
-bool apartAlongASide(const Shape& sa, const Body& A, const Shape& sb, const Body& B, float dt, float margin) {
-    const float turnA = std::abs(A.w) * std::max(A.reach, 0.0f);
-    const float turnB = std::abs(B.w) * std::max(B.reach, 0.0f);
-    auto apart = [&](Vec2 u) {  // u points from A towards B
-        const float gap = -shapeSupport(sb, B.xf, -u) - shapeSupport(sa, A.xf, u);
-        const float closing = std::max(dot(A.v, u), 0.0f) + turnA + std::max(-dot(B.v, u), 0.0f) + turnB;
-        return gap - dt * closing > margin;
-    };
-    Vec2 normals[kMaxPolygonVertices];
-    int count = shapeFaceNormals(sa, A.xf, normals);
-    for (int i = 0; i < count; ++i)
-        if (apart(normals[i])) return true;
-    count = shapeFaceNormals(sb, B.xf, normals);
-    for (int i = 0; i < count; ++i)
-        if (apart(-normals[i])) return true;
-    return false;
-}
-
 void computeManifold(const WorldState& w, const Contact& c, Manifold& m) {
     const Shape& sa = w.shapes[c.shapeA];
     const Shape& sb = w.shapes[c.shapeB];

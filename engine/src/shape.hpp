@@ -117,7 +117,6 @@ inline std::optional<MassData> shapeMass(const Shape& s) {
     return std::nullopt;
 }
 
-/// A shape as a convex core (points) and a radius, for the distance function.
 /// The largest d·x over a shape's points in world coordinates (its support
 /// along d, rounding included).
 inline float shapeSupport(const Shape& s, const Transform& xf, Vec2 d) {
@@ -167,6 +166,7 @@ inline int shapeFaceNormals(const Shape& s, const Transform& xf, Vec2* out) {
     return 0;
 }
 
+/// A shape as a convex core (points) and a radius, for the distance function.
 struct ShapeCore {
     Vec2 points[kMaxPolygonVertices];
     int count = 0;

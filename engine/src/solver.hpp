@@ -89,15 +89,14 @@ struct SolverArrays {
     bool pushTrees = false;                  ///< an exact tree is pushed this step (TreeNode::pushed)
     /// Per wide block: a hinge of it became a deep joint (refreshWideRevolutes).
     std::vector<std::uint8_t> wideDeep;
-    bool anyDeepOverlap = false;          ///< some row overlaps deeper than kDeepOverlap this step
-    bool anyRollingRow = false;           ///< some row gets a rolling-resistance row this step
-    std::vector<int> deepRows;            ///< the rows that do, ascending (contact_solver.cpp)
-    std::vector<SidePush> sidePushes;     ///< deep rows pushed sideways, in row order (deep_overlap.cpp)
-    std::vector<DeepCarry> deepCarry;     ///< per deep row, in deepRows' order (contact_solver.cpp)
-    std::vector<std::uint8_t> supported;  ///< per state: rests on something immovable (deep_overlap.cpp)
-    std::vector<std::uint8_t>
-        pushedOffFixed;                ///< per state: has a deep row against an immovable body (deep_overlap.cpp)
-    std::vector<std::uint8_t> sweeps;  ///< per state: 1 when continuous collision sweeps it (needsSweep)
+    bool anyDeepOverlap = false;               ///< some row overlaps deeper than kDeepOverlap this step
+    bool anyRollingRow = false;                ///< some row gets a rolling-resistance row this step
+    std::vector<int> deepRows;                 ///< the rows that do, ascending (contact_solver.cpp)
+    std::vector<SidePush> sidePushes;          ///< deep rows pushed sideways, in row order (deep_overlap.cpp)
+    std::vector<DeepCarry> deepCarry;          ///< per deep row, in deepRows' order (contact_solver.cpp)
+    std::vector<std::uint8_t> supported;       ///< per state: rests on something immovable (deep_overlap.cpp)
+    std::vector<std::uint8_t> pushedOffFixed;  ///< per state: pushed out of something immovable (deep_overlap.cpp)
+    std::vector<std::uint8_t> sweeps;          ///< per state: 1 when continuous collision sweeps it (needsSweep)
     std::vector<int> supportStart, supportAbove, supportQueue;  ///< deep_overlap.cpp's lists of what rests on what
     std::vector<RollingConstraint> rolling;         ///< contacts with rolling resistance (contact_solver.cpp)
     ScratchArray<WideContactBlock> wideContacts;    ///< the coloured contact rows four at a time (wide_contact.cpp)

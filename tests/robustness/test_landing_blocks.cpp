@@ -28,10 +28,9 @@ constexpr float kG = 10.0f;  // test::makeGround's worlds use the default gravit
 constexpr int kSide = 7;
 
 struct Landing {
-    float fastestUp = 0.0f;  ///< m/s: the largest upward speed of any box over the run
-    float speedExcess =
-        0.0f;               ///< m/s: the largest speed beyond a free fall from the box's highest point + the push cap
-    float sideways = 0.0f;  ///< m: the largest distance of a box of the top row from its column at the end
+    float fastestUp = 0.0f;    ///< m/s: the largest upward speed of any box over the run
+    float speedExcess = 0.0f;  ///< m/s: the largest speed beyond a free fall from its highest point + the cap
+    float sideways = 0.0f;     ///< m: the largest distance of a box of the top row from its column at the end
     float energyRatio = 0.0f;  ///< the largest total energy over the start's
 };
 
@@ -84,16 +83,17 @@ Landing dropGrid(float gap, float jitter, unsigned seed) {
 
 void print(const Landing& r, const char* what) {
     std::printf("[figure] %s: fastest up %.2f m/s, speed beyond free fall + cap %+.2f m/s, top row %.3f m from its "
-                "columns, energy %.4f x start\n",
+                "columns, energy %.6f x start\n",
                 what, r.fastestUp, r.speedExcess, r.sideways, r.energyRatio);
 }
 
 // Issue #13's bound for piles: no body faster than a free fall from the
 // highest point it reached plus the push cap; and passive, never above the
-// start (0.1 % for rounding in a sum of 49 energies of about 700 J each).
+// start: the landing can only take energy away, and 10⁻⁴ covers the rounding
+// of positions and velocities held in floats (about 10⁻⁷ of each term).
 void expectNotThrown(const Landing& r, const char* what) {
     EXPECT_LE(r.speedExcess, 0.0f) << what;
-    EXPECT_LT(r.energyRatio, 1.001f) << what;
+    EXPECT_LE(r.energyRatio, 1.0001f) << what;
 }
 
 // With gaps, the corners of diagonal neighbours are 0.14 m apart and fall
