@@ -24,7 +24,8 @@ struct Shape;
 
 struct Body {
     // What the solver's preparation reads of every body, every step (joint
-    // slots, contact rows), in the first cache line.
+    // slots, contact rows), and what the narrowphase reads of both bodies of
+    // every contact (pose, velocities, reach), in the first 64 bytes.
     Transform xf{};                ///< origin and rotation
     Vec2 center{};                 ///< centre of mass, world
     Vec2 localCenter{};            ///< centre of mass, body frame
@@ -37,13 +38,6 @@ struct Body {
     bool isBullet = false;  ///< also swept against non-bullet dynamic bodies (continuous.cpp)
     Vec2 v{};               ///< velocity of the centre of mass (m/s)
     float w = 0.0f;         ///< angular velocity (rad/s)
-    Vec2 force{};           ///< accumulated for the next step (N)
-    float torque = 0.0f;    ///< N·m
-    float mass = 0.0f;
-    float inertia = 0.0f;  ///< about the centre of mass
-    float linearDamping = 0.0f, angularDamping = 0.0f;
-    float gravityScale = 1.0f;
-    float sleepTime = 0.0f;  ///< seconds at rest (island.cpp)
     /// Farthest core point of a solid shape from the centre of mass (m); −1
     /// when the body has no solid shape. Bounds how far a turn moves its
     /// surface (continuous.cpp, a kept manifold's reuse, the speculative
@@ -51,6 +45,13 @@ struct Body {
     /// body's (from its origin) grows as shapes are added and stays when one
     /// is destroyed, an upper bound that every reader may take.
     float reach = -1.0f;
+    Vec2 force{};         ///< accumulated for the next step (N)
+    float torque = 0.0f;  ///< N·m
+    float mass = 0.0f;
+    float inertia = 0.0f;  ///< about the centre of mass
+    float linearDamping = 0.0f, angularDamping = 0.0f;
+    float gravityScale = 1.0f;
+    float sleepTime = 0.0f;  ///< seconds at rest (island.cpp)
     /// The highest its centre of mass has been, along −gravity, at the end of
     /// a step (m; −∞ before its first step). A push between bodies does not
     /// lift a body above it (deep_overlap.cpp).

@@ -133,6 +133,35 @@ TEST(CircleCircle, NormalFromAToBAndCoincidentCentres) {
     ASSERT_EQ(m.pointCount, 1);
     EXPECT_NEAR(length(m.normal), 1.0f, kTol);
     EXPECT_NEAR(m.points[0].separation, -1.0f, kTol);
+    // Coincident centres: A's own up, turned with A (here by 90°: −x).
+    m = collideCircles(b, at(3, 4, kPi / 2), b, at(3, 4), kSpec);
+    expectNormal(m, {-1, 0});
+}
+
+TEST(CircleCircle, FarFromTheOriginAsPreciseAsNearIt) {
+    // Two circles with offset centres on turned bodies about 1 cm apart, at the
+    // origin and at (80000, −70000), where a float's spacing is 7.8 mm
+    // (HARD_CASES's Far Recovery): world centres subtracted there would be
+    // off by up to that; the bodies' origins subtracted first are exact
+    // (Sterbenz), so the far pair's separation matches the near one's to the
+    // rounding of the small offsets (kTol).
+    const Circle a{{0.3f, 0.1f}, 0.5f};
+    const Circle b{{-0.2f, 0.0f}, 0.25f};
+    const float turnA = 0.7f, turnB = -1.1f;
+    const Vec2 aCentre = rotate(makeRot(turnA), a.center);
+    const Vec2 bCentre = rotate(makeRot(turnB), b.center);
+    // B's origin 0.765625 m right of and 0.0625 m above A's: multiples of
+    // the far spacing, so both bodies sit exactly where the test puts them.
+    const Vec2 bOrigin{0.765625f, 0.0625f};
+    const Vec2 d = bOrigin + bCentre - aCentre;
+    const float separation = length(d) - 0.75f;  // 0.0118 m
+    for (const Vec2 origin : {Vec2{0.0f, 0.0f}, Vec2{80000.0f, -70000.0f}}) {
+        const Manifold m = collideCircles(a, at(origin.x, origin.y, turnA), b,
+                                          at(origin.x + bOrigin.x, origin.y + bOrigin.y, turnB), kSpec);
+        ASSERT_EQ(m.pointCount, 1);
+        EXPECT_NEAR(m.points[0].separation, separation, kTol) << origin.x;
+        expectNormal(m, normalize(d));
+    }
 }
 
 // ------------------------------------------------------ capsule–circle ----
