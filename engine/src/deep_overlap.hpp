@@ -35,6 +35,15 @@ struct SidePush {
     float invMassA, invMassB;  ///< how the row splits the move between A and B (prepareDeepOverlaps)
 };
 
+/// A deep contact's push impulses at the end of a step, which the next step's
+/// push starts from (pushDeepOverlaps).
+struct PushCarry {
+    int contact;  ///< slot, with its shapes (a slot reused by another pair is not matched)
+    int shapeA, shapeB;
+    bool sideways;     ///< pushed as a SidePush (its impulse in impulse[0])
+    float impulse[2];  ///< per point, as ContactPointConstraint::biasImpulse
+};
+
 /// Once per step, after the rows are prepared, in a step with a deep overlap:
 /// which deep rows are pushed sideways (SolverArrays::sidePushes).
 void prepareDeepOverlaps(WorldState& w);

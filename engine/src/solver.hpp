@@ -96,7 +96,11 @@ struct SolverArrays {
     std::vector<DeepCarry> deepCarry;          ///< per deep row, in deepRows' order (contact_solver.cpp)
     std::vector<std::uint8_t> supported;       ///< per state: rests on something immovable (deep_overlap.cpp)
     std::vector<std::uint8_t> pushedOffFixed;  ///< per state: pushed out of something immovable (deep_overlap.cpp)
-    std::vector<std::uint8_t> sweeps;          ///< per state: 1 when continuous collision sweeps it (needsSweep)
+    /// The deep pushes' impulses of this step's deep rows (in deepRows' order)
+    /// and the last step's (deep_overlap.cpp), and the step that filled them in.
+    std::vector<PushCarry> pushCarry, pushCarryLast;
+    std::uint32_t pushCarryStamp = 0;
+    std::vector<std::uint8_t> sweeps;  ///< per state: 1 when continuous collision sweeps it (needsSweep)
     std::vector<int> supportStart, supportAbove, supportQueue;  ///< deep_overlap.cpp's lists of what rests on what
     std::vector<RollingConstraint> rolling;         ///< contacts with rolling resistance (contact_solver.cpp)
     ScratchArray<WideContactBlock> wideContacts;    ///< the coloured contact rows four at a time (wide_contact.cpp)
