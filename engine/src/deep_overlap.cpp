@@ -111,7 +111,7 @@ constexpr float kUnsupportedSidewaysPushFactor = 3.0f;
 // different, unconverged answer each time for a pile's rows, which push
 // across each other in every direction: bodies wedged between two others
 // were pushed left in one step and right in the next, and 50 boxes created at
-// one point 1 m up spread 48 m along the ground but were still 0.6 to 1.1 m
+// one point 1 m up spread 40 m along the ground but were still 0.6 to 0.8 m
 // deep after 5 s, apart only at 8.9 to 10.3 s. The push warm-started as the
 // velocity rows are keeps one answer from step to step. Over the pile
 // batteries (docs/validation.md, "Pushes that remember"), half of the last

@@ -1143,7 +1143,7 @@ int main(int argc, char** argv) {
           "### Pushes that remember\n"
           "\n"
           "50 boxes created at one point 1 m up land at once and spread along the ground: after 5 s they lay\n"
-          "48 m wide, yet still 0.6 to 1.1 m deep, and were apart only after 8.9 to 10.3 s (seeds 1 to 5;\n"
+          "40 m wide, yet still 0.6 to 0.8 m deep (seeds 1 to 3), and were apart only after 8.9 to 10.3 s (seeds 1 to 5;\n"
           "circles 4.4 to 5.0 s, capsules 5.9 to 6.4 s). Followed step by step, a box wedged between two\n"
           "others half a box up was pushed left at 2.1 to 2.5 m/s in one step and right at 1.9 m/s in the\n"
           "step before: its position did not move. The deep push (deep_overlap.cpp) started every substep's\n"
