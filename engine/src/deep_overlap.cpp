@@ -131,6 +131,24 @@ void forEachDeepRow(SolverArrays& s, F&& f) {
     }
 }
 
+/// A sideways push's impulse P (along its axis) on the two bodies' pseudo-velocities.
+void applySidePush(SolverArrays& s, const ContactConstraint& cc, const SidePush& sp, Vec2 P) {
+    Vec2& vA = s.biasV[static_cast<std::size_t>(cc.a)];
+    Vec2& vB = s.biasV[static_cast<std::size_t>(cc.b)];
+    vA = mulSub(vA, sp.invMassA, P);
+    vB = mulAdd(vB, sp.invMassB, P);
+}
+
+/// A point's push impulse P (along the normal) on the two bodies' pseudo-velocities.
+void applyPointPush(SolverArrays& s, const ContactConstraint& cc, const ContactPointConstraint& cp, Vec2 P) {
+    Vec2& vA = s.biasV[static_cast<std::size_t>(cc.a)];
+    Vec2& vB = s.biasV[static_cast<std::size_t>(cc.b)];
+    vA = mulSub(vA, cc.invMassA, P);
+    s.biasW[static_cast<std::size_t>(cc.a)] -= cc.invIA * cross(cp.rA, P);
+    vB = mulAdd(vB, cc.invMassB, P);
+    s.biasW[static_cast<std::size_t>(cc.b)] += cc.invIB * cross(cp.rB, P);
+}
+
 /// Whether bodies a and b also touch through a contact other than c (bodies
 /// of several shapes).
 bool touchElsewhere(const WorldState& w, int c, int a, int b) {
@@ -307,51 +325,33 @@ void pushDeepOverlaps(WorldState& w, float h) {
     // The warm start: each row's impulse so far (from the last substep, or
     // carried from the last step by prepareDeepOverlaps) applied first.
     forEachDeepRow(s, [&](const ContactConstraint& cc, const SidePush* sp) {
-        Vec2& vA = s.biasV[static_cast<std::size_t>(cc.a)];
-        Vec2& vB = s.biasV[static_cast<std::size_t>(cc.b)];
         if (sp) {
-            const Vec2 P = cc.points[0].biasImpulse * sp->axis;
-            vA = mulSub(vA, sp->invMassA, P);
-            vB = mulAdd(vB, sp->invMassB, P);
+            applySidePush(s, cc, *sp, cc.points[0].biasImpulse * sp->axis);
             return;
         }
-        for (int j = 0; j < cc.pointCount; ++j) {
-            const ContactPointConstraint& cp = cc.points[j];
-            const Vec2 P = cp.biasImpulse * cc.normal;
-            vA = mulSub(vA, cc.invMassA, P);
-            s.biasW[static_cast<std::size_t>(cc.a)] -= cc.invIA * cross(cp.rA, P);
-            vB = mulAdd(vB, cc.invMassB, P);
-            s.biasW[static_cast<std::size_t>(cc.b)] += cc.invIB * cross(cp.rB, P);
-        }
+        for (int j = 0; j < cc.pointCount; ++j)
+            applyPointPush(s, cc, cc.points[j], cc.points[j].biasImpulse * cc.normal);
     });
     for (int sweep = 0; sweep < kPushSweeps; ++sweep) {
-        std::size_t nextSide = 0;
-        for (int r : s.deepRows) {  // ascending, as the rows
-            ContactConstraint& cc = s.constraints[static_cast<std::size_t>(r)];
-            if (nextSide < s.sidePushes.size() && s.sidePushes[nextSide].row == r) {
+        forEachDeepRow(s, [&](ContactConstraint& cc, const SidePush* sp) {  // ascending, as the rows
+            if (sp) {
                 // Pushed sideways (prepareDeepOverlaps): one row through the
                 // centres, on the two bodies' translation, until B has moved
                 // the clearing distance along the axis.
-                const SidePush& sp = s.sidePushes[nextSide++];
-                Vec2& vA = s.biasV[static_cast<std::size_t>(cc.a)];
-                Vec2& vB = s.biasV[static_cast<std::size_t>(cc.b)];
-                const float sep = dot(states[cc.b].dp - states[cc.a].dp, sp.axis) - sp.depth;
+                const Vec2 vA = s.biasV[static_cast<std::size_t>(cc.a)];
+                const Vec2 vB = s.biasV[static_cast<std::size_t>(cc.b)];
+                const float sep = dot(states[cc.b].dp - states[cc.a].dp, sp->axis) - sp->depth;
                 const float target = std::max(std::min(-cc.biasRate * sep, cap), 0.0f);
-                const float mass = 1.0f / (sp.invMassA + sp.invMassB);
+                const float mass = 1.0f / (sp->invMassA + sp->invMassB);
                 ContactPointConstraint& cp = cc.points[0];
-                const float accumulated = std::max(cp.biasImpulse - mass * (dot(vB - vA, sp.axis) - target), 0.0f);
-                const Vec2 P = (accumulated - cp.biasImpulse) * sp.axis;
+                const float accumulated = std::max(cp.biasImpulse - mass * (dot(vB - vA, sp->axis) - target), 0.0f);
+                const Vec2 P = (accumulated - cp.biasImpulse) * sp->axis;
                 cp.biasImpulse = accumulated;
-                vA = mulSub(vA, sp.invMassA, P);
-                vB = mulAdd(vB, sp.invMassB, P);
-                continue;
+                applySidePush(s, cc, *sp, P);
+                return;
             }
             const BodyState& sA = states[cc.a];
             const BodyState& sB = states[cc.b];
-            Vec2& vA = s.biasV[static_cast<std::size_t>(cc.a)];
-            float& wA = s.biasW[static_cast<std::size_t>(cc.a)];
-            Vec2& vB = s.biasV[static_cast<std::size_t>(cc.b)];
-            float& wB = s.biasW[static_cast<std::size_t>(cc.b)];
             const Rot qA = cc.roundA ? Rot{} : sA.dq, qB = cc.roundB ? Rot{} : sB.dq;
             const Vec2 n = cc.normal;
             const Vec2 dp = sB.dp - sA.dp;
@@ -362,18 +362,16 @@ void pushDeepOverlaps(WorldState& w, float h) {
                 // explains (none once it is closed).
                 const float sep = currentSeparation(cp, n, dp, qA, qB);
                 const float target = std::max(std::min(-cc.biasRate * sep - loadPush(cc, cp), cap), 0.0f);
-                const Vec2 dv = (vB + cross(wB, cp.rB)) - (vA + cross(wA, cp.rA));
+                const Vec2 dv =
+                    (s.biasV[static_cast<std::size_t>(cc.b)] + cross(s.biasW[static_cast<std::size_t>(cc.b)], cp.rB)) -
+                    (s.biasV[static_cast<std::size_t>(cc.a)] + cross(s.biasW[static_cast<std::size_t>(cc.a)], cp.rA));
                 // Projected Gauss-Seidel on the accumulated push impulse (≥ 0).
                 const float accumulated = std::max(cp.biasImpulse - cp.normalMass * (dot(dv, n) - target), 0.0f);
                 const float impulse = accumulated - cp.biasImpulse;
                 cp.biasImpulse = accumulated;
-                const Vec2 P = impulse * n;
-                vA = mulSub(vA, cc.invMassA, P);
-                wA -= cc.invIA * cross(cp.rA, P);
-                vB = mulAdd(vB, cc.invMassB, P);
-                wB += cc.invIB * cross(cp.rB, P);
+                applyPointPush(s, cc, cp, impulse * n);
             }
-        }
+        });
     }
     // What the next step starts from (the last substep's is the one kept),
     // into the rows' entries prepareDeepOverlaps made.
