@@ -32,14 +32,15 @@ if [ $check = 0 ]; then
   "$clang_format" -i --style=file "${files[@]}"
   exit 0
 fi
-status=0
-for f in "${files[@]}"; do
-  if ! "$clang_format" --style=file --dry-run --Werror "$f" >/dev/null 2>&1; then
-    echo "$f"
-    status=1
-  fi
-done
-if [ $status = 1 ]; then
-  echo "format.sh: the files above are not formatted (run scripts/format.sh)" >&2
+# One clang-format process for every file; each file that would change is
+# named in its diagnostics ("FILE:LINE:COL: error: code should be
+# clang-formatted").
+if report=$("$clang_format" --style=file --dry-run --Werror "${files[@]}" 2>&1 >/dev/null); then
+  exit 0
 fi
-exit $status
+printf '%s\n' "$report" | sed -n 's/^\(.*\):[0-9]*:[0-9]*: error: code should be clang-formatted.*/\1/p' | sort -u
+if ! printf '%s\n' "$report" | grep -q 'code should be clang-formatted'; then
+  printf '%s\n' "$report" >&2  # a failure other than formatting (an unreadable file)
+fi
+echo "format.sh: the files above are not formatted (run scripts/format.sh)" >&2
+exit 1
