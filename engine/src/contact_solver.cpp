@@ -549,8 +549,8 @@ constexpr int kDeepRelaxSweeps = 8;
 constexpr float kDeepRelaxTolerance = 0.003f;
 
 void relaxDeepContacts(WorldState& w, float h, SolvePass pass) {
-    sweepListedBlocks(w, h, pass, w.solver.deepBlocks, w.solver.deepBlockStart, kWideDeep, kDeepRelaxSweeps,
-                      kDeepRelaxTolerance);
+    sweepListedBlocks(w, h, pass, w.solver.deepBlocks, w.solver.deepBlockStart, kWideDeep | kWideUnloaded,
+                      kDeepRelaxSweeps, kDeepRelaxTolerance);
 }
 
 void solveContacts(WorldState& w, float h, SolvePass target) {

@@ -103,6 +103,7 @@ void releaseLostLoads(WorldState& w, std::vector<LostLoad>& lost) {
             const Vec2 push = pushOn(ct);
             if (!(dot(push, against) > 0.0f)) continue;
             const float taken = r * (ct.normalImpulse[0] + ct.normalImpulse[1]);
+            if (taken > 0.0f) w.unloadedContacts.push_back({c, w.stepStamp});
             for (int i = 0; i < 2; ++i) {
                 ct.normalImpulse[i] *= 1.0f - r;
                 ct.tangentImpulse[i] *= 1.0f - r;

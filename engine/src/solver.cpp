@@ -230,6 +230,46 @@ void listBlocks(const SolverArrays& s, std::uint32_t flag, std::vector<int>& lis
     begin.back() = static_cast<int>(list.size());
 }
 
+/// How long a contact whose load a destroyed contact or joint took away
+/// (WorldState::unloadedContacts) is relaxed again: three time constants of
+/// its soft rows (1/biasRate), by which they have pushed out all but e⁻³
+/// (5 %) of the sag the load had pressed in.
+constexpr float kUnloadedTimeConstants = 3.0f;
+
+/// The blocks relaxed again after each substep's relax sweep
+/// (relaxDeepContacts): those with a lane of a deep overlap (kWideDeep), and
+/// those with a lane of a contact whose load was taken away lately
+/// (kWideUnloaded). Such a contact's soft rows push its bodies out of the
+/// sag the load had pressed in, and one relax sweep in colour order leaves
+/// part of that push in them: three circles stacked on the ground, the top
+/// one 100 times as dense and then destroyed, left the other two rising at
+/// 0.054 and 0.059 m/s (docs/validation.md, "Warm Start Energy").
+void listRelaxedAgainBlocks(WorldState& w, const RowContext& x) {
+    SolverArrays& s = w.solver;
+    std::uint32_t flags = s.anyDeepOverlap ? kWideDeep : 0u;
+    std::vector<std::pair<int, std::uint32_t>>& unloaded = w.unloadedContacts;
+    if (!unloaded.empty()) {
+        const float steps = kUnloadedTimeConstants / std::max(x.dynamicSoft.biasRate * x.fullDt, 1e-6f);
+        std::erase_if(unloaded, [&](const std::pair<int, std::uint32_t>& u) {
+            return !(static_cast<float>(w.stepStamp - u.second) <= steps);
+        });
+    }
+    if (!unloaded.empty()) {
+        std::vector<std::uint8_t>& mark = s.unloadedSlots;
+        mark.assign(static_cast<std::size_t>(w.contacts.capacity()), 0);
+        for (const std::pair<int, std::uint32_t>& u : unloaded)
+            if (u.first >= 0 && u.first < w.contacts.capacity()) mark[static_cast<std::size_t>(u.first)] = 1;
+        for (std::size_t b = 0; b < s.wideContacts.size(); ++b)
+            for (int lane = 0; lane < 4; ++lane) {
+                const int c = s.wideContactCold[b].contact[lane];
+                if (c < 0 || mark[static_cast<std::size_t>(c)] == 0) continue;
+                s.wideContacts[b].flags[lane] |= kWideUnloaded;
+                flags |= kWideUnloaded;
+            }
+    }
+    if (flags != 0) listBlocks(s, flags, s.deepBlocks, s.deepBlockStart);
+}
+
 /// The contact rows of this step (after colourContacts). soft_step without
 /// rolling resistance solves the coloured rows four at a time: with
 /// closed-form impacts and no deep overlap each row is prepared straight
@@ -268,7 +308,7 @@ void prepareContactRows(WorldState& w, float h, bool soft) {
         };
         w.runner.run(blocks, kPackGrain, pack);
         if (anyCold.load(std::memory_order_relaxed)) listBlocks(s, kWideCold, s.coldBlocks, s.coldBlockStart);
-        if (s.anyDeepOverlap) listBlocks(s, kWideDeep, s.deepBlocks, s.deepBlockStart);
+        listRelaxedAgainBlocks(w, x);
         return;
     }
     // colourOffsets holds each colour's first row, so the next colour's is its end.
@@ -330,6 +370,7 @@ void prepareContactRows(WorldState& w, float h, bool soft) {
             packEmptyWideContactLane(s.wideContacts[k], s.wideContactCold[k], lane, x.zeroState);
     }
     if (anyCold.load(std::memory_order_relaxed)) listBlocks(s, kWideCold, s.coldBlocks, s.coldBlockStart);
+    listRelaxedAgainBlocks(w, x);
 }
 
 /// Joint sweeps in each substep's solve stage (soft_step). A chain carrying a

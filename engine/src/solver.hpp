@@ -115,10 +115,13 @@ struct SolverArrays {
     /// wideContactColourStart's groups; then the list's size): empty when
     /// no lane is cold (settleColdContacts, contact_solver.cpp).
     std::vector<int> coldBlocks, coldBlockStart;
-    /// The same for the blocks with a lane of a deep overlap (kWideDeep):
-    /// empty in a step without one, or whose rows are not in wide blocks
-    /// (relaxDeepContacts, contact_solver.cpp).
+    /// The same for the blocks with a lane of a deep overlap (kWideDeep) or
+    /// of a contact whose load was taken away lately (kWideUnloaded): empty
+    /// in a step without either, or whose rows are not in wide blocks
+    /// (relaxDeepContacts, contact_solver.cpp; listRelaxedAgainBlocks, solver.cpp).
     std::vector<int> deepBlocks, deepBlockStart;
+    std::vector<std::uint8_t>
+        unloadedSlots;                  ///< per contact slot: in WorldState::unloadedContacts (listRelaxedAgainBlocks)
     std::vector<float> listedImpulses;  ///< a listed lane's normal impulses after a sweep (contact_solver.cpp)
     int contactOverflowStart = 0;       ///< the first row of the scalar rest (the overflow group)
     /// This step sweeps the contact rows last to first (colour by colour,

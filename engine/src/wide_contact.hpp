@@ -48,6 +48,7 @@ enum WideContactFlag : std::uint32_t {
     kWideMovesA = 1u << 7,         ///< A can move (a nonzero inverse mass or inertia): the sweeps write its velocity
     kWideMovesB = 1u << 8,         ///< the same for B
     kWideCold = 1u << 9,           ///< a contact at rest without a warm start: settled (settleColdContacts)
+    kWideUnloaded = 1u << 10,      ///< a contact whose load was taken away lately: relaxed again (relaxDeepContacts)
 };
 
 /// Whether the row of a contact whose manifold got points this step

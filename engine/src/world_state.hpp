@@ -10,6 +10,7 @@
 
 #include <cmath>
 #include <cstdint>
+#include <utility>
 #include <vector>
 
 #include "body.hpp"
@@ -70,6 +71,12 @@ struct WorldState {
     /// Per body slot: its place in the lost loads being released
     /// (lost_load.cpp), −1 outside a release.
     std::vector<int> lostLoadPlace;
+    /// Contacts whose load a destroyed contact or joint took away
+    /// (releaseLostLoads): the contact slot and the stamp of the last step
+    /// before. Their soft rows push out the sag the load had pressed in, and
+    /// the relax sweep must take that push back (listRelaxedAgainBlocks,
+    /// solver.cpp); empty but for a while after such a release.
+    std::vector<std::pair<int, std::uint32_t>> unloadedContacts;
     std::vector<ContactLook> activeLooks;  ///< per active contact (contact.hpp)
 
     // Callbacks (World::setCustomFilter, setPreSolve); empty when not set.
