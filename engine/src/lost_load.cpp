@@ -103,7 +103,11 @@ void releaseLostLoads(WorldState& w, std::vector<LostLoad>& lost) {
             const Vec2 push = pushOn(ct);
             if (!(dot(push, against) > 0.0f)) continue;
             const float taken = r * (ct.normalImpulse[0] + ct.normalImpulse[1]);
-            if (taken > 0.0f) w.unloadedContacts.push_back({c, w.stepStamp});
+            if (taken > 0.0f) {
+                if (w.unloadedAt.size() < static_cast<std::size_t>(w.contacts.capacity()))
+                    w.unloadedAt.resize(static_cast<std::size_t>(w.contacts.capacity()), 0);
+                w.unloadedAt[static_cast<std::size_t>(c)] = w.lastUnloadedAt = w.stepStamp + 1;
+            }
             for (int i = 0; i < 2; ++i) {
                 ct.normalImpulse[i] *= 1.0f - r;
                 ct.tangentImpulse[i] *= 1.0f - r;

@@ -231,9 +231,9 @@ void listBlocks(const SolverArrays& s, std::uint32_t flag, std::vector<int>& lis
 }
 
 /// How long a contact whose load a destroyed contact or joint took away
-/// (WorldState::unloadedContacts) is relaxed again: three time constants of
-/// its soft rows (1/biasRate), by which they have pushed out all but e⁻³
-/// (5 %) of the sag the load had pressed in.
+/// (WorldState::unloadedAt) is relaxed again: three time constants of its
+/// soft rows (1/biasRate), by which they have pushed out all but e⁻³ (5 %)
+/// of the sag the load had pressed in.
 constexpr float kUnloadedTimeConstants = 3.0f;
 
 /// The blocks relaxed again after each substep's relax sweep
@@ -247,25 +247,23 @@ constexpr float kUnloadedTimeConstants = 3.0f;
 void listRelaxedAgainBlocks(WorldState& w, const RowContext& x) {
     SolverArrays& s = w.solver;
     std::uint32_t flags = s.anyDeepOverlap ? kWideDeep : 0u;
-    std::vector<std::pair<int, std::uint32_t>>& unloaded = w.unloadedContacts;
-    if (!unloaded.empty()) {
+    if (w.lastUnloadedAt != 0) {
         const float steps = kUnloadedTimeConstants / std::max(x.dynamicSoft.biasRate * x.fullDt, 1e-6f);
-        std::erase_if(unloaded, [&](const std::pair<int, std::uint32_t>& u) {
-            return !(static_cast<float>(w.stepStamp - u.second) <= steps);
-        });
-    }
-    if (!unloaded.empty()) {
-        std::vector<std::uint8_t>& mark = s.unloadedSlots;
-        mark.assign(static_cast<std::size_t>(w.contacts.capacity()), 0);
-        for (const std::pair<int, std::uint32_t>& u : unloaded)
-            if (u.first >= 0 && u.first < w.contacts.capacity()) mark[static_cast<std::size_t>(u.first)] = 1;
-        for (std::size_t b = 0; b < s.wideContacts.size(); ++b)
-            for (int lane = 0; lane < 4; ++lane) {
-                const int c = s.wideContactCold[b].contact[lane];
-                if (c < 0 || mark[static_cast<std::size_t>(c)] == 0) continue;
-                s.wideContacts[b].flags[lane] |= kWideUnloaded;
-                flags |= kWideUnloaded;
-            }
+        // (1 + the stamp of the step before the release: this step is w.stepStamp.)
+        auto recent = [&](std::uint32_t at) { return at != 0 && static_cast<float>(w.stepStamp + 1 - at) <= steps; };
+        if (!recent(w.lastUnloadedAt)) {
+            w.lastUnloadedAt = 0;
+        } else {
+            const std::vector<std::uint32_t>& at = w.unloadedAt;
+            for (std::size_t b = 0; b < s.wideContacts.size(); ++b)
+                for (int lane = 0; lane < 4; ++lane) {
+                    const int c = s.wideContactCold[b].contact[lane];
+                    if (c < 0 || static_cast<std::size_t>(c) >= at.size() || !recent(at[static_cast<std::size_t>(c)]))
+                        continue;
+                    s.wideContacts[b].flags[lane] |= kWideUnloaded;
+                    flags |= kWideUnloaded;
+                }
+        }
     }
     if (flags != 0) listBlocks(s, flags, s.deepBlocks, s.deepBlockStart);
 }

@@ -120,8 +120,6 @@ struct SolverArrays {
     /// in a step without either, or whose rows are not in wide blocks
     /// (relaxDeepContacts, contact_solver.cpp; listRelaxedAgainBlocks, solver.cpp).
     std::vector<int> deepBlocks, deepBlockStart;
-    std::vector<std::uint8_t>
-        unloadedSlots;                  ///< per contact slot: in WorldState::unloadedContacts (listRelaxedAgainBlocks)
     std::vector<float> listedImpulses;  ///< a listed lane's normal impulses after a sweep (contact_solver.cpp)
     int contactOverflowStart = 0;       ///< the first row of the scalar rest (the overflow group)
     /// This step sweeps the contact rows last to first (colour by colour,

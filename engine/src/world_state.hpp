@@ -10,7 +10,6 @@
 
 #include <cmath>
 #include <cstdint>
-#include <utility>
 #include <vector>
 
 #include "body.hpp"
@@ -71,12 +70,13 @@ struct WorldState {
     /// Per body slot: its place in the lost loads being released
     /// (lost_load.cpp), −1 outside a release.
     std::vector<int> lostLoadPlace;
-    /// Contacts whose load a destroyed contact or joint took away
-    /// (releaseLostLoads): the contact slot and the stamp of the last step
-    /// before. Their soft rows push out the sag the load had pressed in, and
-    /// the relax sweep must take that push back (listRelaxedAgainBlocks,
-    /// solver.cpp); empty but for a while after such a release.
-    std::vector<std::pair<int, std::uint32_t>> unloadedContacts;
+    /// Per contact slot: when a destroyed contact or joint last took the
+    /// contact's load away (releaseLostLoads), as 1 + the stamp of the step
+    /// before; 0 if never. Sized at the first such release. Its soft rows
+    /// push out the sag the load had pressed in, and the relax sweep must
+    /// take that push back (listRelaxedAgainBlocks, solver.cpp).
+    std::vector<std::uint32_t> unloadedAt;
+    std::uint32_t lastUnloadedAt = 0;      ///< the latest of unloadedAt, 0 once it is past (listRelaxedAgainBlocks)
     std::vector<ContactLook> activeLooks;  ///< per active contact (contact.hpp)
 
     // Callbacks (World::setCustomFilter, setPreSolve); empty when not set.
