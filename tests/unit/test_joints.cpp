@@ -65,18 +65,19 @@ TEST(Joints, RevolutePendulumPeriod) {
 // velocity kicked by gravity, then the position moved with the new velocity)
 // keeps H̃ = E + (h/2)·m·(g · v), h the substep, to second order, exactly in
 // free fall (E falls by ½·m·g²·h² a substep there): the velocity it holds is
-// the one over the substep, half a substep of gravity behind the position.
-// So E itself rises above its start by (h/2)·m·g·v_y while the bob rises,
-// first order in h, however passive the solver: 1.3 % of the swing's energy
-// for a 1 m pendulum on a hinge at one substep (1.0 % at two, 0.6 % at four),
-// and as much for a pendulum 4 or 16 times shorter at 2 or 4 times as many
-// substeps (the same ωh). What a solver that added energy would raise is H̃. Its next term,
-// (h²/12)·(m·g²·sin²θ + m·g·L·cos θ·θ̇²), which H̃ leaves out, changes by at
-// most (h²/12)·2·m·g² over a swing from 60° (θ̇² ≤ g/L there), 0.09 % of the
-// swing's energy m·g·L/2 for a 1 m pendulum at 60 Hz and 0.12 % for a 5 cm
-// one at 240 Hz: the bound, far below the hard-cases issue's 1 %. (Measured:
-// H̃ never above its start in any of these; the soft joint's yield only
-// takes energy out.)
+// the one over the substep, half a substep of gravity behind the position. So
+// E itself rises above its start by (h/2)·m·g·v_y while the bob rises, first
+// order in h, however passive the solver: 1.3 % of the swing's energy for a 1
+// m pendulum on a hinge at one substep (1.0 % at two, 0.6 % at four), and as
+// much for a pendulum 4 or 16 times shorter at 2 or 4 times as many substeps
+// (the same ωh). What a solver that added energy would raise is H̃. Its next
+// term, (h²/12)·(m·g²·sin²θ + m·g·L·cos θ·θ̇²), which H̃ leaves out, changes
+// by at most (h²/12)·2·m·g² over a swing from 60° (θ̇² ≤ g/L there): the
+// bound, h²·g/(3L) of the swing's energy m·g·L/2, 0.09 % for a 1 m pendulum at
+// 60 Hz and 0.12 % for a 5 cm one at 240 Hz, far below the hard-cases issue's
+// 1 % (1.9 % for the 5 cm one at 60 Hz, where ωh = 0.23 and the soft joint's
+// yield takes a tenth of the energy in 10 s). Measured: H̃ never above its
+// start in any of these; the soft joint's yield only takes energy out.
 TEST(Joints, APendulumNeverRaisesTheEnergySemiImplicitEulerKeeps) {
     for (bool hinge : {true, false})
         for (float length : {0.05f, 0.2f, 1.0f})
