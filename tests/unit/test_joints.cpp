@@ -97,12 +97,7 @@ TEST(Joints, APendulumNeverRaisesTheEnergySemiImplicitEulerKeeps) {
                     w.createDistanceJoint({.bodyA = ground, .bodyB = bob, .length = length});
                 const double m = w.mass(bob), g = kG;
                 const double h = 1.0 / 60.0 / substeps;
-                auto energy = [&] {
-                    const Vec2 v = w.linearVelocity(bob);
-                    const double om = w.angularVelocity(bob);
-                    return 0.5 * m * (double(v.x) * v.x + double(v.y) * v.y) +
-                           0.5 * w.rotationalInertia(bob) * om * om + m * g * w.worldCenterOfMass(bob).y;
-                };
+                auto energy = [&] { return test::totalEnergy(w, {bob}); };
                 auto kept = [&] { return energy() - 0.5 * h * m * g * w.linearVelocity(bob).y; };
                 const double swing = m * g * length * (1.0 - std::sin(below));
                 const double start = energy(), keptStart = kept();
