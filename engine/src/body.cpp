@@ -70,8 +70,8 @@ float solidReach(const WorldState& w, const Body& body) {
 bool jointPreventsCollision(const WorldState& w, int a, int b) {
     const Body& ba = w.bodies[a];
     const Body& bb = w.bodies[b];
-    const Body& fewer = ba.joints.size() <= bb.joints.size() ? ba : bb;
-    for (int j : fewer.joints) {
+    const int fewer = ba.jointCount <= bb.jointCount ? a : b;
+    for (int j : bodyJoints(w.joints, w.bodies[fewer], fewer)) {
         const Joint& jt = w.joints[j];
         if (!jt.collideConnected && ((jt.bodyA == a && jt.bodyB == b) || (jt.bodyA == b && jt.bodyB == a))) return true;
     }

@@ -57,13 +57,6 @@ struct Body {
     /// lift a body above it (deep_overlap.cpp).
     float highest = -std::numeric_limits<float>::infinity();
     std::uint32_t generation = 1;
-    /// The pose at the step's start, kept when a stage before the solver
-    /// moves the body (the impact stage's time-of-impact shift), so that
-    /// continuous collision sweeps the whole motion of the step; valid while
-    /// startStamp is the world's step stamp.
-    Vec2 startCenter{};
-    Rot startQ{};
-    std::uint32_t startStamp = 0;
     int awakeIndex = kNullIndex;   ///< position in IslandSet::awakeBodies
     int sleepIsland = kNullIndex;  ///< sleeping island this body belongs to
     BodyType type = BodyType::static_body;
@@ -77,10 +70,15 @@ struct Body {
     Vec2 boxOrigin{};
     Rot boxRotation{};
     float boxSlack = 0.0f;
+    int jointCount = 0;  ///< how many joints the list below holds (here, it fills what alignment would pad)
     std::uintptr_t userData = 0;
     std::vector<int> contacts;  ///< contact slots
-    std::vector<int> joints;    ///< joint slots, in creation order
+    /// The body's joints, in creation order, linked through the joints
+    /// (Joint::nextJoint; joint.hpp, bodyJoints): most bodies have none, and
+    /// a vector per body cost each 24 bytes.
+    int firstJoint = kNullIndex, lastJoint = kNullIndex;
 };
+static_assert(sizeof(Body) <= 192, "three cache lines: memory per body is held below Box2D 2.4.1's");
 
 /// A bound on |Δθ| for a rotation dq: |Δθ| ≤ (π/2)·|sin Δθ| while the turn
 /// is under a quarter, π beyond; without atan2, for the many bodies that
@@ -118,14 +116,17 @@ struct BodyIntegration {
 };
 static_assert(sizeof(BodyIntegration) == 28, "the size docs/architecture.md gives");
 
-/// Keeps the body's pose as the step's start (Body::startCenter) unless it
-/// was kept already in this step.
-inline void keepStepStart(Body& body, std::uint32_t stepStamp) {
-    if (body.startStamp == stepStamp) return;
-    body.startStamp = stepStamp;
-    body.startCenter = body.center;
-    body.startQ = body.xf.q;
-}
+/// A body's pose at the step's start, kept when a stage before the solver
+/// moves the body (the impact stage's time-of-impact shift), so that
+/// continuous collision sweeps the whole motion of the step and the contact
+/// rows see the shift; valid while stamp is the world's step stamp. Per body
+/// slot in WorldState::impactStarts, sized at the world's first strike: a
+/// world that never strikes anything keeps none (20 bytes a body).
+struct StepStart {
+    Vec2 center{};
+    Rot q{};
+    std::uint32_t stamp = 0;
+};
 
 /// Mass, centre of mass and rotational inertia from the body's shapes
 /// (parallel-axis sum); keeps the velocity of the centre of mass consistent

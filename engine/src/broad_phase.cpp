@@ -29,8 +29,10 @@ void createProxy(WorldState& w, int s) {
     if (!body.enabled) return;  // a disabled body's shapes stay out of the trees
     // Static boxes are exact: they never move, so a margin would only make
     // more pairs.
-    if (bp.fatBoxes.size() < static_cast<std::size_t>(w.shapes.capacity()))
+    if (bp.fatBoxes.size() < static_cast<std::size_t>(w.shapes.capacity())) {
+        bp.fatBoxes.reserve(w.shapes.items.capacity());  // grown as the shapes are (grownCapacity)
         bp.fatBoxes.resize(static_cast<std::size_t>(w.shapes.capacity()));
+    }
     AABB& fat = bp.fatBox(s);
     fat = fatten(speculativeBox(w, sh, body), body.type == BodyType::static_body ? 0.0f : w.settings.aabbMargin);
     w.bodies[sh.body].boxSlack = 0.0f;  // a new box: measure again

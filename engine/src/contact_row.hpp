@@ -36,10 +36,11 @@ inline bool againstImmovable(const ContactConstraint& cc) { return againstImmova
 
 /// How far the impact stage moved the material point of `b` that was at `p`
 /// when the step began (zero when it did not move the body).
-inline Vec2 startShift(const Body& b, std::uint32_t stepStamp, Vec2 p) {
-    if (b.startStamp != stepStamp) return {};
-    const Vec2 arm = p - b.startCenter;
-    return (b.center - b.startCenter) + rotate(invMulRot(b.startQ, b.xf.q), arm) - arm;
+inline Vec2 startShift(const WorldState& w, const Body& b, Vec2 p) {
+    const StepStart* start = w.shiftedStart(b);
+    if (start == nullptr) return {};
+    const Vec2 arm = p - start->center;
+    return (b.center - start->center) + rotate(invMulRot(start->q, b.xf.q), arm) - arm;
 }
 
 /// How much the impact stage's time-of-impact shifts (impact_stage.cpp) opened
@@ -53,7 +54,7 @@ inline Vec2 startShift(const Body& b, std::uint32_t stepStamp, Vec2 p) {
 /// (pushed apart it would add energy).
 inline float impactShift(const WorldState& w, int c, const Body& a, const Body& b, Vec2 p, Vec2 n) {
     if (w.startsShiftedAt != w.stepStamp) return 0.0f;  // no body's start moved in this step
-    float d = dot(startShift(b, w.stepStamp, p) - startShift(a, w.stepStamp, p), n);
+    float d = dot(startShift(w, b, p) - startShift(w, a, p), n);
     if (d == 0.0f) return 0.0f;
     const auto i = static_cast<std::size_t>(c);
     if (i < w.impactTime.size() && w.impactTime[i] >= 0.0f) {

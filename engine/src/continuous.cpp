@@ -46,7 +46,7 @@
 //
 // The sweep runs from the body's pose at the step's start: before the
 // solver's motion, or before the impact stage's time-of-impact shift when
-// that moved the body (Body::startCenter), so no part of the step's motion
+// that moved the body (StepStart, body.hpp), so no part of the step's motion
 // escapes it.
 //
 // Time of impact by conservative advancement (Mirtich, 1996, Impulse-based
@@ -151,11 +151,12 @@ struct Mover {
 /// (a landing box whose impact shifted it onto the ground is not swept).
 bool movedBeyondContacts(const WorldState& w, const Body& body, const BodyState& s) {
     const float spec = w.settings.speculativeDistance;
-    const bool shifted = body.startStamp == w.stepStamp;
-    const Rot shift = shifted ? invMulRot(body.startQ, invMulRot(s.dq, body.xf.q)) : Rot{};
+    const StepStart* start = w.shiftedStart(body);
+    const Rot shift = start != nullptr ? invMulRot(start->q, invMulRot(s.dq, body.xf.q)) : Rot{};
     const float solverBound = length(s.dp) + turnBoundOf(s.dq) * body.reach;
-    const float shiftBound = shifted ? length((body.center - s.dp) - body.startCenter) + turnBoundOf(shift) * body.reach
-                                     : 0.0f;
+    const float shiftBound = start != nullptr
+                                 ? length((body.center - s.dp) - start->center) + turnBoundOf(shift) * body.reach
+                                 : 0.0f;
     return !(solverBound <= spec && shiftBound <= spec);
 }
 
@@ -169,7 +170,7 @@ struct SweepStart {
 };
 
 SweepStart sweepStartOf(const WorldState& w, const Body& body, const BodyState& s) {
-    if (body.startStamp == w.stepStamp) return {body.startCenter, body.startQ, invMulRot(body.startQ, body.xf.q)};
+    if (const StepStart* start = w.shiftedStart(body)) return {start->center, start->q, invMulRot(start->q, body.xf.q)};
     return {body.center - s.dp, invMulRot(s.dq, body.xf.q), s.dq};
 }
 

@@ -3,13 +3,16 @@
 #include <algorithm>
 #include <cmath>
 
+#include "slot_array.hpp"
+
 namespace i2d::detail {
 
 int DynamicTree::allocateNode() {
     if (freeList_ == kNull) {
-        // Grown by half when full (not doubled): a tree of n proxies has
-        // 2n − 1 nodes, and doubling would leave up to 64 % of them unused.
-        if (nodes_.size() == nodes_.capacity()) nodes_.reserve(nodes_.size() + nodes_.size() / 2 + 16);
+        // Grown by an eighth when full (grownCapacity), not doubled: a tree
+        // of n proxies has 2n − 1 nodes, and doubling would leave up to 64 %
+        // of them unused.
+        if (nodes_.size() == nodes_.capacity()) nodes_.reserve(grownCapacity(nodes_.size()));
         nodes_.push_back(Node{});
         return static_cast<int>(nodes_.size()) - 1;
     }

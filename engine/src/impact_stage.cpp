@@ -356,6 +356,9 @@ void resolveImpacts(WorldState& w, float dt) {
     // (its struck bodies and contacts) go back to their defaults here, so a
     // step pays for what was struck, not for every slot (filled anew every
     // step, they charged 10,000 idle bodies to the 100 awake beside them).
+    // Sized at a world's first strike: until then every entry would hold its
+    // default (nothing struck), and a world that never strikes anything
+    // holds none of them (20 bytes a body slot, 4 a contact slot).
     std::vector<std::uint32_t>& changed = w.impactChanged;
     std::vector<float>& hitTime = w.impactTime;
     std::vector<float>& bodyTime = w.impactBodyTime;
@@ -368,15 +371,21 @@ void resolveImpacts(WorldState& w, float dt) {
     for (int c : w.impactStruckContacts) hitTime[static_cast<std::size_t>(c)] = -1.0f;
     w.impactStruckBodies.clear();
     w.impactStruckContacts.clear();
-    const auto bodySlots = static_cast<std::size_t>(w.bodies.capacity());
-    const auto contactSlots = static_cast<std::size_t>(w.contacts.capacity());
-    if (changed.size() < bodySlots) changed.resize(bodySlots, 0u);
-    if (bodyTime.size() < bodySlots) {
-        bodyTime.resize(bodySlots, -1.0f);
-        bodyDv.resize(bodySlots);
-        bodyDw.resize(bodySlots);
-    }
-    if (hitTime.size() < contactSlots) hitTime.resize(contactSlots, -1.0f);
+    bool sized = false;
+    auto sizeArrays = [&] {
+        if (sized) return;
+        sized = true;
+        const auto bodySlots = static_cast<std::size_t>(w.bodies.capacity());
+        const auto contactSlots = static_cast<std::size_t>(w.contacts.capacity());
+        if (changed.size() < bodySlots) changed.resize(bodySlots, 0u);
+        if (bodyTime.size() < bodySlots) {
+            bodyTime.resize(bodySlots, -1.0f);
+            bodyDv.resize(bodySlots);
+            bodyDw.resize(bodySlots);
+            w.impactStarts.resize(bodySlots);
+        }
+        if (hitTime.size() < contactSlots) hitTime.resize(contactSlots, -1.0f);
+    };
 
     const WorldSettings& settings = w.settings;
     if (settings.impactModel != ImpactModel::closed_form) return;
@@ -411,7 +420,8 @@ void resolveImpacts(WorldState& w, float dt) {
         bodyDv[i] += dv;
         bodyDw[i] += dw;
         if (move.x == 0.0f && move.y == 0.0f && turn == 0.0f) return;
-        keepStepStart(body, w.stepStamp);
+        StepStart& start = w.impactStarts[i];
+        if (start.stamp != w.stepStamp) start = {body.center, body.xf.q, w.stepStamp};
         w.startsShiftedAt = w.stepStamp;
         body.center += move;
         body.xf.q = integrateRotation(body.xf.q, turn);
@@ -432,8 +442,9 @@ void resolveImpacts(WorldState& w, float dt) {
     auto passedOver = [&](const Contact& ct) { return passesOverImpacts(w, ct, ct.touching); };
     auto stillPassedOver = [&](std::size_t i) {  // in the first sweep
         const ContactLook& l = looks[i];
-        return l.passOver && changed[static_cast<std::size_t>(l.bodyA)] != 1u &&
-               changed[static_cast<std::size_t>(l.bodyB)] != 1u;
+        // (Before the first strike no body is marked, and the arrays may be unsized.)
+        return l.passOver && (w.impactStruckBodies.empty() || (changed[static_cast<std::size_t>(l.bodyA)] != 1u &&
+                                                               changed[static_cast<std::size_t>(l.bodyB)] != 1u));
     };
 
     // Rigid clusters of welded bodies, struck as one body (findWeldClusters),
@@ -536,6 +547,7 @@ void resolveImpacts(WorldState& w, float dt) {
             }
         }
         if (count == 0) return false;
+        sizeArrays();
         const float inv = 1.0f / static_cast<float>(count);
         point = inv * point;
         gap *= inv;
@@ -668,6 +680,7 @@ void resolveImpacts(WorldState& w, float dt) {
     }
     if (!settled || heavyOnLight) {
         sweepStamp = kShockStamp;
+        sizeArrays();
         propagateShock(w, strike, threshold, kShockResidual * threshold);
     }
 }

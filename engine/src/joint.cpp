@@ -9,12 +9,55 @@
 
 namespace i2d::detail {
 
+namespace {
+
+/// Appends joint j to the list of its body on `side` (Body::firstJoint).
+void attachToBody(WorldState& w, int j, int side) {
+    Joint& jt = w.joints[j];
+    const int b = side == 0 ? jt.bodyA : jt.bodyB;
+    Body& body = w.bodies[b];
+    jt.prevJoint[side] = body.lastJoint;
+    jt.nextJoint[side] = kNullIndex;
+    if (body.lastJoint != kNullIndex) {
+        Joint& last = w.joints[body.lastJoint];
+        last.nextJoint[jointSide(last, b)] = j;
+    } else {
+        body.firstJoint = j;
+    }
+    body.lastJoint = j;
+    ++body.jointCount;
+}
+
+/// Takes joint j out of the list of its body on `side`.
+void detachFromBody(WorldState& w, int j, int side) {
+    Joint& jt = w.joints[j];
+    const int b = side == 0 ? jt.bodyA : jt.bodyB;
+    Body& body = w.bodies[b];
+    const int prev = jt.prevJoint[side], next = jt.nextJoint[side];
+    if (prev != kNullIndex) {
+        Joint& p = w.joints[prev];
+        p.nextJoint[jointSide(p, b)] = next;
+    } else {
+        body.firstJoint = next;
+    }
+    if (next != kNullIndex) {
+        Joint& n = w.joints[next];
+        n.prevJoint[jointSide(n, b)] = prev;
+    } else {
+        body.lastJoint = prev;
+    }
+    jt.prevJoint[side] = jt.nextJoint[side] = kNullIndex;
+    --body.jointCount;
+}
+
+}  // namespace
+
 void linkJoint(WorldState& w, int j) {
     w.solver.jointPlanStale = true;
     Joint& jt = w.joints[j];
     const int a = jt.bodyA, b = jt.bodyB;
-    w.bodies[a].joints.push_back(j);
-    w.bodies[b].joints.push_back(j);
+    attachToBody(w, j, 0);
+    attachToBody(w, j, 1);
     // Joined bodies that may not collide lose their contacts at once.
     if (!jt.collideConnected) {
         const std::vector<int> list = w.bodies[a].contacts;
@@ -39,9 +82,9 @@ void destroyJoint(WorldState& w, int j) {
     // The load it carried goes with it (lost_load.hpp).
     std::vector<LostLoad> lost;
     addJointLoss(w, jt, lost);
+    detachFromBody(w, j, 0);
+    detachFromBody(w, j, 1);
     for (int b : {jt.bodyA, jt.bodyB}) {
-        auto& list = w.bodies[b].joints;
-        list.erase(std::remove(list.begin(), list.end(), j), list.end());
         wakeBody(w, b);
         // The bodies may collide again: let the broadphase look.
         for (int s : bodyShapes(w.shapes, w.bodies[b])) {

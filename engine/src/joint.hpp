@@ -36,6 +36,9 @@ struct Joint {
     JointDefVariant def;  ///< as given (handles included), changed by the set…Def calls
     int bodyA = kNullIndex, bodyB = kNullIndex;
     int joint1 = kNullIndex, joint2 = kNullIndex;  ///< gear: the coupled joints
+    /// Neighbours in each body's list of joints (Body::firstJoint): [0] in
+    /// bodyA's, [1] in bodyB's.
+    int prevJoint[2] = {kNullIndex, kNullIndex}, nextJoint[2] = {kNullIndex, kNullIndex};
     /// gear: its error coordinate1 + ratio·coordinate2 − (that at creation), kept
     /// from step to step so that it follows any number of turns (gear_joint.cpp)
     float gearError = 0.0f;
@@ -212,6 +215,37 @@ struct JointContext {
     float pushFactor = 0.0f;  ///< β of baumgarte (and of split's push)
     float maxLinearSpeed = 0.0f;
 };
+
+/// Which of a joint's two lists (Joint::nextJoint) is body b's.
+inline int jointSide(const Joint& jt, int b) { return jt.bodyA == b ? 0 : 1; }
+
+/// The joints of body b, in creation order: for (int j : bodyJoints(w.joints, w.bodies[b], b)).
+class BodyJoints {
+public:
+    BodyJoints(const SlotArray<Joint>& joints, int first, int body) : joints_(&joints), first_(first), body_(body) {}
+    struct Iterator {
+        const SlotArray<Joint>* joints;
+        int body;
+        int j;
+        int operator*() const { return j; }
+        Iterator& operator++() {
+            const Joint& jt = (*joints)[j];
+            j = jt.nextJoint[jointSide(jt, body)];
+            return *this;
+        }
+        bool operator!=(const Iterator& o) const { return j != o.j; }
+    };
+    Iterator begin() const { return {joints_, body_, first_}; }
+    Iterator end() const { return {joints_, body_, kNullIndex}; }
+
+private:
+    const SlotArray<Joint>* joints_;
+    int first_;
+    int body_;
+};
+inline BodyJoints bodyJoints(const SlotArray<Joint>& joints, const Body& body, int b) {
+    return {joints, body.firstJoint, b};
+}
 
 /// Links a new joint to its bodies, drops the contacts between them when
 /// they may not collide, and wakes both.

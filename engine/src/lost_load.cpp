@@ -84,7 +84,7 @@ void releaseLostLoads(WorldState& w, std::vector<LostLoad>& lost) {
             const float along = dot(pushOn(ct), against);
             if (along > 0.0f) held += (ct.normalImpulse[0] + ct.normalImpulse[1]) * along;
         }
-        for (int j : w.bodies[b].joints) {
+        for (int j : bodyJoints(w.joints, w.bodies[b], b)) {
             const Joint& jt = w.joints[j];
             if (carriesPointLoad(jt)) held += std::max(dot(jointOn(jt), against), 0.0f);
         }
@@ -115,7 +115,7 @@ void releaseLostLoads(WorldState& w, std::vector<LostLoad>& lost) {
             const int other = ct.bodyA == b ? ct.bodyB : ct.bodyA;
             if (movable(w, other)) addLoss(w, lost, other, -taken * push, k + 1);
         }
-        for (int j : w.bodies[b].joints) {
+        for (int j : bodyJoints(w.joints, w.bodies[b], b)) {
             Joint& jt = w.joints[j];
             if (!carriesPointLoad(jt)) continue;
             const float support = dot(jointOn(jt), against);

@@ -28,6 +28,11 @@ public:
         size_ = n;
     }
     /// Frees the storage.
+    /// n copies of `value` (what a vector's assign does).
+    void assign(std::size_t n, const T& value) {
+        resizeForOverwrite(n);
+        for (std::size_t i = 0; i < n; ++i) data_.get()[i] = value;
+    }
     void release() {
         data_.reset();
         size_ = capacity_ = 0;
@@ -36,6 +41,10 @@ public:
     std::size_t capacity() const { return capacity_; }
     T& operator[](std::size_t i) { return data_.get()[i]; }
     const T& operator[](std::size_t i) const { return data_.get()[i]; }
+    T* data() { return data_.get(); }
+    const T* data() const { return data_.get(); }
+    T& back() { return data_.get()[size_ - 1]; }
+    const T& back() const { return data_.get()[size_ - 1]; }
     T* begin() { return data_.get(); }
     T* end() { return data_.get() + size_; }
     const T* begin() const { return data_.get(); }

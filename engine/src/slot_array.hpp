@@ -2,6 +2,7 @@
 // a generation per slot (the generation goes into handles, see id.hpp).
 #pragma once
 
+#include <cstddef>
 #include <cstdint>
 #include <vector>
 
@@ -13,6 +14,15 @@ inline constexpr int kNullIndex = -1;
 /// last-freed first. The storage grows by half its size when full (not
 /// std::vector's doubling): at 10,000 bodies doubling leaves up to 64 % of the
 /// slots unused, growth by half at most 50 % and usually much less.
+/// The capacity a persistent per-object array (bodies, shapes, contacts,
+/// broadphase nodes and boxes) grows to when it is full: an eighth more than
+/// it holds. Such arrays are most of what a world keeps, and half again or
+/// double, as vectors grow, left up to a third or a half of them unused (a
+/// world of 7,000 bodies held slots for 10,374; docs/performance.md,
+/// "Memory"). Each element is moved about eight times on its way to a large
+/// world instead of two or three: paid once while the world is built.
+inline std::size_t grownCapacity(std::size_t size) { return size + size / 8 + 16; }
+
 template <class T>
 struct SlotArray {
     std::vector<T> items;
@@ -28,7 +38,7 @@ struct SlotArray {
             items[static_cast<std::size_t>(i)] = T{};
             items[static_cast<std::size_t>(i)].generation = gen;
         } else {
-            if (items.size() == items.capacity()) items.reserve(items.size() + items.size() / 2 + 8);
+            if (items.size() == items.capacity()) items.reserve(grownCapacity(items.size()));
             items.emplace_back();
             i = static_cast<int>(items.size()) - 1;
         }

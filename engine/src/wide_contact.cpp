@@ -23,7 +23,7 @@ namespace {
 /// (settleColdContacts) solve contacts alone: beside a joint they would move
 /// its bodies with the joint left as it was.
 bool mayBeCold(const WorldState& w, const Contact& ct) {
-    return ct.touchBegan && w.bodies[ct.bodyA].joints.empty() && w.bodies[ct.bodyB].joints.empty();
+    return ct.touchBegan && w.bodies[ct.bodyA].jointCount == 0 && w.bodies[ct.bodyB].jointCount == 0;
 }
 
 /// Lane `lane` of block k from row cc (null: an empty lane), every field written.

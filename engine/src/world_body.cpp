@@ -62,7 +62,7 @@ void World::destroyBody(BodyId id) {
     // Joints first (they wake the other body), then shapes with their contacts.
     // One at a time from the front: destroying a joint also destroys the
     // gear joints built on it, which may be further down this list.
-    while (!w.bodies[b].joints.empty()) detail::destroyJoint(w, w.bodies[b].joints.front());
+    while (w.bodies[b].firstJoint != detail::kNullIndex) detail::destroyJoint(w, w.bodies[b].firstJoint);
     std::vector<int> shapes;
     for (int s : detail::bodyShapes(w.shapes, w.bodies[b])) shapes.push_back(s);
     for (int s : shapes) detail::destroyShape(w, s);
@@ -70,7 +70,6 @@ void World::destroyBody(BodyId id) {
     detail::leaveIsland(w, b);
     detail::Body& body = w.bodies[b];
     body.contacts.clear();
-    body.joints.clear();
     w.bodies.release(b);
 }
 
@@ -80,7 +79,7 @@ namespace {
 // The bodies at the other end of a body's joints: they start or stop being
 // held by it.
 void wakeJointPartners(detail::WorldState& w, int b) {
-    for (int j : w.bodies[b].joints) {
+    for (int j : detail::bodyJoints(w.joints, w.bodies[b], b)) {
         const detail::Joint& jt = w.joints[j];
         detail::wakeBody(w, jt.bodyA == b ? jt.bodyB : jt.bodyA);
     }
@@ -178,7 +177,7 @@ void World::setTransform(BodyId id, Vec2 position, float angle) {
     body.xf = {position, makeRot(angle)};
     body.center = transformPoint(body.xf, body.localCenter);
     detail::wakeBody(w, b);
-    for (int j : body.joints) detail::judgeStretch(w, j);  // the game may pull a joint open
+    for (int j : detail::bodyJoints(w.joints, body, b)) detail::judgeStretch(w, j);  // the game may pull a joint open
     // Bodies touching a moved static body must notice it.
     for (int c : body.contacts) {
         const detail::Contact& ct = w.contacts[c];
@@ -388,7 +387,7 @@ std::vector<ShapeId> World::bodyShapes(BodyId id) const {
 std::vector<JointId> World::bodyJoints(BodyId id) const {
     const detail::Body& body = state().bodies[state().bodyIndex(id)];
     std::vector<JointId> out;
-    for (int j : body.joints) out.push_back(state().jointHandle(j));
+    for (int j : detail::bodyJoints(state().joints, body, state().bodyIndex(id))) out.push_back(state().jointHandle(j));
     return out;
 }
 std::vector<BodyId> World::bodies() const {

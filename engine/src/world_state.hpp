@@ -52,8 +52,9 @@ struct WorldState {
     std::vector<ContactLook> collideLooks;     ///< per gathered contact: its look (contact.cpp)
     std::vector<std::uint32_t> impactChanged;
     std::vector<float> impactTime, impactBodyTime;
-    std::vector<Vec2> impactBodyDv;   ///< per body slot: its change of velocity in the impact stage
-    std::vector<float> impactBodyDw;  ///< ... and of angular velocity
+    std::vector<Vec2> impactBodyDv;       ///< per body slot: its change of velocity in the impact stage
+    std::vector<float> impactBodyDw;      ///< ... and of angular velocity
+    std::vector<StepStart> impactStarts;  ///< per body slot: its start, if the impact stage moved it (body.hpp)
     std::vector<int> impactStruckBodies, impactStruckContacts;  ///< what the last impact stage wrote
     // The impact stage's shock pass (impact_stage.cpp): scratch, kept so a
     // step allocates nothing once grown. shockLocal is per body slot, −1
@@ -94,12 +95,20 @@ struct WorldState {
     Profile profile{};
     std::uint32_t stepStamp = 0;
     /// The step stamp of the last step in which the impact stage moved a
-    /// body's start (Body::startStamp): the row preparation reads no body's
+    /// body's start (impactStarts): the row preparation reads no body's
     /// start in a step without any.
     std::uint32_t startsShiftedAt = 0;
     float stepDt = 0.0f;    ///< the step's Δt, set as it begins (the narrowphase's speculative margins)
     bool locked = false;    ///< true while stepping or drawing (see checkUnlocked)
     bool stepping = false;  ///< true inside step(): end events go to this step's lists, not the pending ones
+
+    /// The body's pose at the step's start if the impact stage moved it in
+    /// this step (StepStart), else null. `body` is one of `bodies`.
+    const StepStart* shiftedStart(const Body& body) const {
+        if (startsShiftedAt != stepStamp) return nullptr;  // no body's start moved in this step
+        const auto i = static_cast<std::size_t>(&body - bodies.items.data());
+        return i < impactStarts.size() && impactStarts[i].stamp == stepStamp ? &impactStarts[i] : nullptr;
+    }
 
     void checkUnlocked() const {
         if (locked) fail("the world cannot be changed while it is stepping or drawing");

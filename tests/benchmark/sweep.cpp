@@ -974,9 +974,9 @@ void writeMarkdown(const std::vector<SceneResult>& results, const std::vector<Sc
               "touching columns on a ground box stepped twice, minus the scattered figure, divided by the touching "
               "contacts (contact, manifold, pair set; speculative contacts that do not touch are counted "
               "in the cost but not in the divisor). This is the memory a world holds between steps: Impulse2D "
-              "frees each per-step solver array larger than 64 kB when the step ends (smaller ones are kept, so "
-              "small worlds step without allocating), as Box2D 2.4.1 keeps a 100 kB stack and allocates its "
-              "solver arrays beyond it per step. Box2D 2.4.1 takes memory from its block allocator in 16 kB "
+              "keeps its per-step arrays between steps while they hold at most 64 kB in all (so small worlds "
+              "step without allocating) and frees them when the step ends otherwise, as Box2D 2.4.1 keeps a "
+              "100 kB stack and allocates its solver arrays beyond it per step. Box2D 2.4.1 takes memory from its block allocator in 16 kB "
               "chunks, which this counts as allocated. The testbed keeps no copy of the scene description "
               "for either engine. `memory_footprint` prints the same figures alone.\n\n"
               "| engine | bytes per body | bytes per touching contact | bodies | touching contacts |\n|---|---|---|---|---|\n";

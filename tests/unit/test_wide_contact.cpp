@@ -225,6 +225,7 @@ TEST(WideContact, LanesPreparedFromContactsMatchThePackedRows) {
         std::uniform_real_distribution<float> u(-1.0f, 1.0f), m(0.05f, 3.0f), unit(0.0f, 1.0f);
         const int bodyCount = 16;
         int awake = 0;
+        w.impactStarts.resize(static_cast<std::size_t>(bodyCount));
         for (int i = 0; i < bodyCount; ++i) {
             Body& b = w.bodies[w.bodies.allocate()];
             const bool moves = i % 5 != 0;  // every fifth is static: the zero state
@@ -237,10 +238,11 @@ TEST(WideContact, LanesPreparedFromContactsMatchThePackedRows) {
             b.w = 3.0f * u(rng);
             b.solverIndex = moves ? awake++ : kNullIndex;
             if (shifted && moves && i % 3 == 0) {
-                b.startStamp = w.stepStamp;
-                b.startCenter = b.center + Vec2{0.05f * u(rng), 0.05f * u(rng)};
+                StepStart& start = w.impactStarts[static_cast<std::size_t>(i)];
+                start.stamp = w.stepStamp;
+                start.center = b.center + Vec2{0.05f * u(rng), 0.05f * u(rng)};
                 const float turn = 0.1f * u(rng);
-                b.startQ = {std::cos(turn), std::sin(turn)};
+                start.q = {std::cos(turn), std::sin(turn)};
                 b.xf.q = {std::cos(2.0f * turn), std::sin(2.0f * turn)};
             }
         }

@@ -3,6 +3,7 @@
 // operations in the same order, so the velocities and impulses must agree
 // bit for bit, in every pass, on SSE2 and on the portable path (the
 // sanitizer build compiles the engine with I2D_SCALAR_FLOAT4).
+#include <algorithm>
 #include <gtest/gtest.h>
 
 #include <random>
@@ -57,7 +58,10 @@ Case makeCase(unsigned seed, int n) {
         jc.row.revolute = RevoluteRow{};
         c.rows.push_back(jc);
     }
-    for (SolverArrays* s : {&c.wide, &c.scalar}) s->states = states;
+    for (SolverArrays* s : {&c.wide, &c.scalar}) {
+        s->states.resizeForOverwrite(states.size());
+        std::copy(states.begin(), states.end(), s->states.begin());
+    }
     // The blocks, as packWideRevolutes fills them (empty lanes on the zero state).
     for (int start = 0; start < n; start += kHingeLanes) {
         WideRevoluteBlock& k = c.wide.wideRevolutes.emplace_back();
