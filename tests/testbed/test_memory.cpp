@@ -9,10 +9,10 @@
 
 namespace {
 
-#if defined(__SANITIZE_ADDRESS__)
+#if defined(__SANITIZE_ADDRESS__) || defined(__SANITIZE_THREAD__)
 constexpr bool kSanitizedHeap = true;
 #elif defined(__has_feature)
-#if __has_feature(address_sanitizer)
+#if __has_feature(address_sanitizer) || __has_feature(thread_sanitizer) || __has_feature(memory_sanitizer)
 constexpr bool kSanitizedHeap = true;
 #else
 constexpr bool kSanitizedHeap = false;
@@ -36,7 +36,7 @@ PerObject measure(tb::EngineKind engine, int bodies) {
 }
 
 TEST(Memory, PerBodyAndPerTouchingContactAtOrBelowBox2D) {
-    if (kSanitizedHeap) GTEST_SKIP() << "the sanitizer's allocator keeps its own heap";
+    if (kSanitizedHeap) GTEST_SKIP() << "the sanitizer's allocator keeps a heap of its own";
     if (!tb::box2dAvailable()) GTEST_SKIP() << "built without the Box2D 2.4.1 backend";
     if (bench::heapInUse() == 0) GTEST_SKIP() << "no glibc heap counters (mallinfo2)";
     // From 500 bodies to 20,000: both engines' arrays grow in steps, so each

@@ -4,6 +4,7 @@
 
 #include <cmath>
 #include <limits>
+#include <vector>
 
 #include "world_fixtures.hpp"
 
@@ -39,6 +40,45 @@ TEST(WorldApi, DestroyingABodyRemovesItsShapesAndJoints) {
     EXPECT_FALSE(world.isValid(j));
     EXPECT_EQ(world.jointCount(), 0);
     EXPECT_TRUE(world.isValid(b));
+    world.step(1.0f / 60.0f);
+}
+
+// A body's joints are a list through the joints (engine/src/joint.hpp,
+// bodyJoints): in creation order, whichever side of each joint the body is,
+// through removals at its head, middle and tail and a body destroyed with
+// its joints.
+TEST(WorldApi, ABodysJointsStayInCreationOrder) {
+    World world;
+    const BodyId a = world.createBody({.type = BodyType::dynamic_body});
+    const BodyId b = world.createBody({.type = BodyType::dynamic_body, .position = {2, 0}});
+    const BodyId c = world.createBody({.type = BodyType::dynamic_body, .position = {0, 2}});
+    auto joint = [&](BodyId x, BodyId y) {
+        return world.createDistanceJoint({.bodyA = x, .bodyB = y, .length = 2.0f});
+    };
+    auto same = [](const std::vector<JointId>& got, const std::vector<JointId>& want) {
+        if (got.size() != want.size()) return false;
+        for (std::size_t i = 0; i < got.size(); ++i)
+            if (got[i].index1 != want[i].index1 || got[i].generation != want[i].generation) return false;
+        return true;
+    };
+    const JointId j1 = joint(a, b), j2 = joint(a, c), j3 = joint(b, a), j4 = joint(a, b);
+    EXPECT_TRUE(same(world.bodyJoints(a), {j1, j2, j3, j4}));
+    EXPECT_TRUE(same(world.bodyJoints(b), {j1, j3, j4}));
+    EXPECT_TRUE(same(world.bodyJoints(c), {j2}));
+    world.destroyJoint(j2);  // the middle of a's list, the whole of c's
+    EXPECT_TRUE(same(world.bodyJoints(a), {j1, j3, j4}));
+    EXPECT_TRUE(world.bodyJoints(c).empty());
+    world.destroyJoint(j1);  // the head of a's and b's
+    world.destroyJoint(j4);  // the tail of a's and b's
+    EXPECT_TRUE(same(world.bodyJoints(a), {j3}));
+    EXPECT_TRUE(same(world.bodyJoints(b), {j3}));
+    const JointId j5 = joint(c, a);  // appended after the removals (it may take a freed slot)
+    EXPECT_TRUE(same(world.bodyJoints(a), {j3, j5}));
+    world.destroyBody(b);  // takes j3 with it
+    EXPECT_FALSE(world.isValid(j3));
+    EXPECT_TRUE(same(world.bodyJoints(a), {j5}));
+    EXPECT_TRUE(same(world.bodyJoints(c), {j5}));
+    EXPECT_EQ(world.jointCount(), 1);
     world.step(1.0f / 60.0f);
 }
 
