@@ -969,7 +969,7 @@ void writeMarkdown(const std::vector<SceneResult>& results, const std::vector<Sc
     if (!memory.empty()) {
         md << "### Memory\n\nMeasured as the growth of the C library's heap in use (glibc `mallinfo2()`: heap chunks in use plus separately mapped blocks) from "
               "before a world is built to after it has stepped: per body, "
-              "10,000 boxes scattered in empty space (no contacts) stepped twice, divided by 10,000 "
+              "N boxes scattered in empty space (no contacts) stepped twice, divided by N "
               "(body, shape, broadphase proxy and what the world keeps between steps); per contact, the same boxes in "
               "touching columns on a ground box stepped twice, minus the scattered figure, divided by the touching "
               "contacts (contact, manifold, pair set; speculative contacts that do not touch are counted "
@@ -978,12 +978,20 @@ void writeMarkdown(const std::vector<SceneResult>& results, const std::vector<Sc
               "step without allocating) and frees them when the step ends otherwise, as Box2D 2.4.1 keeps a "
               "100 kB stack and allocates its solver arrays beyond it per step. Box2D 2.4.1 takes memory from its block allocator in 16 kB "
               "chunks, which this counts as allocated. The testbed keeps no copy of the scene description "
-              "for either engine. `memory_footprint` prints the same figures alone.\n\n"
-              "| engine | bytes per body | bytes per touching contact | bodies | touching contacts |\n|---|---|---|---|---|\n";
-        for (const MemoryRow& m : memory)
-            md << "| " << (m.engine == EngineKind::box2d ? "Box2D 2.4.1" : "Impulse2D") << " | "
-               << fmt("%.0f", m.perBody) << " | " << fmt("%.0f", m.perContact) << " | " << m.bodies << " | "
-               << m.contacts << " |\n";
+              "for either engine. Measured at several N: both engines' arrays grow in steps (Impulse2D's by an eighth, "
+              "Box2D 2.4.1's tree and buffers by doubling), so each N lands at another point of their growth. "
+              "`memory_footprint [N]` prints the same figures alone.\n\n"
+              "| bodies N | touching contacts | Impulse2D bytes per body | Box2D 2.4.1 bytes per body | Impulse2D "
+              "bytes per touching contact | Box2D 2.4.1 bytes per touching contact |\n|---|---|---|---|---|---|\n";
+        for (const MemoryRow& m : memory) {
+            if (m.engine != EngineKind::impulse2d) continue;
+            const MemoryRow* b = nullptr;
+            for (const MemoryRow& r : memory)
+                if (r.engine == EngineKind::box2d && r.bodies == m.bodies) b = &r;
+            md << "| " << m.bodies << " | " << m.contacts << " | " << fmt("%.0f", m.perBody) << " | "
+               << (b ? fmt("%.0f", b->perBody) : std::string("–")) << " | " << fmt("%.0f", m.perContact) << " | "
+               << (b ? fmt("%.0f", b->perContact) : std::string("–")) << " |\n";
+        }
         md << "\n";
     }
     if (!idle.empty()) {
@@ -1142,19 +1150,22 @@ int main(int argc, char** argv) {
             for (int k = 0; k < kScalingRuns; ++k) row.ms[k] = median(ms[k]);
             scaling.push_back(row);
         }
-        const int memBodies = 10000;
-        for (EngineKind kind : {EngineKind::impulse2d, EngineKind::box2d}) {
-            progress.advance(0.0, std::string("memory ") + tb::engineName(kind));
-            MemoryRow m;
-            m.engine = kind;
-            m.bodies = memBodies;
-            const std::size_t scattered = heldBytes(columnsScene(memBodies, false), kind, 2, nullptr);
-            const std::size_t columns = heldBytes(columnsScene(memBodies, true), kind, 2, &m.contacts);
-            m.perBody = static_cast<double>(scattered) / memBodies;
-            m.perContact = m.contacts > 0 ? (static_cast<double>(columns) - static_cast<double>(scattered)) / m.contacts
-                                          : 0.0;
-            memory.push_back(m);
-        }
+        // Several sizes: both engines' arrays grow in steps, so one size
+        // lands each at one point of its growth.
+        for (const int memBodies : {500, 1000, 2000, 5000, 7000, 10000, 20000})
+            for (EngineKind kind : {EngineKind::impulse2d, EngineKind::box2d}) {
+                progress.advance(0.0, std::string("memory ") + tb::engineName(kind));
+                MemoryRow m;
+                m.engine = kind;
+                m.bodies = memBodies;
+                const std::size_t scattered = heldBytes(columnsScene(memBodies, false), kind, 2, nullptr);
+                const std::size_t columns = heldBytes(columnsScene(memBodies, true), kind, 2, &m.contacts);
+                m.perBody = static_cast<double>(scattered) / memBodies;
+                m.perContact = m.contacts > 0
+                                   ? (static_cast<double>(columns) - static_cast<double>(scattered)) / m.contacts
+                                   : 0.0;
+                memory.push_back(m);
+            }
         // Long enough that the resting columns sleep for most of the run
         // (the median step is then a step with them asleep).
         const long idleSteps = 300;
