@@ -41,7 +41,7 @@ TEST(Memory, PerBodyAndPerTouchingContactAtOrBelowBox2D) {
     if (bench::heapInUse() == 0) GTEST_SKIP() << "no glibc heap counters (mallinfo2)";
     // From 500 bodies to 20,000: both engines' arrays grow in steps, so each
     // count lands at another point of their growth (Box2D 2.4.1's figures
-    // range from 610 to 844 bytes a body over these counts).
+    // range from 628 to 817 bytes a body over these counts).
     for (const int bodies : {500, 1000, 2000, 5000, 7000, 10000, 20000}) {
         const PerObject ours = measure(tb::EngineKind::impulse2d, bodies);
         const PerObject box2d = measure(tb::EngineKind::box2d, bodies);
