@@ -27,12 +27,12 @@ public:
         }
         size_ = n;
     }
-    /// Frees the storage.
     /// n copies of `value` (what a vector's assign does).
     void assign(std::size_t n, const T& value) {
         resizeForOverwrite(n);
         for (std::size_t i = 0; i < n; ++i) data_.get()[i] = value;
     }
+    /// Frees the storage.
     void release() {
         data_.reset();
         size_ = capacity_ = 0;

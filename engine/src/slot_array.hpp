@@ -10,10 +10,6 @@ namespace i2d::detail {
 
 inline constexpr int kNullIndex = -1;
 
-/// T has `bool alive` and `std::uint32_t generation`. Freed slots are reused
-/// last-freed first. The storage grows by half its size when full (not
-/// std::vector's doubling): at 10,000 bodies doubling leaves up to 64 % of the
-/// slots unused, growth by half at most 50 % and usually much less.
 /// The capacity a persistent per-object array (bodies, shapes, contacts,
 /// broadphase nodes and boxes) grows to when it is full: an eighth more than
 /// it holds. Such arrays are most of what a world keeps, and half again or
@@ -23,6 +19,9 @@ inline constexpr int kNullIndex = -1;
 /// world instead of two or three: paid once while the world is built.
 inline std::size_t grownCapacity(std::size_t size) { return size + size / 8 + 16; }
 
+/// T has `bool alive` and `std::uint32_t generation`. Freed slots are reused
+/// last-freed first. The storage grows by an eighth when full (grownCapacity),
+/// not by std::vector's doubling.
 template <class T>
 struct SlotArray {
     std::vector<T> items;

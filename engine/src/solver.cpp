@@ -665,9 +665,11 @@ void solve(WorldState& w, float dt) {
 /// 100 kB stack and allocates its solver arrays beyond it in every step).
 /// Kept one by one below 64 kB each, they added up: a world of 1,000 boxes
 /// in columns held 170 bytes a body and 80 a contact of scratch between
-/// steps. Freed and allocated again in every step (the bound at zero), the
-/// arrays cost rain1000, circle_pile1000 and pyramid100 nothing measurable
-/// (the engine alone, 8 interleaved rounds: medians 0.99 to 1.007 of before).
+/// steps. Freeing them costs a 1,000-body world a little of its step: rain1000
+/// 1.7 % against keeping every array (engine alone, 10 interleaved rounds),
+/// before states and integration were made again without zero-filling;
+/// since, its median step is 1.009 of what it was with the arrays kept one by
+/// one (docs/performance.md, "Memory at every world size").
 constexpr std::size_t kKeptScratchBytes = 64 * 1024;
 
 template <class T>

@@ -5,6 +5,8 @@
 // heap counters, not timed: the figures are the same on every run of a build.
 #include <gtest/gtest.h>
 
+#include <cstdio>
+
 #include "../benchmark/footprint.hpp"
 
 namespace {
