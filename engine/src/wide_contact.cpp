@@ -2,7 +2,7 @@
 // blocks or preparing lanes straight from the contacts, the four-lane policy
 // of the sweeps (wide_contact_kernel.hpp holds the sweeps, wide_avx2.cpp the
 // eight-lane policy), the choice between four and eight lanes, and the
-// write-back and store of the impulses.
+// write-back of the impulses into the rows.
 #include "wide_contact.hpp"
 
 #include <algorithm>
@@ -254,21 +254,6 @@ bool prepareWideContactLanes(const WorldState& w, const RowContext& x, const Wid
 
 void packEmptyWideContactLane(WideContactBlock& k, WideContactCold& cold, int lane, int zeroState) {
     packLane(k, cold, lane, nullptr, -1, zeroState);
-}
-
-void storeWideContacts(SolverArrays& s, SlotArray<Contact>& contacts, int firstBlock, int lastBlock) {
-    for (int i = firstBlock; i < lastBlock; ++i) {
-        const WideContactBlock& k = s.wideContacts[static_cast<std::size_t>(i)];
-        const WideContactCold& cold = s.wideContactCold[static_cast<std::size_t>(i)];
-        for (int lane = 0; lane < 4; ++lane) {
-            if (cold.contact[lane] < 0) continue;
-            Contact& ct = contacts[cold.contact[lane]];
-            for (int j = 0; j < ct.manifold.pointCount; ++j) {
-                ct.normalImpulse[j] = k.points[j].normalImpulse[lane];
-                ct.tangentImpulse[j] = k.points[j].tangentImpulse[lane];
-            }
-        }
-    }
 }
 
 namespace {

@@ -128,9 +128,6 @@ struct WideLaneTarget {
 bool prepareWideContactLanes(const WorldState& w, const RowContext& x, const WideLaneTarget* targets, int count);
 /// Lane `lane` of block k empty: the zero state on both sides, no points.
 void packEmptyWideContactLane(WideContactBlock& k, WideContactCold& cold, int lane, int zeroState);
-/// The accumulated impulses of blocks [firstBlock, lastBlock) into their
-/// contacts for the next step's warm start (the store of blocks without rows).
-void storeWideContacts(SolverArrays& s, SlotArray<Contact>& contacts, int firstBlock, int lastBlock);
 /// `points` (1 or 2) is the most points a lane of blocks [firstBlock,
 /// lastBlock) has: with 1, the second point's arithmetic is skipped, which
 /// changes nothing where it is absent.
