@@ -4,8 +4,11 @@
 // that epoch (acquire) sees the description and the cursors. A worker claims
 // a chunk only by compare-and-swap on a share's cursor with the epoch it read
 // the description under, so a description overwritten by a later stage is
-// never acted on. done_ counts finished items; the caller starts the next
-// stage only when it reaches the count, so no late addition reaches it.
+// never acted on. Each worker adds the items it finished to its own done_
+// count once it finds no chunk left (nothing when it ran none); the caller
+// starts the next stage only when the counts add up to the stage's, so no
+// late addition reaches the next stage's counts, which it sets to zero
+// before it publishes that stage.
 #include "stage_runner.hpp"
 
 #include <algorithm>
@@ -72,25 +75,36 @@ int StageRunner::shareBegin(int share, int count, int grain) const {
     return static_cast<int>(std::min<long long>(first * grain, count));
 }
 
-void StageRunner::workShare(int share, std::uint32_t epoch, StageFn fn, void* context, int count, int grain) {
+int StageRunner::workShare(int share, std::uint32_t epoch, StageFn fn, void* context, int count, int grain) {
     std::atomic<std::uint64_t>& claim = cursors_[share].claim;
     const int last = shareBegin(share + 1, count, grain);
+    int ran = 0;
     std::uint64_t c = claim.load(std::memory_order_acquire);
     while (static_cast<std::uint32_t>(c >> 32) == epoch) {
         const int next = static_cast<int>(c & 0xFFFFFFFFu);
-        if (next >= last) return;
+        if (next >= last) break;
         if (!claim.compare_exchange_weak(c, c + static_cast<std::uint64_t>(grain), std::memory_order_acq_rel,
                                          std::memory_order_acquire))
             continue;  // c now holds the current value
         const int end = std::min(next + grain, last);
         fn(context, next, end);
-        done_.fetch_add(end - next, std::memory_order_release);
+        ran += end - next;
         c = claim.load(std::memory_order_acquire);
     }
+    return ran;
 }
 
 void StageRunner::work(int self, std::uint32_t epoch, StageFn fn, void* context, int count, int grain) {
-    for (int i = 0; i < shares_; ++i) workShare((self + i) % shares_, epoch, fn, context, count, grain);
+    int ran = 0;
+    for (int i = 0; i < shares_; ++i) ran += workShare((self + i) % shares_, epoch, fn, context, count, grain);
+    // Released: whoever reads the count sees what these items wrote.
+    if (ran > 0) done_[self].items.fetch_add(ran, std::memory_order_release);
+}
+
+int StageRunner::doneItems() const {
+    int done = 0;
+    for (int i = 0; i < shares_; ++i) done += done_[i].items.load(std::memory_order_acquire);
+    return done;
 }
 
 void StageRunner::run(StageFn fn, void* context, int count, int grain) {
@@ -106,14 +120,14 @@ void StageRunner::run(StageFn fn, void* context, int count, int grain) {
     stage.context.store(context, std::memory_order_relaxed);
     stage.count.store(count, std::memory_order_relaxed);
     stage.grain.store(grain, std::memory_order_relaxed);
-    done_.store(0, std::memory_order_relaxed);
+    for (int i = 0; i < shares_; ++i) done_[i].items.store(0, std::memory_order_relaxed);
     for (int i = 0; i < shares_; ++i)
         cursors_[i].claim.store(std::uint64_t{epoch_} << 32 | static_cast<std::uint32_t>(shareBegin(i, count, grain)),
                                 std::memory_order_release);
     published_.store(epoch_, std::memory_order_release);
     work(0, epoch_, fn, context, count, grain);
     int spins = 0;
-    while (done_.load(std::memory_order_acquire) < count) relax(spins);
+    while (doneItems() < count) relax(spins);
 }
 
 void StageRunner::helper(int begin, int, int, void* context) {
