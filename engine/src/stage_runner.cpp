@@ -1,7 +1,11 @@
-// Stages shared among workers (see stage_runner.hpp). Memory order: the
-// caller writes a stage's description (in the slot of its epoch's parity) and
-// each share's cursor, then publishes its epoch (release); a helper that reads
-// that epoch (acquire) sees the description and the cursors. A worker claims
+// Stages shared among workers (see stage_runner.hpp). Memory order: on each
+// share's line in turn the caller writes the stage's description (in the slot
+// of its epoch's parity) and the share's cursor, then publishes the epoch
+// there (release); the helper that reads that epoch on its line (acquire)
+// sees its description and the cursors of that line and the lines before it
+// (a cursor not yet set for the stage holds an older epoch, so a helper that
+// reads it claims nothing there, and that share's own worker and the caller
+// do its items). A worker claims
 // a chunk only by compare-and-swap on a share's cursor with the epoch it read
 // the description under, so a description overwritten by a later stage is
 // never acted on. Each worker adds the items it finished to its own done_
@@ -55,7 +59,7 @@ void StageRunner::begin(TaskSystem* tasks) {
     caller_ = std::this_thread::get_id();
     // Helpers take part in every stage published after this one.
     begunAt_.store(epoch_, std::memory_order_release);
-    published_.store(epoch_, std::memory_order_release);
+    for (int i = 0; i < shares_; ++i) shareLines_[i].published.store(epoch_, std::memory_order_release);
     // Helper i (of workerCount − 1, one item each) is worker i + 1.
     handle_ = tasks->enqueue(&StageRunner::helper, tasks->workerCount() - 1, 1, this);
     handleActive_ = true;
@@ -76,7 +80,7 @@ int StageRunner::shareBegin(int share, int count, int grain) const {
 }
 
 int StageRunner::workShare(int share, std::uint32_t epoch, StageFn fn, void* context, int count, int grain) {
-    std::atomic<std::uint64_t>& claim = cursors_[share].claim;
+    std::atomic<std::uint64_t>& claim = shareLines_[share].claim;
     const int last = shareBegin(share + 1, count, grain);
     int ran = 0;
     std::uint64_t c = claim.load(std::memory_order_acquire);
@@ -115,16 +119,18 @@ void StageRunner::run(StageFn fn, void* context, int count, int grain) {
         return;
     }
     ++epoch_;
-    Stage& stage = stages_[epoch_ & 1u];
-    stage.fn.store(fn, std::memory_order_relaxed);
-    stage.context.store(context, std::memory_order_relaxed);
-    stage.count.store(count, std::memory_order_relaxed);
-    stage.grain.store(grain, std::memory_order_relaxed);
     for (int i = 0; i < shares_; ++i) done_[i].items.store(0, std::memory_order_relaxed);
-    for (int i = 0; i < shares_; ++i)
-        cursors_[i].claim.store(std::uint64_t{epoch_} << 32 | static_cast<std::uint32_t>(shareBegin(i, count, grain)),
-                                std::memory_order_release);
-    published_.store(epoch_, std::memory_order_release);
+    for (int i = 0; i < shares_; ++i) {
+        Share& line = shareLines_[i];
+        Stage& stage = line.stages[epoch_ & 1u];
+        stage.fn.store(fn, std::memory_order_relaxed);
+        stage.context.store(context, std::memory_order_relaxed);
+        stage.count.store(count, std::memory_order_relaxed);
+        stage.grain.store(grain, std::memory_order_relaxed);
+        line.claim.store(std::uint64_t{epoch_} << 32 | static_cast<std::uint32_t>(shareBegin(i, count, grain)),
+                         std::memory_order_release);
+        line.published.store(epoch_, std::memory_order_release);
+    }
     work(0, epoch_, fn, context, count, grain);
     int spins = 0;
     while (doneItems() < count) relax(spins);
@@ -147,9 +153,10 @@ void StageRunner::helper(int begin, int, int, void* context) {
     // thread collided alone while the helper spun beside it (many_pyramids on
     // two workers: the narrowphase took 1.6 to 3.3 ms against 1.6 on one).
     std::uint32_t seen = r.begunAt_.load(std::memory_order_acquire);
+    const Share& mine = r.shareLines_[self];
     int spins = 0;
     while (!r.exit_.load(std::memory_order_acquire)) {
-        const std::uint32_t epoch = r.published_.load(std::memory_order_acquire);
+        const std::uint32_t epoch = mine.published.load(std::memory_order_acquire);
         if (epoch == seen) {
             relax(spins);
             continue;
@@ -159,7 +166,7 @@ void StageRunner::helper(int begin, int, int, void* context) {
         // Stage epoch's description stays in its slot until stage epoch + 2 is
         // written, which needs epoch + 1 finished: by then every cursor holds
         // a later epoch and workShare claims nothing under a stale description.
-        const Stage& stage = r.stages_[epoch & 1u];
+        const Stage& stage = mine.stages[epoch & 1u];
         r.work(self, epoch, stage.fn.load(std::memory_order_relaxed), stage.context.load(std::memory_order_relaxed),
                stage.count.load(std::memory_order_relaxed), stage.grain.load(std::memory_order_relaxed));
     }
