@@ -279,8 +279,9 @@ void listRelaxedAgainBlocks(WorldState& w, const RowContext& x) {
 /// it in those stages, whose shares are the same parts of that order, and
 /// its cache lines stay in that worker's core. Stored block by block, in
 /// colour order, half of them were written on the other core and went back
-/// and forth every step (pyramid100 on two workers: 2.54 ms per step
-/// against 2.23, the rows' preparation 0.57 against 0.45 ms; one worker the same).
+/// and forth every step (pyramid100 on two workers, medians of 10
+/// interleaved runs: 2.47 ms per step against 2.19, the rows' preparation
+/// 0.54 against 0.45 ms; one worker the same, 2.75 against 2.70).
 void storeWideImpulses(WorldState& w, int first, int last) {
     SolverArrays& s = w.solver;
     for (int k = first; k < last; ++k) {
