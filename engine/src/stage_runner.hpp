@@ -29,9 +29,15 @@ namespace i2d::detail {
 /// the narrowphase) from which a step shares a stage with the task system's
 /// workers: below, a colour's sweep takes a few microseconds and handing it
 /// out costs more than it saves (joint_grid, 2,600 items, and rain1000,
-/// 3,000, ran slower on two workers than on one); pyramid100 (15,000) gained
-/// a fifth.
-inline constexpr int kParallelWork = 4096;
+/// 3,000, ran slower on two workers than on one); pyramid100 (20,000) gained
+/// a fifth. Columns of boxes (an awake body and a contact row each, sleeping
+/// off; one and two workers interleaved, in four runs) ran 0.87 and 0.91
+/// times as fast on two workers with 3,000 boxes (6,000 items, shared from
+/// 4,096 before) and 0.89 and 0.96 with 4,000, 0.90 to 1.23 with 5,000, 0.98
+/// to 1.26 with 7,000 and 1.13 to 1.31 with 10,000, as the machine's speed
+/// changed from run to run, on a machine where a cache line takes about 200
+/// ns to move between two cores (docs/performance.md).
+inline constexpr int kParallelWork = 8192;
 
 class StageRunner {
 public:
