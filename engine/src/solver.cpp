@@ -270,6 +270,17 @@ void listRelaxedAgainBlocks(WorldState& w, const RowContext& x) {
     if (flags != 0) listBlocks(s, flags, s.deepBlocks, s.deepBlockStart);
 }
 
+/// Where the row at place `inGroup` of coloured row group `group` lies
+/// among the wide blocks (prepareContactRows writes it there,
+/// storeWideImpulses reads it back).
+struct WideLane {
+    std::size_t block;
+    int lane;
+};
+WideLane wideLaneOf(const SolverArrays& s, std::size_t group, int inGroup) {
+    return {static_cast<std::size_t>(s.wideContactColourStart[group] + inGroup / 4), inGroup % 4};
+}
+
 /// The accumulated impulses of the wide rows of active contacts [first,
 /// last) into their contacts, for the next step's warm start (the store of
 /// blocks prepared without rows; the overflow group's scalar rows are stored
@@ -288,13 +299,12 @@ void storeWideImpulses(WorldState& w, int first, int last) {
         const int inGroup = s.rowContacts[static_cast<std::size_t>(k)];
         const std::size_t group = s.contactColours[static_cast<std::size_t>(k)];
         if (inGroup < 0 || group == kRowGroupCount) continue;
-        const std::size_t blk = static_cast<std::size_t>(s.wideContactColourStart[group] + inGroup / 4);
-        const int lane = inGroup % 4;
-        const WideContactBlock& block = s.wideContacts[blk];
+        const WideLane at = wideLaneOf(s, group, inGroup);
+        const WideContactBlock& block = s.wideContacts[at.block];
         Contact& ct = w.contacts[w.activeContacts[static_cast<std::size_t>(k)]];
         for (int j = 0; j < ct.manifold.pointCount; ++j) {
-            ct.normalImpulse[j] = block.points[j].normalImpulse[lane];
-            ct.tangentImpulse[j] = block.points[j].tangentImpulse[lane];
+            ct.normalImpulse[j] = block.points[j].normalImpulse[at.lane];
+            ct.tangentImpulse[j] = block.points[j].tangentImpulse[at.lane];
         }
     }
 }
@@ -378,8 +388,8 @@ void prepareContactRows(WorldState& w, float h, bool soft) {
                 finishContactRow(x, slop, cc);
                 continue;
             }
-            const std::size_t blk = static_cast<std::size_t>(s.wideContactColourStart[group] + inGroup / 4);
-            targets[pending++] = {contact, &s.wideContacts[blk], &s.wideContactCold[blk], inGroup % 4};
+            const WideLane at = wideLaneOf(s, group, inGroup);
+            targets[pending++] = {contact, &s.wideContacts[at.block], &s.wideContactCold[at.block], at.lane};
             if (pending == 4) {
                 cold |= prepareWideContactLanes(w, x, targets, pending);
                 pending = 0;
