@@ -10,6 +10,7 @@
 #include <cmath>
 #include <new>
 
+#include "circle_manifold.hpp"
 #include "contact_persistence.hpp"
 #include "impact_stage.hpp"
 #include "lost_load.hpp"
@@ -172,7 +173,10 @@ void computeManifold(const WorldState& w, const Contact& c, Manifold& m) {
         ::new (&m) Manifold(collideOrdered(sa, A.xf, sb, B.xf, spec));
         return;
     }
-    ::new (&m) Manifold(collideOrdered(sa, A.xf, sb, B.xf, spec + bound));
+    if (sa.type == ShapeType::circle && sb.type == ShapeType::circle)
+        writeCircleManifold(sa.geometry.circle, A.xf, sb.geometry.circle, B.xf, spec + bound, m);
+    else
+        ::new (&m) Manifold(collideOrdered(sa, A.xf, sb, B.xf, spec + bound));
     const Vec2 n = m.normal;  // from A to B
     int kept = 0;
     bool keptByMotion = false;

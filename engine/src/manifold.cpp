@@ -48,6 +48,8 @@
 
 #include "impulse2d/collision.hpp"
 
+#include "circle_manifold.hpp"
+
 namespace i2d {
 
 namespace {
@@ -489,30 +491,10 @@ Manifold collideCapsulesLocal(Vec2 p1, Vec2 q1, float rA, Vec2 p2, Vec2 q2, floa
 
 }  // namespace
 
-// In world axes: two circles have no direction of their own, so nothing is
-// gained by A's frame, and the transforms into it and back were most of the
-// work (a third of each circle contact's update in a pile of circles). The
-// difference of the two origins is taken first, as the frame would take it,
-// so nearby bodies far from the world's origin lose no precision.
 Manifold collideCircles(const Circle& a, const Transform& xfA, const Circle& b, const Transform& xfB,
                         float speculativeDistance) {
-    const Vec2 offsetA = rotate(xfA.q, a.center);
-    const Vec2 d = (xfB.p - xfA.p) + (rotate(xfB.q, b.center) - offsetA);
-    float dist = 0.0f;
-    Vec2 n = normalize(d, dist);
-    if (dist - a.radius - b.radius > speculativeDistance) return {};
-    if (n.x == 0.0f && n.y == 0.0f) {
-        n = rotate(xfA.q, Vec2{0.0f, 1.0f});  // coincident centres: A's up
-        dist = 0.0f;
-    }
     Manifold m;
-    m.normal = n;
-    const float separation = dist - a.radius - b.radius;
-    // Midway between the two surfaces along n.
-    m.points[0].point = xfA.p + mulAdd(offsetA, a.radius + 0.5f * separation, n);
-    m.points[0].separation = separation;
-    m.points[0].id = 0;
-    m.pointCount = 1;
+    detail::writeCircleManifold(a, xfA, b, xfB, speculativeDistance, m);
     return m;
 }
 
