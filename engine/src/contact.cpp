@@ -12,7 +12,7 @@
 
 #include "circle_manifold.hpp"
 #include "contact_persistence.hpp"
-#include "impact_stage.hpp"
+#include "impact_look.hpp"
 #include "lost_load.hpp"
 #include "seams.hpp"
 #include "world_state.hpp"

@@ -165,7 +165,7 @@ constexpr std::uint8_t kLookOnePoint = 2;        ///< one manifold point
 constexpr std::uint8_t kLookDeep = 4;            ///< a point deeper than kDeepOverlap
 constexpr std::uint8_t kLookRollingSurface = 8;  ///< its surface resists rolling
 /// Between two moving bodies, one at least kShockMassRatio times the other's
-/// mass, closing (lookAtImpacts, impact_stage.cpp).
+/// mass, closing (lookAtImpacts, impact_look.hpp).
 constexpr std::uint8_t kLookHeavyOnLight = 16;
 
 /// The narrowphase: updates the manifold of every contact with an awake body,

@@ -25,6 +25,7 @@
 #include <algorithm>
 #include <cmath>
 
+#include "impact_look.hpp"
 #include "impact_stage.hpp"
 #include "impulse2d/impact.hpp"
 #include "integration.hpp"
@@ -39,16 +40,6 @@ constexpr std::uint32_t kShockStamp = kMaxSweeps + 1;
 /// Passes over one level's contacts in the shock pass (a body held up by
 /// two or more below it needs a few: each strike turns it about the point).
 constexpr int kShockPasses = 8;
-/// The shock pass strikes until no contact it looks at approaches faster
-/// than this fraction of the impact threshold: what it leaves to the solver
-/// is a residual the sweeps' order made, not symmetric (two supports struck
-/// in turn leave the body turning towards the last).
-constexpr float kShockResidual = 0.01f;
-/// A contact between moving bodies whose masses differ by this factor or
-/// more has its closing stopped by the shock pass in every step, not only
-/// after an impact (lookAtImpacts): one sweep of the solver moves the
-/// heavy body by a part of its impulse as small as the ratio's inverse.
-constexpr float kShockMassRatio = 10.0f;
 
 // Timing within the step. The solver integrates by semi-implicit Euler over
 // N substeps of h = Δt/N: v_k = v_(k−1) + a·h, x_k = x_(k−1) + h·v_k, with a
@@ -321,31 +312,6 @@ void propagateShock(WorldState& w, Strike&& strike, float threshold, float resid
 }
 
 }  // namespace
-
-ImpactLook lookAtImpacts(const WorldState& w, const Contact& ct, bool touching) {
-    if (!touching || ct.isSensor || ct.manifold.pointCount == 0 || ct.overlapFromStart) return {true, false};
-    const Body& a = w.bodies[ct.bodyA];
-    const Body& b = w.bodies[ct.bodyB];
-    const float threshold = w.settings.impactThreshold;
-    // Two moving bodies, one at least kShockMassRatio times the other's mass.
-    const bool heavy = a.type == BodyType::dynamic_body && b.type == BodyType::dynamic_body && a.awake && b.awake &&
-                       a.invMass > 0.0f && b.invMass > 0.0f &&
-                       std::max(a.invMass, b.invMass) >= kShockMassRatio * std::min(a.invMass, b.invMass);
-    const float closing = heavy ? kShockResidual * threshold : threshold;
-    ImpactLook look{true, false};
-    for (int j = 0; j < ct.manifold.pointCount; ++j) {
-        const Vec2 p = ct.manifold.points[j].point;
-        const Vec2 dv = (b.v + cross(b.w, p - b.center)) - (a.v + cross(a.w, p - a.center));
-        const float vn = dot(dv, ct.manifold.normal);
-        if (vn < -closing) look.heavyOnLight = heavy;
-        if (vn < -threshold) look.passOver = false;
-    }
-    return look;  // (NaN compares false: passed over, as the full test would)
-}
-
-bool passesOverImpacts(const WorldState& w, const Contact& ct, bool touching) {
-    return lookAtImpacts(w, ct, touching).passOver;
-}
 
 void resolveImpacts(WorldState& w, float dt) {
     // changed[b] == the sweep in which body b's velocity last changed (0:
