@@ -11,6 +11,7 @@
 #include <vector>
 
 #include "impulse2d/collision.hpp"
+#include "impulse2d/impulse2d.hpp"
 
 using namespace i2d;
 
@@ -162,6 +163,48 @@ TEST(CircleCircle, FarFromTheOriginAsPreciseAsNearIt) {
         EXPECT_NEAR(m.points[0].separation, separation, kTol) << origin.x;
         expectNormal(m, normalize(d));
     }
+}
+
+// In a world the contact update writes two circles' manifold in place
+// (engine/src/circle_manifold.hpp) when the bodies move, instead of taking
+// collideCircles' result through the shape-pair table. Two circles of radius
+// 0.5 m, centres 1.01 m apart along +x, moving together at 2 m/s without
+// gravity: the step's manifold is that of their poses at the step's start
+// (the narrowphase runs before they move), by hand one point 1 cm apart,
+// normal +x, midway between the surfaces at x = 0.505; and it is exactly
+// collideCircles' (the same arithmetic, so equal to the bit).
+TEST(CircleCircle, AMovingPairInAWorldHoldsTheManifoldOfItsStartingPoses) {
+    WorldSettings settings;
+    settings.gravity = {0.0f, 0.0f};
+    settings.enableSleep = false;
+    World world(settings);
+    const Circle disc{{0.0f, 0.0f}, 0.5f};
+    const Transform xfA = at(0.0f, 0.0f), xfB = at(1.01f, 0.0f);
+    for (const Transform& xf : {xfA, xfB}) {
+        const BodyId b = world.createBody(
+            {.type = BodyType::dynamic_body, .position = xf.p, .linearVelocity = {2.0f, 0.0f}});
+        world.createCircleShape(b, ShapeDef{.density = 1.0f}, disc);
+    }
+    world.step(1.0f / 60.0f);
+    const std::vector<ContactData> contacts = world.contacts();
+    ASSERT_EQ(contacts.size(), 1u);
+    const Manifold& m = contacts[0].manifold;
+    ASSERT_EQ(m.pointCount, 1);
+    // Which body is A is the world's choice (both are circles): the normal
+    // points from A to B, so compare along the pair's own direction.
+    const float side = m.normal.x > 0.0f ? 1.0f : -1.0f;
+    expectNormal(m, {side, 0.0f});
+    EXPECT_NEAR(m.points[0].separation, 0.01f, kTol);
+    EXPECT_NEAR(m.points[0].point.x, 0.505f, kTol);
+    EXPECT_NEAR(m.points[0].point.y, 0.0f, kTol);
+    const Manifold direct = side > 0.0f ? collideCircles(disc, xfA, disc, xfB, world.settings().speculativeDistance)
+                                        : collideCircles(disc, xfB, disc, xfA, world.settings().speculativeDistance);
+    EXPECT_EQ(m.normal.x, direct.normal.x);
+    EXPECT_EQ(m.normal.y, direct.normal.y);
+    EXPECT_EQ(m.points[0].separation, direct.points[0].separation);
+    EXPECT_EQ(m.points[0].point.x, direct.points[0].point.x);
+    EXPECT_EQ(m.points[0].point.y, direct.points[0].point.y);
+    EXPECT_EQ(m.points[0].id, direct.points[0].id);
 }
 
 // ------------------------------------------------------ capsule–circle ----
