@@ -9,6 +9,8 @@
 //  * A manifold's impact point is the mean of its points that approach faster
 //    than impactThreshold and would close their gap within this step; a box
 //    landing flat is thus struck at its centre line, not corner by corner.
+//    A moving body's contacts with static pieces of one flat floor (normals
+//    within 0.8°) are struck together, as one manifold.
 //  * Contacts are swept in slot order, Gauss-Seidel fashion, each resolved with
 //    the current velocities; sweeps repeat while some contact still
 //    approaches, up to kMaxSweeps; if one still does, a shock pass follows
@@ -40,6 +42,11 @@ constexpr std::uint32_t kShockStamp = kMaxSweeps + 1;
 /// Passes over one level's contacts in the shock pass (a body held up by
 /// two or more below it needs a few: each strike turns it about the point).
 constexpr int kShockPasses = 8;
+/// A moving body's static contacts struck with one of them (a face landing
+/// across a floor's seams): those whose normals lie within 0.8° of its
+/// (cos 0.8°, the seam rule's face alignment, seams.cpp), at most this many.
+constexpr float kGroupAlignment = 0.9999f;
+constexpr int kMaxGroupedContacts = 8;
 
 // Timing within the step. The solver integrates by semi-implicit Euler over
 // N substeps of h = Δt/N: v_k = v_(k−1) + a·h, x_k = x_(k−1) + h·v_k, with a
@@ -498,21 +505,55 @@ void resolveImpacts(WorldState& w, float dt) {
         // pair again in every sweep made a landing column of 50 boxes sway
         // 0.23 m instead of 0.03 m.)
         const bool met = sweepStamp == kShockStamp && hitTime[static_cast<std::size_t>(c)] >= 0.0f;
-        for (int j = 0; j < ct.manifold.pointCount; ++j) {
-            const ManifoldPoint& mp = ct.manifold.points[j];
-            Vec2 dv = (sideB.v + cross(sideB.w, mp.point - sideB.center)) -
-                      (sideA.v + cross(sideA.w, mp.point - sideA.center));
-            float vn = dot(dv, n);
-            // Closes within the step along its true flight (timing above).
-            const float vTrue = vn + an * halfSubstep;
-            if (vn < -minApproach && (met || mp.separation + (vTrue + 0.5f * an * dt) * dt < 0.0f)) {
-                point += mp.point;
-                gap += std::max(mp.separation, 0.0f);
-                approach += vn;
-                ++count;
+        auto gather = [&](const Manifold& m) {
+            int found = 0;
+            for (int j = 0; j < m.pointCount; ++j) {
+                const ManifoldPoint& mp = m.points[j];
+                Vec2 dv = (sideB.v + cross(sideB.w, mp.point - sideB.center)) -
+                          (sideA.v + cross(sideA.w, mp.point - sideA.center));
+                float vn = dot(dv, n);
+                // Closes within the step along its true flight (timing above).
+                const float vTrue = vn + an * halfSubstep;
+                if (vn < -minApproach && (met || mp.separation + (vTrue + 0.5f * an * dt) * dt < 0.0f)) {
+                    point += mp.point;
+                    gap += std::max(mp.separation, 0.0f);
+                    approach += vn;
+                    ++found;
+                }
             }
-        }
+            return found;
+        };
+        count = gather(ct.manifold);
         if (count == 0) return false;
+        // A face landing on a floor of several static pieces (a chain's
+        // segments, tiles) touches each piece through its own contact, but
+        // meets one flat surface: struck contact by contact, a box landing
+        // flat across a seam was struck at each piece's points in turn, off
+        // its centre, and spun (at 5 rad/s from 5 m). The static contacts of
+        // the moving body whose normals are this one's are struck with it,
+        // at the mean of all their approaching points, as one manifold.
+        int grouped[kMaxGroupedContacts];
+        int groupedCount = 0;
+        const bool aFixed = A.type == BodyType::static_body, bFixed = B.type == BodyType::static_body;
+        if (aFixed != bFixed && sweepStamp != kShockStamp && sideA.cluster < 0 && sideB.cluster < 0) {
+            const int mover = aFixed ? ct.bodyB : ct.bodyA;
+            const Vec2 up = aFixed ? n : -n;  // from the floor to the moving body
+            for (const int c2 : w.bodies[mover].contacts) {
+                if (c2 == c || groupedCount == kMaxGroupedContacts) continue;
+                const Contact& o = w.contacts[c2];
+                if (!o.touching || o.isSensor || o.overlapFromStart || o.manifold.pointCount == 0) continue;
+                const bool oFixedA = o.bodyA != mover;
+                if (w.bodies[oFixedA ? o.bodyA : o.bodyB].type != BodyType::static_body) continue;
+                if (dot(oFixedA ? o.manifold.normal : -o.manifold.normal, up) < kGroupAlignment) continue;
+                if (minApproach == threshold && passedOver(o)) continue;
+                if (gather(o.manifold) > 0) grouped[groupedCount++] = c2;
+            }
+            count = 0;
+            point = {};
+            gap = approach = 0.0f;
+            count = gather(ct.manifold);
+            for (int g = 0; g < groupedCount; ++g) count += gather(w.contacts[grouped[g]].manifold);
+        }
         sizeArrays();
         const float inv = 1.0f / static_cast<float>(count);
         point = inv * point;
@@ -611,6 +652,19 @@ void resolveImpacts(WorldState& w, float dt) {
         if (-approach >= threshold) {
             ct.normalImpulse[0] = ct.normalImpulse[1] = 0.0f;
             ct.tangentImpulse[0] = ct.tangentImpulse[1] = 0.0f;
+        }
+        for (int g = 0; g < groupedCount; ++g) {
+            const int c2 = grouped[g];
+            float& hit = hitTime[static_cast<std::size_t>(c2)];
+            if (hit < 0.0f) {
+                w.impactStruckContacts.push_back(c2);
+                hit = tHit;
+            }
+            if (-approach >= threshold) {
+                Contact& o = w.contacts[c2];
+                o.normalImpulse[0] = o.normalImpulse[1] = 0.0f;
+                o.tangentImpulse[0] = o.tangentImpulse[1] = 0.0f;
+            }
         }
         // The manifold keeps its start-of-step gap: the rows add what the
         // shifts above opened or closed, less a struck pair's rebound since

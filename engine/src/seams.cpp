@@ -27,6 +27,8 @@
 //   rule of a chain's ghost vertices (Catto, 2025, Box2D v3.1, manifold.c,
 //   the chain segment colliders), with the neighbour found through the
 //   broadphase instead of stored.
+// - of a flat face resting across a flat seam, the point each piece reports
+//   at the seam's vertex (dropFlatSeamPoints, below).
 // A chain's segment (World::createChain) keeps its neighbours' far points
 // (ghost vertices) and applies the vertex rule with them, whatever its body,
 // and collides on its right side only.
@@ -186,6 +188,87 @@ bool isGhost(const WorldState& w, int self, const Shape& moving, const Outline& 
     return leansOverNeighbour(w, self, moving, s.vertices[vertex], n);
 }
 
+/// Whether a static neighbour's face continues S's flat face past its end v:
+/// a face with S's outward normal n (either side of a segment), on S's line
+/// through v, reaching from v onwards along uOut (the direction out of S's
+/// face at v).
+bool faceContinuesPast(const WorldState& w, int self, const Shape& moving, Vec2 v, Vec2 uOut, Vec2 n, float radius) {
+    bool continues = false;
+    forNeighbours(w, self, moving, around(v, kShareTolerance), [&](const Outline& t) {
+        for (int j = 0; j < faceCount(t); ++j) {
+            const bool facesUp = dot(t.normals[j], n) >= kFaceAlignment ||
+                                 (t.segment && -dot(t.normals[j], n) >= kFaceAlignment);
+            if (!facesUp) continue;
+            const Vec2 a = t.vertices[j], b = faceEnd(t, j);
+            // On S's surface line (the same thickness) through v ...
+            if (std::abs(dot(a - v, n) + radius - t.radius) > kShareTolerance) continue;
+            // ... from v onwards.
+            const float ta = dot(a - v, uOut), tb = dot(b - v, uOut);
+            if (std::min(ta, tb) > kShareTolerance || std::max(ta, tb) <= kShareTolerance) continue;
+            continues = true;
+            return false;
+        }
+        return true;
+    });
+    return continues;
+}
+
+/// Whether the moving shape reaches past v along uOut no higher above S's
+/// surface line (outward normal n through S's core point v, S's radius
+/// `radius`) than `gap`, the gap of its point at v: a polygon's or capsule's
+/// corner beyond v as low as the face at v.
+bool liesFlatPast(const WorldState& w, const Shape& moving, Vec2 v, Vec2 uOut, Vec2 n, float radius, float gap) {
+    const Transform& xf = w.bodies[moving.body].xf;
+    Vec2 corners[kMaxPolygonVertices];
+    int count = 0;
+    float own = 0.0f;
+    if (moving.type == ShapeType::polygon) {
+        const Polygon& p = moving.geometry.polygon;
+        for (int i = 0; i < p.count; ++i) corners[count++] = transformPoint(xf, p.vertices[i]);
+        own = p.radius;
+    } else if (moving.type == ShapeType::capsule) {
+        corners[count++] = transformPoint(xf, moving.geometry.capsule.center1);
+        corners[count++] = transformPoint(xf, moving.geometry.capsule.center2);
+        own = moving.geometry.capsule.radius;
+    }
+    for (int i = 0; i < count; ++i) {
+        const Vec2 d = corners[i] - v;
+        if (dot(d, uOut) > kShareTolerance && dot(d, n) - radius - own <= gap + kShareTolerance) return true;
+    }
+    return false;
+}
+
+/// A flat face resting across a flat seam (two static pieces in line: a
+/// chain's segments, segments end to end, boxes side by side): each piece's
+/// manifold clips the moving face at the piece's end, so both report a point
+/// at the seam's vertex v, beside the moving face's own corner on their side.
+/// The floor as a whole holds the face at its two corners; the extra point
+/// at v, held twice, puts a third support off the face's middle, so a loaded
+/// box sinks more on its far side (a column of 50 boxes on a chain, its axis
+/// 0.3 m from a vertex, leaned 10 cm) and a box landing flat there is struck
+/// off its centre and spins. Of a two-point face manifold, a point at an end v
+/// of S's face is dropped when the floor continues flat past v
+/// (`continuesPast`) and the moving shape lies there as low as at v, so the
+/// neighbour's manifold holds it beyond v; a shape tilted up past v keeps it,
+/// being held at v indeed. `p[k]` are the points' witnesses on S's core.
+template <class ContinuesPast>
+void dropFlatSeamPoints(const WorldState& w, const Shape& moving, Vec2 a, Vec2 b, Vec2 n, float radius, const Vec2 p[2],
+                        Manifold& m, ContinuesPast&& continuesPast) {
+    if (m.pointCount != 2 || moving.type == ShapeType::circle) return;
+    bool drop[2] = {false, false};
+    for (int k = 0; k < 2; ++k) {
+        for (const Vec2 v : {a, b}) {
+            if (distance(p[k], v) > kShareTolerance || distance(p[1 - k], v) <= kShareTolerance) continue;
+            const Vec2 uOut = normalize(v == a ? a - b : b - a);
+            drop[k] = liesFlatPast(w, moving, v, uOut, n, radius, m.points[k].separation) && continuesPast(v, uOut);
+        }
+    }
+    int kept = 0;
+    for (int k = 0; k < 2; ++k)
+        if (!drop[k]) m.points[kept++] = m.points[k];
+    m.pointCount = kept;
+}
+
 /// The centroid of a shape in its body frame.
 Vec2 localCentroid(const Shape& s) {
     switch (s.type) {
@@ -211,8 +294,18 @@ void applyChainRule(const WorldState& w, const Shape& chain, const Shape& moving
         m.pointCount = 0;
         return;
     }
-    if (isFaceNormal(n, front, moving)) return;
     const Vec2 g1 = transformPoint(xf, chain.ghost1), g2 = transformPoint(xf, chain.ghost2);
+    if (isFaceNormal(n, front, moving)) {
+        // The neighbour continues the face flat past an end when its far
+        // point (the ghost vertex) lies straight on.
+        const Vec2 witness[2] = {m.points[0].point - 0.5f * m.points[0].separation * n,
+                                 m.points[1].point - 0.5f * m.points[1].separation * n};
+        dropFlatSeamPoints(w, moving, p1, p2, front, 0.0f, witness, m, [&](Vec2 v, Vec2 uOut) {
+            const Vec2 g = v == p1 ? g1 : g2;
+            return distance(g, v) > 0.0f && dot(normalize(g - v), uOut) >= kFaceAlignment;
+        });
+        return;
+    }
     // The manifold has one normal: a ghost at one end is a ghost for the
     // whole segment. A body's face reaching over the segment (the box's
     // front face sliding along a flat chain) clips both of its ends; the far
@@ -295,6 +388,16 @@ void dropSeamGhosts(const WorldState& w, const Contact& c, Manifold& m) {
         if (!isGhost(w, self, moving, s, p, n, reach)) m.points[kept++] = pt;
     }
     m.pointCount = kept;
+    if (m.pointCount != 2) return;
+    for (int i = 0; i < faceCount(s) + (s.segment ? 1 : 0); ++i) {
+        if (!isFaceNormal(n, s.normals[i], moving)) continue;
+        const Vec2 a = s.segment ? s.vertices[0] : s.vertices[i], b = s.segment ? s.vertices[1] : faceEnd(s, i);
+        Vec2 witness[2];
+        for (int k = 0; k < 2; ++k) witness[k] = m.points[k].point - (0.5f * m.points[k].separation + s.radius) * n;
+        dropFlatSeamPoints(w, moving, a, b, n, s.radius, witness, m,
+                           [&](Vec2 v, Vec2 uOut) { return faceContinuesPast(w, self, moving, v, uOut, n, s.radius); });
+        return;
+    }
 }
 
 }  // namespace i2d::detail
