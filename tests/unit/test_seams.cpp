@@ -235,6 +235,28 @@ TEST(Seams, ABoxAcrossAFlatSeamRestsOnItsCorners) {
     }
 }
 
+// The point at a piece's end is dropped only where the floor goes on flat:
+// a unit box overhanging the floor's last piece by 0.2 m (from 19.2 to 20.2
+// m, the floor ending at 20 m) keeps its point at the edge and rests level
+// within the same 0.1 mrad; without that point it would rest on its inner
+// corner alone, 0.5 m from its centre, and tip over the edge.
+TEST(Seams, ABoxOverhangingTheFloorsEndKeepsItsPointAtTheEdge) {
+    for (FlatFloor f : kFlatFloors) {
+        WorldSettings s;
+        s.enableSleep = false;
+        World world(s);
+        buildFlatFloor(world, f);
+        BodyId box = unitBox(world, {19.7f, 0.5f});
+        for (int i = 0; i < 300; ++i) world.step(1.0f / 60.0f);
+        EXPECT_LT(std::abs(world.angle(box)), 1.0e-4f) << name(f);
+        bool atEdge = false;
+        for (const ContactData& c : world.contacts())
+            for (int j = 0; j < c.manifold.pointCount; ++j)
+                atEdge = atEdge || std::abs(c.manifold.points[j].point.x - 20.0f) < 0.01f;
+        EXPECT_TRUE(atEdge) << name(f);
+    }
+}
+
 // Columns of 20 and 50 touching unit boxes whose axis lies 0.3 m from a
 // vertex of a flat chain stand for 60 s within the bounds of a column on one
 // piece (the hard-case issue's: the top within 1 and 5 cm sideways, drops
