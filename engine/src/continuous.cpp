@@ -207,6 +207,10 @@ struct Stop {
     float t = 1.0f;
     bool byProbe = false;  ///< a probe of a shape touching a static surface at the step's start
     Vec2 normal{};         ///< the probe's normal at t
+    /// The probe found the centroid already nearer the surface than its
+    /// extent at the step's start (t = 0): the body keeps the step's motion
+    /// but for its centroid's approach along the normal (sweepBody).
+    bool holdApproach = false;
 };
 
 /// Where a point's chord over the step, from p0 to p1, enters the other
@@ -270,7 +274,7 @@ void probeCentroid(const Shape& shape, const ShapeCore& core, const Mover& m, co
                                               transformPoint(m.sweep.at(1.0f), c.point), other, xfOther);
     if (!e) return;
     const float t = e->across > 0.0f ? std::max(0.0f, e->fraction - c.extent / e->across) : 0.0f;
-    if (t < stop.t) stop = {t, true, e->normal};
+    if (t < stop.t) stop = {t, true, e->normal, t <= 0.0f};
 }
 
 /// Sweeps one shape of the moving body against one other shape; moves the stop earlier.
@@ -325,6 +329,7 @@ void sweepBody(WorldState& w, Body& body, const Mover& m, Vec2 rewind) {
             Stop pair;
             sweepPair(shape, core, m, o, ob.xf, w.settings.speculativeDistance, pair);
             pair.byProbe = pair.byProbe && o.inStaticTree;  // a dynamic body takes its momentum through the contact
+            pair.holdApproach = pair.holdApproach && pair.byProbe;
             if (pair.t < stop.t) stop = pair;
             return true;
         };
@@ -332,7 +337,19 @@ void sweepBody(WorldState& w, Body& body, const Mover& m, Vec2 rewind) {
         if (body.isBullet) w.broadPhase.movingTree.query(swept, visit);
     }
     if (stop.t >= 1.0f) return;
-    const Transform xf = m.sweep.at(stop.t);
+    Transform xf = m.sweep.at(stop.t);
+    // Put back to the step's start, a body whose centroid began the step
+    // nearer a static surface than its extent (partly through a thin floor)
+    // lost the whole step's motion, and gravity brought the same approach
+    // back in every step: a plank spun through a chain floor stayed where
+    // it was for good, its velocity and spin (20 rad/s) never flown. It now
+    // keeps the step's turn and its motion along the surface, and only its
+    // centroid's approach along the normal is taken out of the move, as it
+    // is out of the velocity below.
+    if (stop.holdApproach) {
+        xf = m.sweep.at(1.0f);
+        xf.p -= std::min(0.0f, dot(m.sweep.dc, stop.normal)) * stop.normal;
+    }
     body.xf = xf;
     body.center = transformPoint(xf, body.localCenter);
     // Its proxies are checked again (the write-back checked the step's end).
@@ -341,7 +358,9 @@ void sweepBody(WorldState& w, Body& body, const Mover& m, Vec2 rewind) {
     // acceleration since, within the speed limit the solver holds (a body of
     // tiny mass under a force accelerates beyond any: fuzz_world found one of
     // 2e-16 kg left at 4e16 m/s).
-    body.v = limitSpeed(body.v - (1.0f - stop.t) * rewind, w.settings.maxLinearSpeed);
+    // (A body that keeps the step's motion keeps its end velocity.)
+    const float flown = stop.holdApproach ? 1.0f : stop.t;
+    body.v = limitSpeed(body.v - (1.0f - flown) * rewind, w.settings.maxLinearSpeed);
     // A body stopped by a probe is driving into a static surface it already
     // touches, and its contact did not stop it (one contact point, say,
     // about which the body turned). Kept, that velocity would be put back
