@@ -31,16 +31,16 @@ const char* name(Mover m) { return m == Mover::box ? "box" : m == Mover::circle 
 constexpr int kPieces = 40;        ///< 1 m pieces from x = −20 to 20, top face at y = 0
 constexpr float kStartX = -19.0f;  ///< the mover starts over the second piece
 
-void buildFloor(World& world, Floor f) {
+void buildFloor(World& world, Floor f, float friction = 0.0f) {
     BodyId shared = world.createBody({});
     for (int i = 0; i < kPieces; ++i) {
         const float x0 = -20.0f + static_cast<float>(i);
         const bool own = f == Floor::boxes_many_bodies || f == Floor::segments_many_bodies;
         BodyId body = own ? world.createBody({}) : shared;
         if (f == Floor::boxes_one_body || f == Floor::boxes_many_bodies)
-            world.createPolygonShape(body, {.friction = 0.0f}, makeOffsetBox(0.5f, 0.5f, {x0 + 0.5f, -0.5f}, 0.0f));
+            world.createPolygonShape(body, {.friction = friction}, makeOffsetBox(0.5f, 0.5f, {x0 + 0.5f, -0.5f}, 0.0f));
         else
-            world.createSegmentShape(body, {.friction = 0.0f}, {{x0, 0.0f}, {x0 + 1.0f, 0.0f}});
+            world.createSegmentShape(body, {.friction = friction}, {{x0, 0.0f}, {x0 + 1.0f, 0.0f}});
     }
 }
 
@@ -175,22 +175,18 @@ const char* name(FlatFloor f) {
 }
 
 void buildFlatFloor(World& world, FlatFloor f) {
-    if (f == FlatFloor::chain) {
-        // From right to left: a chain collides on its right side, here above.
-        std::vector<Vec2> points;
-        for (int i = kPieces / 2; i >= -kPieces / 2; --i) points.push_back({static_cast<float>(i), 0.0f});
-        world.createChain(world.createBody({}), {.points = points, .friction = 0.6f});
-        return;
-    }
-    BodyId shared = world.createBody({});
-    for (int i = 0; i < kPieces; ++i) {
-        const float x0 = -20.0f + static_cast<float>(i);
-        const bool own = f == FlatFloor::boxes_many_bodies || f == FlatFloor::segments_many_bodies;
-        BodyId body = own ? world.createBody({}) : shared;
-        if (f == FlatFloor::boxes_one_body || f == FlatFloor::boxes_many_bodies)
-            world.createPolygonShape(body, {.friction = 0.6f}, makeOffsetBox(0.5f, 0.5f, {x0 + 0.5f, -0.5f}, 0.0f));
-        else
-            world.createSegmentShape(body, {.friction = 0.6f}, {{x0, 0.0f}, {x0 + 1.0f, 0.0f}});
+    switch (f) {
+        case FlatFloor::chain: {
+            // From right to left: a chain collides on its right side, here above.
+            std::vector<Vec2> points;
+            for (int i = kPieces / 2; i >= -kPieces / 2; --i) points.push_back({static_cast<float>(i), 0.0f});
+            world.createChain(world.createBody({}), {.points = points, .friction = 0.6f});
+            return;
+        }
+        case FlatFloor::boxes_one_body: return buildFloor(world, Floor::boxes_one_body, 0.6f);
+        case FlatFloor::boxes_many_bodies: return buildFloor(world, Floor::boxes_many_bodies, 0.6f);
+        case FlatFloor::segments_one_body: return buildFloor(world, Floor::segments_one_body, 0.6f);
+        case FlatFloor::segments_many_bodies: return buildFloor(world, Floor::segments_many_bodies, 0.6f);
     }
 }
 
@@ -211,27 +207,39 @@ BodyId unitBox(World& world, Vec2 at, float density = 1.0f, float restitution = 
 // face's middle: the box leaned 2 to 5.7 mrad under the load, its far side
 // sinking more), and the box stays level within 0.1 mrad, 0.1 mm across its
 // width, a fiftieth of the 5 mm a resting contact sinks (the linear slop).
+// A world on floor f, sleeping off: `place` creates the bodies and returns
+// the box to look at, which `look` does after 5 s.
+template <class Place, class Look>
+void afterFiveSeconds(FlatFloor f, Place&& place, Look&& look) {
+    WorldSettings s;
+    s.enableSleep = false;
+    World world(s);
+    buildFlatFloor(world, f);
+    const BodyId box = place(world);
+    for (int i = 0; i < 300; ++i) world.step(1.0f / 60.0f);
+    look(world, box);
+}
+
 TEST(Seams, ABoxAcrossAFlatSeamRestsOnItsCorners) {
     for (FlatFloor f : kFlatFloors) {
-        WorldSettings s;
-        s.enableSleep = false;
-        World world(s);
-        buildFlatFloor(world, f);
-        BodyId box = unitBox(world, {0.3f, 0.5f});
-        unitBox(world, {0.3f, 1.5f}, 20.0f);
-        for (int i = 0; i < 300; ++i) world.step(1.0f / 60.0f);
-        EXPECT_LT(std::abs(world.angle(box)), 1.0e-4f) << name(f);
-        int floorPoints = 0;
-        for (const ContactData& c : world.contacts()) {
-            if (world.shapeBody(c.shapeA) != box && world.shapeBody(c.shapeB) != box) continue;
-            for (int j = 0; j < c.manifold.pointCount; ++j) {
-                const Vec2 p = c.manifold.points[j].point;
-                if (p.y > 0.5f) continue;  // the box above
-                ++floorPoints;
-                EXPECT_GT(std::abs(p.x), 0.1f) << name(f) << ": a point at the seam's vertex";
+        auto place = [](World& world) {
+            unitBox(world, {0.3f, 1.5f}, 20.0f);
+            return unitBox(world, {0.3f, 0.5f});
+        };
+        afterFiveSeconds(f, place, [f](const World& world, BodyId box) {
+            EXPECT_LT(std::abs(world.angle(box)), 1.0e-4f) << name(f);
+            int floorPoints = 0;
+            for (const ContactData& c : world.contacts()) {
+                if (world.shapeBody(c.shapeA) != box && world.shapeBody(c.shapeB) != box) continue;
+                for (int j = 0; j < c.manifold.pointCount; ++j) {
+                    const Vec2 p = c.manifold.points[j].point;
+                    if (p.y > 0.5f) continue;  // the box above
+                    ++floorPoints;
+                    EXPECT_GT(std::abs(p.x), 0.1f) << name(f) << ": a point at the seam's vertex";
+                }
             }
-        }
-        EXPECT_EQ(floorPoints, 2) << name(f);
+            EXPECT_EQ(floorPoints, 2) << name(f);
+        });
     }
 }
 
@@ -242,18 +250,15 @@ TEST(Seams, ABoxAcrossAFlatSeamRestsOnItsCorners) {
 // corner alone, 0.5 m from its centre, and tip over the edge.
 TEST(Seams, ABoxOverhangingTheFloorsEndKeepsItsPointAtTheEdge) {
     for (FlatFloor f : kFlatFloors) {
-        WorldSettings s;
-        s.enableSleep = false;
-        World world(s);
-        buildFlatFloor(world, f);
-        BodyId box = unitBox(world, {19.7f, 0.5f});
-        for (int i = 0; i < 300; ++i) world.step(1.0f / 60.0f);
-        EXPECT_LT(std::abs(world.angle(box)), 1.0e-4f) << name(f);
-        bool atEdge = false;
-        for (const ContactData& c : world.contacts())
-            for (int j = 0; j < c.manifold.pointCount; ++j)
-                atEdge = atEdge || std::abs(c.manifold.points[j].point.x - 20.0f) < 0.01f;
-        EXPECT_TRUE(atEdge) << name(f);
+        auto place = [](World& world) { return unitBox(world, {19.7f, 0.5f}); };
+        afterFiveSeconds(f, place, [f](const World& world, BodyId box) {
+            EXPECT_LT(std::abs(world.angle(box)), 1.0e-4f) << name(f);
+            bool atEdge = false;
+            for (const ContactData& c : world.contacts())
+                for (int j = 0; j < c.manifold.pointCount; ++j)
+                    atEdge = atEdge || std::abs(c.manifold.points[j].point.x - 20.0f) < 0.01f;
+            EXPECT_TRUE(atEdge) << name(f);
+        });
     }
 }
 
