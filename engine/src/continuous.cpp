@@ -208,8 +208,8 @@ struct Stop {
     bool byProbe = false;  ///< a probe of a shape touching a static surface at the step's start
     Vec2 normal{};         ///< the probe's normal at t
     /// The probe found the centroid already nearer the surface than its
-    /// extent at the step's start (t = 0): the body keeps the step's motion
-    /// but for its centroid's approach along the normal (sweepBody).
+    /// extent at the step's start (t = 0): the body is not put back, only
+    /// its centroid's approach along the normal is taken out (sweepBody).
     bool holdApproach = false;
 };
 
@@ -296,7 +296,9 @@ void sweepPair(const Shape& shape, const ShapeCore& core, const Mover& m, const 
 /// time of impact.
 void sweepBody(WorldState& w, Body& body, const Mover& m, Vec2 rewind) {
     const Transform xf0 = m.sweep.at(0.0f), xf1 = body.xf;
-    Stop stop;
+    // The earliest stop along the sweep, and a probe that found the centroid
+    // already nearer a static surface than its extent (holdApproach).
+    Stop stop, hold;
     for (int sh : bodyShapes(w.shapes, body)) {
         const Shape& shape = w.shapes[sh];
         if (shape.isSensor) continue;
@@ -330,26 +332,27 @@ void sweepBody(WorldState& w, Body& body, const Mover& m, Vec2 rewind) {
             sweepPair(shape, core, m, o, ob.xf, w.settings.speculativeDistance, pair);
             pair.byProbe = pair.byProbe && o.inStaticTree;  // a dynamic body takes its momentum through the contact
             pair.holdApproach = pair.holdApproach && pair.byProbe;
-            if (pair.t < stop.t) stop = pair;
+            if (pair.holdApproach) {
+                if (!hold.holdApproach) hold = pair;
+            } else if (pair.t < stop.t) {
+                stop = pair;
+            }
             return true;
         };
         w.broadPhase.staticTree.query(swept, visit);
         if (body.isBullet) w.broadPhase.movingTree.query(swept, visit);
     }
-    if (stop.t >= 1.0f) return;
+    if (stop.t >= 1.0f && !hold.holdApproach) return;
     Transform xf = m.sweep.at(stop.t);
     // Put back to the step's start, a body whose centroid began the step
     // nearer a static surface than its extent (partly through a thin floor)
     // lost the whole step's motion, and gravity brought the same approach
     // back in every step: a plank spun through a chain floor stayed where
     // it was for good, its velocity and spin (20 rad/s) never flown. It now
-    // keeps the step's turn and its motion along the surface, and only its
-    // centroid's approach along the normal is taken out of the move, as it
-    // is out of the velocity below.
-    if (stop.holdApproach) {
-        xf = m.sweep.at(1.0f);
-        xf.p -= std::min(0.0f, dot(m.sweep.dc, stop.normal)) * stop.normal;
-    }
+    // moves as far as the other shapes let it (the earliest other stop) and
+    // only its centroid's approach along that surface's normal is taken out
+    // of the move, as it is out of the velocity below.
+    if (hold.holdApproach) xf.p -= std::min(0.0f, stop.t * dot(m.sweep.dc, hold.normal)) * hold.normal;
     body.xf = xf;
     body.center = transformPoint(xf, body.localCenter);
     // Its proxies are checked again (the write-back checked the step's end).
@@ -358,18 +361,17 @@ void sweepBody(WorldState& w, Body& body, const Mover& m, Vec2 rewind) {
     // acceleration since, within the speed limit the solver holds (a body of
     // tiny mass under a force accelerates beyond any: fuzz_world found one of
     // 2e-16 kg left at 4e16 m/s).
-    // (A body that keeps the step's motion keeps its end velocity.)
-    const float flown = stop.holdApproach ? 1.0f : stop.t;
-    body.v = limitSpeed(body.v - (1.0f - flown) * rewind, w.settings.maxLinearSpeed);
+    body.v = limitSpeed(body.v - (1.0f - stop.t) * rewind, w.settings.maxLinearSpeed);
     // A body stopped by a probe is driving into a static surface it already
     // touches, and its contact did not stop it (one contact point, say,
     // about which the body turned). Kept, that velocity would be put back
     // again in every step and freeze the body where it is: the centroid's
     // approach speed is taken out, as an inelastic impact of the centroid
     // with the static surface would (the surface takes the momentum).
-    if (stop.byProbe) {
-        const float approach = dot(body.v, stop.normal);
-        if (approach < 0.0f) body.v -= approach * stop.normal;
+    for (const Stop* probe : {&stop, &hold}) {
+        if (!probe->byProbe) continue;
+        const float approach = dot(body.v, probe->normal);
+        if (approach < 0.0f) body.v -= approach * probe->normal;
     }
 }
 

@@ -296,6 +296,7 @@ void applyChainRule(const WorldState& w, const Shape& chain, const Shape& moving
     }
     const Vec2 g1 = transformPoint(xf, chain.ghost1), g2 = transformPoint(xf, chain.ghost2);
     if (isFaceNormal(n, front, moving)) {
+        if (m.pointCount != 2) return;
         // The neighbour continues the face flat past an end when its far
         // point (the ghost vertex) lies straight on.
         const Vec2 witness[2] = {m.points[0].point - 0.5f * m.points[0].separation * n,
