@@ -546,13 +546,13 @@ void resolveImpacts(WorldState& w, float dt) {
                 if (w.bodies[oFixedA ? o.bodyA : o.bodyB].type != BodyType::static_body) continue;
                 if (dot(oFixedA ? o.manifold.normal : -o.manifold.normal, up) < kGroupAlignment) continue;
                 if (minApproach == threshold && passedOver(o)) continue;
-                if (gather(o.manifold) > 0) grouped[groupedCount++] = c2;
+                // (Its approaching points, if any, join the sums here.)
+                const int found = gather(o.manifold);
+                if (found > 0) {
+                    grouped[groupedCount++] = c2;
+                    count += found;
+                }
             }
-            count = 0;
-            point = {};
-            gap = approach = 0.0f;
-            count = gather(ct.manifold);
-            for (int g = 0; g < groupedCount; ++g) count += gather(w.contacts[grouped[g]].manifold);
         }
         sizeArrays();
         const float inv = 1.0f / static_cast<float>(count);
