@@ -62,6 +62,7 @@ struct Body {
     BodyType type = BodyType::static_body;
     bool enableSleep = true;
     bool alive = false;
+    bool motionSet = false;                               ///< in BroadPhase::motionSet
     int firstShape = kNullIndex, lastShape = kNullIndex;  ///< the body's shapes, in creation order (shape.hpp)
     /// Where the body was (origin and rotation) when its shapes' boxes were
     /// last measured inside their fat boxes, and the least room they had

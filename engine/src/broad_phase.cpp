@@ -17,8 +17,61 @@ AABB fatten(const AABB& box, float margin) {
 // with no contact at all: continuous collision put it back 5 mm above the
 // floor, the next step found no pair, and it sank 3.8 cm before bouncing
 // (a third bounce 39 % too low). Box2D v3 grows its shape boxes the same way.
+AABB speculativeBox(const WorldState& w, const Shape& sh, const Body& body, const Transform& xf) {
+    return fatten(shapeAABB(sh, xf), body.type == BodyType::static_body ? 0.0f : w.settings.speculativeDistance);
+}
 AABB speculativeBox(const WorldState& w, const Shape& sh, const Body& body) {
-    return fatten(shapeAABB(sh, body.xf), body.type == BodyType::static_body ? 0.0f : w.settings.speculativeDistance);
+    return speculativeBox(w, sh, body, body.xf);
+}
+
+/// How far any point of the body can move within a step of dt (|v| plus |ω|
+/// times the farthest core point's distance from the centre of mass), or
+/// infinity when the body has no reach (sensors only): measure it.
+float comingMotion(const Body& body, float dt) {
+    if (body.reach < 0.0f) return INFINITY;
+    return dt * (length(body.v) + std::abs(body.w) * (body.reach + length(body.localCenter)));
+}
+
+AABB unite(const AABB& a, const AABB& b) {
+    return {{std::min(a.lower.x, b.lower.x), std::min(a.lower.y, b.lower.y)},
+            {std::max(a.upper.x, b.upper.x), std::max(a.upper.y, b.upper.y)}};
+}
+
+// The box a moving shape's fat box must hold for the next step of dt: its
+// speculative box now and where the body's velocity takes it by the step's
+// end. A pair is found only at a step's start, from the fat boxes, and the
+// narrowphase's margin (contact.cpp) covers how far two bodies close within
+// the step only for pairs that exist: a fat box checked against the shape's
+// box alone let a body leave it within the step with no pair ahead of it. A
+// kinematic wall moving 1 m a step went into a box up to 0.5 m with no
+// contact at all in its first step, and in a step whose end carried its box
+// past its fat box (docs/robustness.md, "Fast kinematic bodies"). A turn
+// moves a point along an arc, which leaves the chord between the arc's ends
+// by at most r·(1 − cos(θ/2)) (r its distance from the centre of mass, θ the
+// turn), so the two boxes are grown by that for the shape's farthest corner.
+// Without velocity, or with dt 0 (a body moved by the game), the box now.
+// Nor when no point moves further than the speculative distance within the
+// step: the box grown by it holds every shape the body can then reach
+// within that distance of (which it could not overlap), and the next step's
+// pairs have them.
+AABB comingBox(const WorldState& w, const Shape& sh, const Body& body, float dt) {
+    AABB box = speculativeBox(w, sh, body);
+    if (!(dt > 0.0f) || body.type == BodyType::static_body) return box;
+    const float turn = body.w * dt;
+    const Vec2 move = dt * body.v;
+    if (!(comingMotion(body, dt) > w.settings.speculativeDistance)) return box;
+    Transform next;
+    next.q = mulRot(body.xf.q, makeRot(turn));
+    next.p = (body.center + move) - rotate(next.q, body.localCenter);
+    box = unite(box, speculativeBox(w, sh, body, next));
+    if (turn != 0.0f) {
+        float r = 0.0f;
+        for (const Vec2 corner : {box.lower, box.upper, Vec2{box.lower.x, box.upper.y}, Vec2{box.upper.x, box.lower.y}})
+            r = std::max(r, length(corner - body.center));
+        const float half = 0.5f * std::abs(turn);
+        box = fatten(box, half >= 1.5707964f ? 2.0f * r : r * (1.0f - std::cos(half)));
+    }
+    return box;
 }
 }  // namespace
 
@@ -73,15 +126,22 @@ void synchronizeProxies(WorldState& w, int b, float dt) {
     BroadPhase& bp = w.broadPhase;
     if (!body.enabled) return;
     // A box that must move is stretched ahead along the body's motion, by
-    // kMotionAhead steps of it, so that a moving body re-inserts its proxy
-    // (and queries the tree for new pairs) every few steps rather than every
-    // step (Box2D 2.4.1's b2_aabbMultiplier). joint_grid's swinging grid
-    // spent a fifth of its first 5 s moving proxies.
-    constexpr float kMotionAhead = 4.0f;
+    // kMotionAhead steps of it beyond the coming step comingBox holds, so
+    // that a moving body re-inserts its proxy (and queries the tree for new
+    // pairs) every few steps rather than every step (Box2D 2.4.1's
+    // b2_aabbMultiplier). joint_grid's swinging grid spent a fifth of its
+    // first 5 s moving proxies. Four steps in all before the coming step
+    // was held; three now: with four, the boxes met more pairs ahead and
+    // rain1000's narrowphase took 17 % longer (its step 6 %); with three its
+    // step takes 0.97 to 1.00 of its time before the coming step was held,
+    // circle_pile1000's 0.98 to 0.99, and joint_grid's, whose swinging bodies
+    // now leave their fat boxes a step sooner, 1.02 to 1.09 (the engine
+    // alone, medians over 400 to 600 steps, rounds interleaved).
+    constexpr float kMotionAhead = 2.0f;
     const Vec2 ahead = (kMotionAhead * dt) * body.v;
     for (int s : bodyShapes(w.shapes, body)) {
         Shape& sh = w.shapes[s];
-        AABB box = speculativeBox(w, sh, body);
+        AABB box = comingBox(w, sh, body, dt);
         AABB& fat = bp.fatBox(s);
         if (contains(fat, box)) continue;
         w.bodies[b].boxSlack = 0.0f;  // measured against the old box
@@ -109,15 +169,19 @@ void synchronizeProxies(WorldState& w, int b, float dt) {
 // the rounding of the two boxes' coordinates.
 bool leftFatBox(const WorldState& w, Body& body) {
     if (!body.enabled) return false;
+    const float dt = w.stepDt;
     if (body.boxSlack > 0.0f) {
         const float angle = turnBoundOf(invMulRot(body.boxRotation, body.xf.q));
-        const float moved = length(body.xf.p - body.boxOrigin) + angle * (body.reach + length(body.localCenter));
-        if (moved < body.boxSlack) return false;
+        const float arm = body.reach + length(body.localCenter);
+        // How far it may have moved since, and may move in the next step (comingBox).
+        const float moved = length(body.xf.p - body.boxOrigin) + angle * arm;
+        const float coming = comingMotion(body, dt);
+        if (moved + (coming > w.settings.speculativeDistance ? coming : 0.0f) < body.boxSlack) return false;
     }
     float room = INFINITY, extent = 0.0f;
     bool measurable = body.reach >= 0.0f;  // reach bounds solid shapes only
     for (int s : bodyShapes(w.shapes, body)) {
-        const AABB box = speculativeBox(w, w.shapes[s], body);
+        const AABB box = comingBox(w, w.shapes[s], body, dt);
         const AABB& fat = w.broadPhase.fatBox(s);
         if (!contains(fat, box)) {
             body.boxSlack = 0.0f;
@@ -135,6 +199,24 @@ bool leftFatBox(const WorldState& w, Body& body) {
     body.boxOrigin = body.xf.p;
     body.boxRotation = body.xf.q;
     return false;
+}
+
+void noteMotionSet(WorldState& w, int b) {
+    Body& body = w.bodies[b];
+    if (body.motionSet || body.type == BodyType::static_body) return;
+    body.motionSet = true;
+    w.broadPhase.motionSet.push_back(b);
+}
+
+void coverSetMotions(WorldState& w, float dt) {
+    std::vector<int>& bodies = w.broadPhase.motionSet;
+    for (const int b : bodies) {
+        Body& body = w.bodies[b];
+        if (!body.motionSet) continue;  // destroyed since (its slot may be another body's)
+        body.motionSet = false;
+        if (body.alive && body.awake) synchronizeProxies(w, b, dt);
+    }
+    bodies.clear();
 }
 
 void refreshProxies(WorldState& w, float dt) {

@@ -25,6 +25,7 @@ struct BroadPhase {
     std::vector<int> moveBuffer;            ///< shapes whose proxies moved or were created
     std::vector<std::uint8_t> proxyLeaves;  ///< per awake body: a shape left its fat box this step (refreshProxies)
     PairSet pairs;                          ///< shape pairs that have a contact
+    std::vector<int> motionSet;             ///< bodies whose velocity the game set since the last step (noteMotionSet)
     /// Per shape slot: the box in the broadphase tree (grown by the margin;
     /// that of a shape without a proxy means nothing). Apart from the
     /// shapes: every contact's update checks its two boxes each step, and
@@ -84,6 +85,14 @@ void synchronizeProxies(WorldState& w, int body, float dt = 0.0f);
 /// pose only: the solve's write-back asks it of every awake body on the
 /// workers, where the body is in the cache (proxyLeaves).
 bool leftFatBox(const WorldState& w, Body& body);
+/// The game set the body's velocity (or created it moving): at the next
+/// step's start its fat boxes are made to hold its motion over that step
+/// (coverSetMotions), as a step's end does for the velocity it leaves.
+void noteMotionSet(WorldState& w, int body);
+/// At a step's start, before the pairs are found: each body of
+/// BroadPhase::motionSet whose fat boxes do not hold its motion over the
+/// step of dt has them moved (synchronizeProxies).
+void coverSetMotions(WorldState& w, float dt);
 /// synchronizeProxies for the awake bodies the step's write-back found
 /// outside their fat boxes (BroadPhase::proxyLeaves) or continuous collision
 /// moved since, in the awake list's order.

@@ -806,6 +806,7 @@ void stepWorld(WorldState& w, float dt) {
     Profile& profile = w.profile;
     auto t0 = Clock::now();
     auto t = t0;
+    coverSetMotions(w, dt);
     updatePairs(w);
     profile.pairs = msSince(t);
 

@@ -41,6 +41,7 @@ BodyId World::createBody(const BodyDef& def) {
     if (def.type != BodyType::static_body) {
         body.v = def.linearVelocity;
         body.w = def.fixedRotation ? 0.0f : def.angularVelocity;
+        if (lengthSquared(body.v) > 0.0f || body.w != 0.0f) detail::noteMotionSet(w, b);
     }
     detail::updateMass(w, b);
     if (def.type == BodyType::static_body) {
@@ -184,6 +185,7 @@ void World::setTransform(BodyId id, Vec2 position, float angle) {
         detail::wakeBody(w, ct.bodyA == b ? ct.bodyB : ct.bodyA);
     }
     detail::synchronizeProxies(w, b);
+    detail::noteMotionSet(w, b);  // its boxes now hold where it is, not where its velocity takes it
     // Static proxies do not query: find the new pairs from the other side.
     if (body.type == BodyType::static_body) detail::wakeShapesAround(w, b);
 }
@@ -201,6 +203,7 @@ void World::setLinearVelocity(BodyId id, Vec2 v) {
     if (body.type == BodyType::static_body) return;  // documented: static bodies do not move
     if (lengthSquared(v) > 0.0f) detail::wakeBody(state(), b);
     body.v = v;
+    detail::noteMotionSet(state(), b);
 }
 
 void World::setAngularVelocity(BodyId id, float w) {
@@ -211,6 +214,7 @@ void World::setAngularVelocity(BodyId id, float w) {
     if (body.type == BodyType::static_body || body.fixedRotation) return;
     if (w != 0.0f) detail::wakeBody(state(), b);
     body.w = w;
+    detail::noteMotionSet(state(), b);
 }
 
 Vec2 World::velocityAtPoint(BodyId id, Vec2 p) const {
@@ -265,6 +269,7 @@ void World::applyLinearImpulse(BodyId id, Vec2 impulse, Vec2 point, bool wake) {
     if (wake) detail::wakeBody(state(), b);
     body.v = v;
     body.w = w;
+    detail::noteMotionSet(state(), b);
 }
 
 void World::applyLinearImpulseToCenter(BodyId id, Vec2 impulse, bool wake) {
@@ -282,6 +287,7 @@ void World::applyAngularImpulse(BodyId id, float impulse, bool wake) {
     requireBounded(w, "angular velocity after the impulse");  // see applyLinearImpulse
     if (wake) detail::wakeBody(state(), b);
     body.w = w;
+    detail::noteMotionSet(state(), b);
 }
 
 float World::mass(BodyId id) const { return state().bodies[state().bodyIndex(id)].mass; }

@@ -75,6 +75,7 @@ void World::explode(const ExplosionDef& def) {
         detail::wakeBody(w, r.body);
         w.bodies[r.body].v = r.v;
         w.bodies[r.body].w = r.w;
+        detail::noteMotionSet(w, r.body);
     }
 }
 

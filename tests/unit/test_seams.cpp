@@ -289,11 +289,17 @@ TEST(Seams, ColumnsAcrossAChainVertexStand) {
 // A unit box dropped flat across the seam at x = 0 lands as on one piece:
 // the impact stage strikes the moving body's static contacts whose normals
 // agree as one manifold, at the mean of their points (the box's centre
-// line), instead of piece by piece, off its centre. Bound: the spin left
-// moves the box's corners (0.71 m from its centre) at no more than 1 % of
-// the impact speed √(2gh), the speed a 1 % difference between the two
-// corners' impulses would give; struck piece by piece they turned at 14 to
-// 34 % of it (0.9 rad/s from 1 m, 4.8 rad/s from 5 m, on the chain).
+// line), instead of piece by piece, off its centre. Each landing the impact
+// stage strikes (closing faster than the impact threshold: the first, and
+// with e = 0.5 the bounces after it down to the threshold) is checked
+// against its own speed v: the spin it leaves moves the box's corners (0.71
+// m from its centre) at no more than 1 % of v, the speed a 1 % difference
+// between the two corners' impulses would give. Struck piece by piece they
+// turned at 14 to 34 % of it (0.9 rad/s from 1 m, 4.8 rad/s from 5 m, on
+// the chain). (A landing slower than the threshold is the solver's: its two
+// one-point rows, one per piece, are solved one after the other, and a box
+// landing at 0.94 m/s on the chain turns at 0.07 rad/s for a step;
+// docs/architecture.md, "A face resting or landing across a flat seam".)
 TEST(Seams, ABoxLandingFlatAcrossASeamDoesNotSpin) {
     for (FlatFloor f : kFlatFloors)
         for (const float h : {1.0f, 5.0f})
@@ -303,13 +309,17 @@ TEST(Seams, ABoxLandingFlatAcrossASeamDoesNotSpin) {
                 World world(s);
                 buildFlatFloor(world, f);
                 BodyId box = unitBox(world, {0.3f, 0.5f + h}, 1.0f, e);
-                float spin = 0.0f;
+                int landings = 0;
                 for (int i = 0; i < 150; ++i) {
+                    const float fall = -world.linearVelocity(box).y;
                     world.step(1.0f / 60.0f);
-                    spin = std::max(spin, std::abs(world.angularVelocity(box)));
+                    // A landing: the fall slowed within the step (gravity alone speeds it up).
+                    if (fall < s.impactThreshold || -world.linearVelocity(box).y >= fall) continue;
+                    ++landings;
+                    EXPECT_LT(std::abs(world.angularVelocity(box)) * std::sqrt(0.5f), 0.01f * fall)
+                        << name(f) << ", from " << h << " m, e = " << e << ", landing at " << fall << " m/s";
                 }
-                const float impactSpeed = std::sqrt(2.0f * 10.0f * h);
-                EXPECT_LT(spin * std::sqrt(0.5f), 0.01f * impactSpeed) << name(f) << ", from " << h << " m, e = " << e;
+                EXPECT_GE(landings, e > 0.0f ? 2 : 1) << name(f) << ", from " << h << " m, e = " << e;
             }
 }
 
