@@ -212,6 +212,17 @@ TEST(BroadPhase, ABoxAtRestTouchesAWallWithinARaisedSpeculativeDistance) {
     EXPECT_FALSE(world.bodyContacts(box).empty());
 }
 
+/// Four static walls 1 m thick (restitution 1) around the square |x|, |y| <
+/// half, for the worlds without gravity below.
+BodyId makeWalledSquare(World& world, float half) {
+    BodyId walls = world.createBody({});
+    const float centre = half + 0.5f, length = half + 1.0f;
+    for (const Vec2 c : {Vec2{0.0f, -centre}, Vec2{0.0f, centre}, Vec2{-centre, 0.0f}, Vec2{centre, 0.0f}})
+        world.createPolygonShape(walls, {.restitution = 1.0f},
+                                 makeOffsetBox(c.x == 0.0f ? length : 0.5f, c.x == 0.0f ? 0.5f : length, c, 0.0f));
+    return walls;
+}
+
 TEST(BroadPhase, EveryPairWithinTheSpeculativeDistanceHasItsContact) {
     // Thirty discs up to 2.8 m from their bodies' origins, on bodies whose
     // centres of mass are moved up to 2.8 m off it (setMassData), drifting
@@ -227,10 +238,7 @@ TEST(BroadPhase, EveryPairWithinTheSpeculativeDistanceHasItsContact) {
     std::mt19937 rng(20261203);
     std::uniform_real_distribution<float> u(0.0f, 1.0f);
     World world({.gravity = {0.0f, 0.0f}, .enableSleep = false});
-    BodyId walls = world.createBody({});
-    for (const Vec2 c : {Vec2{0.0f, -10.5f}, Vec2{0.0f, 10.5f}, Vec2{-10.5f, 0.0f}, Vec2{10.5f, 0.0f}})
-        world.createPolygonShape(walls, {.restitution = 1.0f},
-                                 makeOffsetBox(c.x == 0.0f ? 11.0f : 0.5f, c.x == 0.0f ? 0.5f : 11.0f, c, 0.0f));
+    makeWalledSquare(world, 10.0f);
     struct Disc {
         BodyId body;
         ShapeId shape;
@@ -305,10 +313,7 @@ TEST(BroadPhase, FastBodiesNeverOverlapWithoutTheirContact) {
     std::mt19937 rng(20261206);
     std::uniform_real_distribution<float> u(0.0f, 1.0f);
     World world({.gravity = {0.0f, 0.0f}, .enableSleep = false});
-    BodyId walls = world.createBody({});
-    for (const Vec2 c : {Vec2{0.0f, -15.5f}, Vec2{0.0f, 15.5f}, Vec2{-15.5f, 0.0f}, Vec2{15.5f, 0.0f}})
-        world.createPolygonShape(walls, {.restitution = 1.0f},
-                                 makeOffsetBox(c.x == 0.0f ? 16.0f : 0.5f, c.x == 0.0f ? 0.5f : 16.0f, c, 0.0f));
+    const BodyId walls = makeWalledSquare(world, 15.0f);
     struct Disc {
         BodyId body;
         ShapeId shape;
