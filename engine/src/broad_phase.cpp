@@ -48,7 +48,8 @@ AABB unite(const AABB& a, const AABB& b) {
 // past its fat box (docs/robustness.md, "Fast kinematic bodies"). A turn
 // moves a point along an arc, which leaves the chord between the arc's ends
 // by at most r·(1 − cos(θ/2)) (r its distance from the centre of mass, θ the
-// turn), so the two boxes are grown by that for the shape's farthest corner.
+// turn), so the two boxes are grown by that for the shape's farthest corner
+// (a circle's centre).
 // Without velocity, or with dt 0 (a body moved by the game), the box now.
 // Nor when no point moves further than the speculative distance within the
 // step: the box grown by it holds every shape the body can then reach
@@ -65,11 +66,18 @@ AABB comingBox(const WorldState& w, const Shape& sh, const Body& body, float dt)
     next.p = (body.center + move) - rotate(next.q, body.localCenter);
     box = unite(box, speculativeBox(w, sh, body, next));
     if (turn != 0.0f) {
+        // A circle's box follows its centre alone: r is the centre's
+        // distance from the centre of mass (none for a circle around it).
         float r = 0.0f;
-        for (const Vec2 corner : {box.lower, box.upper, Vec2{box.lower.x, box.upper.y}, Vec2{box.upper.x, box.lower.y}})
-            r = std::max(r, length(corner - body.center));
+        if (sh.type == ShapeType::circle) {
+            r = length(transformPoint(body.xf, sh.geometry.circle.center) - body.center);
+        } else {
+            for (const Vec2 corner :
+                 {box.lower, box.upper, Vec2{box.lower.x, box.upper.y}, Vec2{box.upper.x, box.lower.y}})
+                r = std::max(r, length(corner - body.center));
+        }
         const float half = 0.5f * std::abs(turn);
-        box = fatten(box, half >= 1.5707964f ? 2.0f * r : r * (1.0f - std::cos(half)));
+        if (r > 0.0f) box = fatten(box, half >= 1.5707964f ? 2.0f * r : r * (1.0f - std::cos(half)));
     }
     return box;
 }
@@ -133,10 +141,11 @@ void synchronizeProxies(WorldState& w, int b, float dt) {
     // first 5 s moving proxies. Four steps in all before the coming step
     // was held; three now: with four, the boxes met more pairs ahead and
     // rain1000's narrowphase took 17 % longer (its step 6 %); with three its
-    // step takes 0.97 to 1.00 of its time before the coming step was held,
-    // circle_pile1000's 0.98 to 0.99, and joint_grid's, whose swinging bodies
-    // now leave their fat boxes a step sooner, 1.02 to 1.09 (the engine
-    // alone, medians over 400 to 600 steps, rounds interleaved).
+    // step takes 0.96 to 0.99 of its time before the coming step was held,
+    // circle_pile1000's 0.99, pyramid100's the same within the noise, and
+    // joint_grid's 1.08 to 1.10: its swinging bodies now leave their fat
+    // boxes sooner, so their proxies move and query more often (the engine
+    // alone, medians over 200 to 600 steps, three rounds interleaved).
     constexpr float kMotionAhead = 2.0f;
     const Vec2 ahead = (kMotionAhead * dt) * body.v;
     for (int s : bodyShapes(w.shapes, body)) {
