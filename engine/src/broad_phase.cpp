@@ -32,11 +32,6 @@ float comingMotion(const Body& body, float dt) {
     return dt * (length(body.v) + std::abs(body.w) * (body.reach + length(body.localCenter)));
 }
 
-AABB unite(const AABB& a, const AABB& b) {
-    return {{std::min(a.lower.x, b.lower.x), std::min(a.lower.y, b.lower.y)},
-            {std::max(a.upper.x, b.upper.x), std::max(a.upper.y, b.upper.y)}};
-}
-
 // The box a moving shape's fat box must hold for the next step of dt: its
 // speculative box now and where the body's velocity takes it by the step's
 // end. A pair is found only at a step's start, from the fat boxes, and the
@@ -64,7 +59,7 @@ AABB comingBox(const WorldState& w, const Shape& sh, const Body& body, float dt)
     Transform next;
     next.q = mulRot(body.xf.q, makeRot(turn));
     next.p = (body.center + move) - rotate(next.q, body.localCenter);
-    box = unite(box, speculativeBox(w, sh, body, next));
+    box = unionOf(box, speculativeBox(w, sh, body, next));
     if (turn != 0.0f) {
         // A circle's box follows its centre alone: r is the centre's
         // distance from the centre of mass (none for a circle around it).
