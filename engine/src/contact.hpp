@@ -167,6 +167,10 @@ constexpr std::uint8_t kLookRollingSurface = 8;  ///< its surface resists rollin
 /// Between two moving bodies, one at least kShockMassRatio times the other's
 /// mass, closing (lookAtImpacts, impact_look.hpp).
 constexpr std::uint8_t kLookHeavyOnLight = 16;
+/// Its normal is a face of A (kLookTurnA) or of B (kLookTurnB) that turns
+/// more than kTurningRowAngle within the step (turningLook, contact.cpp).
+constexpr std::uint8_t kLookTurnA = 32;
+constexpr std::uint8_t kLookTurnB = 64;
 
 /// The narrowphase: updates the manifold of every contact with an awake body,
 /// reports begin and end events, wakes islands that are touched, destroys

@@ -99,6 +99,7 @@ inline bool prepareContactRow(const WorldState& w, const RowContext& x, int c, C
     cc.deepOverlap = false;
     cc.roundA = ct.roundA;
     cc.roundB = ct.roundB;
+    cc.turnA = cc.turnB = false;  // (setTurning, from the contact's look)
     for (int j = 0; j < cc.pointCount; ++j)
         cc.deepOverlap = cc.deepOverlap || ct.manifold.points[j].separation < -deepOverlapOf(ct);
     const Vec2 n = cc.normal;
@@ -132,6 +133,12 @@ inline bool prepareContactRow(const WorldState& w, const RowContext& x, int c, C
         }
     }
     return cc.deepOverlap;
+}
+
+/// A turning row's side from the contact's look (kLookTurnA, kLookTurnB).
+inline void setTurning(ContactConstraint& cc, std::uint8_t lookFlags) {
+    cc.turnA = (lookFlags & kLookTurnA) != 0;
+    cc.turnB = (lookFlags & kLookTurnB) != 0;
 }
 
 /// Whether the row's two points are solved together, from its deepest

@@ -56,6 +56,12 @@ struct ContactConstraint {
     /// point to anything stays under its centre however it spins.
     bool roundA : 1;
     bool roundB : 1;
+    /// A turning row (contact_solver.cpp): the normal is a face of A (turnA)
+    /// or of B (turnB) that turns fast within the step (kTurningRowAngle),
+    /// so the row turns it with that face and measures the gap at the
+    /// other body's point. Set from the contact's look (ContactLook).
+    bool turnA : 1;
+    bool turnB : 1;
     std::uint8_t pointCount;
     /// Both points' increments are scaled by this when solved together:
     /// 1/(1 + ρ) for a positive coupling ρ = K12/√(K11·K22), else 1.

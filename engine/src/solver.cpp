@@ -97,7 +97,8 @@ constexpr int kBodyGrain = 512;
 constexpr int kPackGrain = 32;
 constexpr int kPrepareGrain = 128;  ///< contacts per chunk when rows are prepared
 
-constexpr std::uint8_t kKeyRow = 1, kKeyMoveA = 2, kKeyMoveB = 4, kKeyOnePoint = 8, kKeyDeep = 16, kKeyRolling = 32;
+constexpr std::uint8_t kKeyRow = 1, kKeyMoveA = 2, kKeyMoveB = 4, kKeyOnePoint = 8, kKeyDeep = 16, kKeyRolling = 32,
+                       kKeyTurning = 64;
 
 ColourKey colourKey(const WorldState& w, std::size_t active, int zeroState) {
     // Whether the contact has a row: contactRowBodies's test, from the
@@ -117,6 +118,7 @@ ColourKey colourKey(const WorldState& w, std::size_t active, int zeroState) {
     // What decides the rows' path before any is prepared: the same tests as
     // prepareContacts' and prepareRollingResistance's.
     if (look.rowFlags & kLookDeep) flags |= kKeyDeep;
+    if (look.rowFlags & (kLookTurnA | kLookTurnB)) flags |= kKeyTurning;
     if (look.rowFlags & kLookRollingSurface) {
         const int contact = w.activeContacts[active];
         const Contact& ct = w.contacts[contact];
@@ -165,7 +167,8 @@ void colourContacts(WorldState& w) {
         std::uint32_t* maskB = moveB ? &masks[static_cast<std::size_t>(key.b)] : nullptr;
         const std::uint32_t taken = (maskA ? *maskA : 0u) | (maskB ? *maskB : 0u) | ~kAllColours;
         int group = kRowGroupCount;
-        if (taken != ~std::uint32_t{0}) {
+        // A turning row is scalar (contact_solver.cpp): the overflow group's.
+        if (taken != ~std::uint32_t{0} && !(key.flags & kKeyTurning)) {
             const int c = std::countr_one(taken);
             const std::uint32_t bit = std::uint32_t{1} << c;
             if (maskA) *maskA |= bit;
@@ -385,6 +388,7 @@ void prepareContactRows(WorldState& w, float h, bool soft) {
             if (group == kRowGroupCount) {  // the overflow group's rows are scalar
                 ContactConstraint& cc = s.constraints[static_cast<std::size_t>(inGroup)];
                 prepareContactRow(w, x, contact, cc);
+                setTurning(cc, w.activeLooks[k].rowFlags);
                 finishContactRow(x, slop, cc);
                 continue;
             }

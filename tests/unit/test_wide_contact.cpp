@@ -284,6 +284,8 @@ TEST(WideContact, LanesPreparedFromContactsMatchThePackedRows) {
                 ct.frame.anchorA[1] = {u(rng), u(rng)};
             }
             w.activeContacts.push_back(c);
+            w.activeLooks.push_back(
+                {ct.bodyA, ct.bodyB, true, kLookRow});  // (beside each active contact, as collide keeps them)
             if (shifted) {  // some contacts struck by the impact stage (a rebound time), some not
                 w.impactTime.resize(static_cast<std::size_t>(c) + 1, -1.0f);
                 w.impactTime[static_cast<std::size_t>(c)] = unit(rng) < 0.5f ? 0.01f * unit(rng) : -1.0f;
