@@ -240,61 +240,6 @@ void markOverlapFromStart(const WorldState& w, Contact& ct, const Body& a, const
     ct.overlapFromStart = overlap;
 }
 
-/// A contact's rows keep the normal of the manifold computed at the step's
-/// start, which is right while the face it belongs to turns little in the
-/// step. A face turning faster than this (rad per step; 3 rad/s at 60 Hz)
-/// gets a turning row (contact_solver.cpp, "Turning rows"): a ball pressed
-/// into the wall of a box spun at 12 rad/s slid along the wall, the wall
-/// turned 11 degrees under it, and the row, measuring the gap along the old
-/// normal, let it through the wall (Box2D 2.4.1, whose position pass uses
-/// the current normal, held it at 40 rad/s). At 0.05 rad the old normal's
-/// error, d·sin θ for a point sliding d along the face, stays within the
-/// penetration slop (5 mm) for slides up to 0.1 m a step; with 0.1 rad, a
-/// ball in a box of 2 m turning at 5 rad/s (below it) went 7.4 cm into the
-/// wall, 3.5 cm with 0.05.
-constexpr float kTurningRowAngle = 0.05f;
-
-/// Whether `direction` (a unit vector, world) is the outward normal of a
-/// flat side of shape sh at pose xf, within 0.8 degrees: the side of a
-/// polygon, a capsule's or a segment's length. A circle has none, nor has a
-/// rounded end or a corner (a normal between a corner and the other shape).
-bool isFaceNormal(const Shape& sh, const Transform& xf, Vec2 direction) {
-    constexpr float kAligned = 0.9999f;
-    const Vec2 local = invRotate(xf.q, direction);
-    switch (sh.type) {
-        case ShapeType::polygon: {
-            const Polygon& p = sh.geometry.polygon;
-            for (int i = 0; i < p.count; ++i)
-                if (dot(p.normals[i], local) > kAligned) return true;
-            return false;
-        }
-        case ShapeType::capsule:
-        case ShapeType::segment: {
-            const Vec2 a = sh.type == ShapeType::capsule ? sh.geometry.capsule.center1 : sh.geometry.segment.point1;
-            const Vec2 b = sh.type == ShapeType::capsule ? sh.geometry.capsule.center2 : sh.geometry.segment.point2;
-            const Vec2 side = normalize(b - a);
-            return std::abs(cross(side, local)) > kAligned;
-        }
-        case ShapeType::circle: return false;
-    }
-    return false;
-}
-
-/// kLookTurnA, kLookTurnB or 0: whether the contact's normal is a flat side
-/// of A (or, reversed, of B) whose body turns further than
-/// kTurningRowAngle in the step of dt, at its angular velocity as the step
-/// begins.
-std::uint8_t turningLook(const WorldState& w, const Contact& ct, float dt) {
-    const Body& a = w.bodies[ct.bodyA];
-    const Body& b = w.bodies[ct.bodyB];
-    const bool turnA = std::abs(a.w) * dt > kTurningRowAngle, turnB = std::abs(b.w) * dt > kTurningRowAngle;
-    if (!turnA && !turnB) return 0;  // (NaN: neither)
-    const Vec2 n = ct.manifold.normal;
-    if (turnA && isFaceNormal(w.shapes[ct.shapeA], a.xf, n)) return kLookTurnA;
-    if (turnB && isFaceNormal(w.shapes[ct.shapeB], b.xf, -n)) return kLookTurnB;
-    return 0;
-}
-
 /// What the narrowphase found for one contact (updateManifold).
 /// `kept`: touching as before and no hit to report, so applyUpdate has
 /// nothing to do (most contacts of a resting pile; it need not read them again).
@@ -414,6 +359,50 @@ constexpr int kCollideGrain = 64;
 constexpr std::size_t kDenseGather = 4;
 
 }  // namespace
+
+namespace {
+
+/// Whether `direction` (a unit vector, world) is the outward normal of a
+/// flat side of shape sh at pose xf, within 0.8 degrees: the side of a
+/// polygon, a capsule's or a segment's length. A circle has none, nor has a
+/// rounded end or a corner (a normal between a corner and the other shape).
+bool isFaceNormal(const Shape& sh, const Transform& xf, Vec2 direction) {
+    constexpr float kAligned = 0.9999f;
+    const Vec2 local = invRotate(xf.q, direction);
+    switch (sh.type) {
+        case ShapeType::polygon: {
+            const Polygon& p = sh.geometry.polygon;
+            for (int i = 0; i < p.count; ++i)
+                if (dot(p.normals[i], local) > kAligned) return true;
+            return false;
+        }
+        case ShapeType::capsule:
+        case ShapeType::segment: {
+            const Vec2 a = sh.type == ShapeType::capsule ? sh.geometry.capsule.center1 : sh.geometry.segment.point1;
+            const Vec2 b = sh.type == ShapeType::capsule ? sh.geometry.capsule.center2 : sh.geometry.segment.point2;
+            const Vec2 side = normalize(b - a);
+            return std::abs(cross(side, local)) > kAligned;
+        }
+        case ShapeType::circle: return false;
+    }
+    return false;
+}
+
+}  // namespace
+
+/// kLookTurnA, kLookTurnB or 0: whether the contact's normal is a flat side
+/// of A (or, reversed, of B) whose body turns further than
+/// kTurningRowAngle in the step of dt, at its angular velocity now.
+std::uint8_t turningLook(const WorldState& w, const Contact& ct, float dt) {
+    const Body& a = w.bodies[ct.bodyA];
+    const Body& b = w.bodies[ct.bodyB];
+    const bool turnA = std::abs(a.w) * dt > kTurningRowAngle, turnB = std::abs(b.w) * dt > kTurningRowAngle;
+    if (!turnA && !turnB) return 0;  // (NaN: neither)
+    const Vec2 n = ct.manifold.normal;
+    if (turnA && isFaceNormal(w.shapes[ct.shapeA], a.xf, n)) return kLookTurnA;
+    if (turnB && isFaceNormal(w.shapes[ct.shapeB], b.xf, -n)) return kLookTurnB;
+    return 0;
+}
 
 Manifold collideShapes(const Shape& a, const Transform& xa, const Shape& b, const Transform& xb,
                        float speculativeDistance) {
@@ -579,7 +568,6 @@ void collide(WorldState& w) {
             const ContactSurface* surface = contactSurface(w, c);
             if (surface && surface->rollingResistance > 0.0f) flags |= kLookRollingSurface;
             if (impacts.heavyOnLight) flags |= kLookHeavyOnLight;
-            flags |= turningLook(w, ct, w.stepDt);
         }
         out.rowFlags = flags;
     };

@@ -98,19 +98,22 @@ constexpr int kPackGrain = 32;
 constexpr int kPrepareGrain = 128;  ///< contacts per chunk when rows are prepared
 
 constexpr std::uint8_t kKeyRow = 1, kKeyMoveA = 2, kKeyMoveB = 4, kKeyOnePoint = 8, kKeyDeep = 16, kKeyRolling = 32,
-                       kKeyTurning = 64;
+                       kKeyTurnA = 64, kKeyTurnB = 128;
+constexpr std::uint8_t kKeyTurning = kKeyTurnA | kKeyTurnB;
 
 ColourKey colourKey(const WorldState& w, std::size_t active, int zeroState) {
     // Whether the contact has a row: contactRowBodies's test, from the
     // narrowphase's look at the contact (ContactLook) and
-    // SolverArrays::bodyMoves. Neither the contact nor its bodies are read:
-    // in a large scene each was a cache miss (many_pyramids' colouring took
-    // 0.86 to 0.90 ms reading both, 0.54 to 0.59 reading the contacts).
+    // SolverArrays::bodyMoves. Neither the contact nor its bodies are read
+    // (but for a body turning fast, below): in a large scene each was a
+    // cache miss (many_pyramids' colouring took 0.86 to 0.90 ms reading
+    // both, 0.54 to 0.59 reading the contacts).
     const ContactLook& look = w.activeLooks[active];
     if (!(look.rowFlags & kLookRow)) return {0, 0, 0};
     const std::vector<std::uint8_t>& moves = w.solver.bodyMoves;
-    const bool moveA = moves[static_cast<std::size_t>(look.bodyA)] != 0;
-    const bool moveB = moves[static_cast<std::size_t>(look.bodyB)] != 0;
+    const std::uint8_t markA = moves[static_cast<std::size_t>(look.bodyA)];
+    const std::uint8_t markB = moves[static_cast<std::size_t>(look.bodyB)];
+    const bool moveA = (markA & kBodyMoves) != 0, moveB = (markB & kBodyMoves) != 0;
     if (!moveA && !moveB) return {0, 0, 0};
     std::uint8_t flags = kKeyRow;
     if (moveA) flags |= kKeyMoveA;
@@ -118,7 +121,14 @@ ColourKey colourKey(const WorldState& w, std::size_t active, int zeroState) {
     // What decides the rows' path before any is prepared: the same tests as
     // prepareContacts' and prepareRollingResistance's.
     if (look.rowFlags & kLookDeep) flags |= kKeyDeep;
-    if (look.rowFlags & (kLookTurnA | kLookTurnB)) flags |= kKeyTurning;
+    // A body turning fast (gatherBodies marks it): a turning row if the
+    // normal is its face (turningLook reads the contact and its shapes,
+    // for these contacts only).
+    if ((markA | markB) & kBodyTurns) {
+        const std::uint8_t turn = turningLook(w, w.contacts[w.activeContacts[active]], w.stepDt);
+        if (turn & kLookTurnA) flags |= kKeyTurnA;
+        if (turn & kLookTurnB) flags |= kKeyTurnB;
+    }
     if (look.rowFlags & kLookRollingSurface) {
         const int contact = w.activeContacts[active];
         const Contact& ct = w.contacts[contact];
@@ -160,6 +170,11 @@ void colourContacts(WorldState& w) {
         }
         ++rows;
         any |= key.flags;
+        // The turning side, for preparing the row (setTurning).
+        std::uint8_t& lookFlags = w.activeLooks[i].rowFlags;
+        lookFlags = static_cast<std::uint8_t>((lookFlags & ~(kLookTurnA | kLookTurnB)) |
+                                              ((key.flags & kKeyTurnA) ? kLookTurnA : 0) |
+                                              ((key.flags & kKeyTurnB) ? kLookTurnB : 0));
         // The first colour neither movable body has a row in yet: the lowest
         // bit clear in both bodies' colour masks.
         const bool moveA = key.flags & kKeyMoveA, moveB = key.flags & kKeyMoveB;
@@ -435,7 +450,9 @@ void gatherBodyRange(WorldState& w, float h, Vec2 g, int first, int last) {
         const int b = awake[i];
         Body& body = w.bodies[b];
         body.solverIndex = static_cast<int>(i);
-        s.bodyMoves[static_cast<std::size_t>(b)] = body.invMass != 0.0f || body.invInertia != 0.0f;
+        s.bodyMoves[static_cast<std::size_t>(b)] = static_cast<std::uint8_t>(
+            (body.invMass != 0.0f || body.invInertia != 0.0f ? kBodyMoves : 0) |
+            (std::abs(body.w) * w.stepDt > kTurningRowAngle ? kBodyTurns : 0));
         s.rowBodies[static_cast<std::size_t>(b)] = rowBodyOf(body, static_cast<int>(i));
         s.stateBodies[i] = b;
         BodyState& st = s.states[i];

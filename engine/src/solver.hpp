@@ -19,6 +19,8 @@ struct WorldState;
 
 /// What the greedy colouring needs of one active contact (solver.cpp,
 /// colourContacts): its bodies, and flags.
+inline constexpr std::uint8_t kBodyMoves = 1, kBodyTurns = 2;  ///< SolverArrays::bodyMoves
+
 struct ColourKey {
     int a, b;  ///< body slots
     std::uint8_t flags;
@@ -58,9 +60,11 @@ struct SolverArrays {
     std::vector<std::uint8_t> contactColours;     ///< per active contact: its row's group (solver.cpp), or kNoRow
     std::vector<int> colourOffsets;  ///< per row group: its first row (advanced as prepareContacts places rows)
     std::vector<std::uint32_t> contactColourMasks;  ///< per body slot: the colours of its contact rows (solver.cpp)
-    /// Per body slot: 1 for a body of this step's states that moves under an
-    /// impulse (a non-zero inverse mass or inertia), what the colouring reads
-    /// instead of the bodies themselves.
+    /// Per body slot, for a body of this step's states: kBodyMoves when it
+    /// moves under an impulse (a non-zero inverse mass or inertia), kBodyTurns
+    /// when it turns further than kTurningRowAngle in the step (its contacts
+    /// may need turning rows), what the colouring reads instead of the bodies
+    /// themselves.
     std::vector<std::uint8_t> bodyMoves;
     /// Per body slot: for a body of this step's states, what preparing the
     /// rows reads of it (state kNullIndex for the others).
