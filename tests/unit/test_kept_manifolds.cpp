@@ -24,8 +24,8 @@ constexpr float kPi = 3.14159265f;
 /// steps (the chain's corners are at `radius`, its sides 0.966·radius away).
 float drumLoad(float omega, int steps, float radius = 2.5f) {
     World world({.enableSleep = false});
-    const BodyId drum =
-        world.createBody({.type = BodyType::kinematic_body, .position = {0.0f, 5.0f}, .angularVelocity = omega});
+    const BodyId drum = world.createBody(
+        {.type = BodyType::kinematic_body, .position = {0.0f, 5.0f}, .angularVelocity = omega});
     std::vector<Vec2> points;
     for (int i = 0; i < 12; ++i) {
         const float a = -kPi / 6.0f - static_cast<float>(i) * kPi / 6.0f;  // clockwise
