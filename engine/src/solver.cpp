@@ -170,11 +170,14 @@ void colourContacts(WorldState& w) {
         }
         ++rows;
         any |= key.flags;
-        // The turning side, for preparing the row (setTurning).
-        std::uint8_t& lookFlags = w.activeLooks[i].rowFlags;
-        lookFlags = static_cast<std::uint8_t>((lookFlags & ~(kLookTurnA | kLookTurnB)) |
-                                              ((key.flags & kKeyTurnA) ? kLookTurnA : 0) |
-                                              ((key.flags & kKeyTurnB) ? kLookTurnB : 0));
+        // The turning side, for preparing the row (setTurning). The look
+        // has none (collide wrote it this step), and is written only for a
+        // turning row: written for every row, each look's line would move to
+        // the stepping thread's core and back to the worker that prepares
+        // the row (docs/performance.md, why two workers gain less).
+        if (key.flags & kKeyTurning)
+            w.activeLooks[i].rowFlags |= static_cast<std::uint8_t>(((key.flags & kKeyTurnA) ? kLookTurnA : 0) |
+                                                                   ((key.flags & kKeyTurnB) ? kLookTurnB : 0));
         // The first colour neither movable body has a row in yet: the lowest
         // bit clear in both bodies' colour masks.
         const bool moveA = key.flags & kKeyMoveA, moveB = key.flags & kKeyMoveB;
