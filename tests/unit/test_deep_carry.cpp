@@ -40,6 +40,7 @@ void oneDeepRow(WorldState& w, float depth, float impulse) {
     cc.deepOverlap = true;
     cc.pointsTogether = false;
     cc.roundA = cc.roundB = false;
+    cc.turnA = cc.turnB = false;
     cc.pointCount = 1;
     cc.pairScale = 1.0f;
     ContactPointConstraint& cp = cc.points[0];

@@ -61,6 +61,7 @@ void deepRow(WorldState& w, Vec2 gravity, bool supported) {
         cc.impulseScale = soft.impulseScale;
         cc.deepOverlap = true;
         cc.roundA = cc.roundB = false;
+        cc.turnA = cc.turnB = false;
         cc.pointCount = 1;
         ContactPointConstraint& cp = cc.points[0];
         cp.rA = cp.rB = {0.0f, 0.0f};

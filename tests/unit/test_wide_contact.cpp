@@ -75,6 +75,7 @@ void fill(WorldState& w, unsigned seed, int n) {
         cc.pairScale = cc.pointsTogether ? 0.5f + 0.5f * unit(rng) : 1.0f;
         cc.roundA = unit(rng) < 0.3f;
         cc.roundB = unit(rng) < 0.3f;
+        cc.turnA = cc.turnB = false;  // (turning rows are the scalar path's alone)
         for (int j = 0; j < cc.pointCount; ++j) {
             ContactPointConstraint& cp = cc.points[j];
             cp.rA = {u(rng), u(rng)};
