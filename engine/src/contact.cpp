@@ -364,27 +364,15 @@ namespace {
 
 /// Whether `direction` (a unit vector, world) is the outward normal of a
 /// flat side of shape sh at pose xf, within 0.8 degrees: the side of a
-/// polygon, a capsule's or a segment's length. A circle has none, nor has a
-/// rounded end or a corner (a normal between a corner and the other shape).
+/// polygon, a capsule's or a segment's length (shapeFaceNormals). A circle
+/// has none, nor has a rounded end or a corner (a normal between a corner
+/// and the other shape).
 bool isFaceNormal(const Shape& sh, const Transform& xf, Vec2 direction) {
     constexpr float kAligned = 0.9999f;
-    const Vec2 local = invRotate(xf.q, direction);
-    switch (sh.type) {
-        case ShapeType::polygon: {
-            const Polygon& p = sh.geometry.polygon;
-            for (int i = 0; i < p.count; ++i)
-                if (dot(p.normals[i], local) > kAligned) return true;
-            return false;
-        }
-        case ShapeType::capsule:
-        case ShapeType::segment: {
-            const Vec2 a = sh.type == ShapeType::capsule ? sh.geometry.capsule.center1 : sh.geometry.segment.point1;
-            const Vec2 b = sh.type == ShapeType::capsule ? sh.geometry.capsule.center2 : sh.geometry.segment.point2;
-            const Vec2 side = normalize(b - a);
-            return std::abs(cross(side, local)) > kAligned;
-        }
-        case ShapeType::circle: return false;
-    }
+    Vec2 normals[kMaxPolygonVertices];
+    const int count = shapeFaceNormals(sh, xf, normals);
+    for (int i = 0; i < count; ++i)
+        if (dot(normals[i], direction) > kAligned) return true;
     return false;
 }
 

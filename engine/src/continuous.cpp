@@ -265,8 +265,8 @@ bool crossesSegment(Vec2 p0, Vec2 p1, const Shape& segment, const Transform& xf,
 /// at the first touch stalled it at every joint of a floor it slid along.
 /// (Box2D v3 skips fast motion parallel to a chain segment the same way:
 /// Catto, 2025, Box2D v3.1, solver.c.)
-bool grazes(const Shape& shape, const ShapeCore& core, const Mover& m, const Shape& other, const Transform& xfOther,
-            float speculativeDistance) {
+bool grazes(const Shape& shape, const ShapeCore& core, const Mover& m, const Shape& other, const ShapeCore& otherCore,
+            const Transform& xfOther, float speculativeDistance) {
     const Centroid c = centroidOf(shape, core);
     const Transform xf1 = m.sweep.at(1.0f);
     const Vec2 p0 = transformPoint(m.sweep.at(0.0f), c.point), p1 = transformPoint(xf1, c.point);
@@ -279,7 +279,6 @@ bool grazes(const Shape& shape, const ShapeCore& core, const Mover& m, const Sha
     // then, let it close). A ball rolling at 20 m/s with a hop of 6 mm over
     // the ground closed that gap and was put back to the start of its step,
     // 33 cm behind, where a kinematic wall pushing it then passed over it.
-    const ShapeCore otherCore = shapeCore(other);
     const DistanceResult start = shapeDistance(core.points, core.count, m.sweep.at(0.0f), otherCore.points,
                                                otherCore.count, xfOther);
     const float gap = std::max(start.distance - core.radius - otherCore.radius, 0.0f);
@@ -312,7 +311,8 @@ void sweepPair(const Shape& shape, const ShapeCore& core, const Mover& m, const 
     const ShapeCore otherCore = shapeCore(other);
     const Impact hit = timeOfImpact(core, m.sweep, m.bound, otherCore, xfOther, kLinearSlop);
     if (!hit.startsTouching) {
-        if (hit.t < stop.t && !grazes(shape, core, m, other, xfOther, speculativeDistance)) stop = {hit.t, false, {}};
+        if (hit.t < stop.t && !grazes(shape, core, m, other, otherCore, xfOther, speculativeDistance))
+            stop = {hit.t, false, {}};
         return;
     }
     // Already touching: the contact keeps the part that touches; the body's
