@@ -17,10 +17,10 @@ namespace i2d::detail {
 
 struct WorldState;
 
-/// What the greedy colouring needs of one active contact (solver.cpp,
-/// colourContacts): its bodies, and flags.
 inline constexpr std::uint8_t kBodyMoves = 1, kBodyTurns = 2;  ///< SolverArrays::bodyMoves
 
+/// What the greedy colouring needs of one active contact (solver.cpp,
+/// colourContacts): its bodies, and flags.
 struct ColourKey {
     int a, b;  ///< body slots
     std::uint8_t flags;
