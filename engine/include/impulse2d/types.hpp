@@ -125,14 +125,17 @@ struct WorldSettings {
     /// A touching contact between flat shapes (polygons, segments) keeps its
     /// manifold, with its points fixed in the two bodies and its normal fixed,
     /// while no point of one body has moved further than this (m) relative
-    /// to the other since the manifold was computed; beyond it, or after a
-    /// turn of about 11°, the manifold is recomputed. This is what keeps tall
-    /// stacks standing with soft contacts (docs/validation.md, "Columns").
+    /// to the other since the manifold was computed; beyond it, after a
+    /// turn of one body against the other of about 11°, or after the first
+    /// body has turned 2° (its normal is fixed in the world), the manifold
+    /// is recomputed. This is what keeps tall stacks standing with soft
+    /// contacts (docs/validation.md, "Columns").
     /// 0 recomputes every manifold every step.
     float manifoldReuseDistance = 0.05f;
     /// Fattening of broadphase boxes (m): a proxy moves in the tree only when
     /// its shape leaves the fat box. A moving body's new box is also
-    /// stretched ahead along its velocity, by four steps of motion.
+    /// stretched ahead along its velocity: the coming step's motion and two
+    /// steps beyond it.
     float aabbMargin = 0.1f;
     /// Speed limit for stability (m/s).
     float maxLinearSpeed = 400.0f;
