@@ -310,6 +310,21 @@ Update updateManifold(WorldState& w, int c) {
     return touching ? Update::touching : Update::apart;
 }
 
+/// A touching contact's look for the solver (ContactLook::rowFlags, but for
+/// kLookHeavyOnLight, which the impact stage reads): whether it has a row,
+/// of one point, with a deep overlap, on a rolling surface.
+std::uint8_t rowLook(const WorldState& w, int c, const Contact& ct) {
+    if (ct.isSensor || ct.manifold.pointCount == 0) return 0;
+    std::uint8_t flags = kLookRow;
+    if (ct.manifold.pointCount == 1) flags |= kLookOnePoint;
+    const float deep = deepOverlapOf(ct);
+    for (int j = 0; j < ct.manifold.pointCount; ++j)
+        if (ct.manifold.points[j].separation < -deep) flags |= kLookDeep;
+    const ContactSurface* surface = contactSurface(w, c);
+    if (surface && surface->rollingResistance > 0.0f) flags |= kLookRollingSurface;
+    return flags;
+}
+
 /// Whether the contact touches once `update` is applied (applyUpdate).
 constexpr bool touchingAfter(Update update) { return update == Update::kept || update == Update::touching; }
 
@@ -546,17 +561,8 @@ void collide(WorldState& w) {
         out.bodyB = ct.bodyB;
         const ImpactLook impacts = lookForImpacts ? lookAtImpacts(w, ct, touching) : ImpactLook{true, false};
         out.passOver = impacts.passOver;
-        std::uint8_t flags = 0;
-        if (touching && !ct.isSensor && ct.manifold.pointCount > 0) {
-            flags = kLookRow;
-            if (ct.manifold.pointCount == 1) flags |= kLookOnePoint;
-            const float deep = deepOverlapOf(ct);
-            for (int j = 0; j < ct.manifold.pointCount; ++j)
-                if (ct.manifold.points[j].separation < -deep) flags |= kLookDeep;
-            const ContactSurface* surface = contactSurface(w, c);
-            if (surface && surface->rollingResistance > 0.0f) flags |= kLookRollingSurface;
-            if (impacts.heavyOnLight) flags |= kLookHeavyOnLight;
-        }
+        std::uint8_t flags = touching ? rowLook(w, c, ct) : 0;
+        if (flags && impacts.heavyOnLight) flags |= kLookHeavyOnLight;
         out.rowFlags = flags;
     };
     auto keep = [&](int c, const ContactLook& first) {
@@ -637,6 +643,71 @@ void collide(WorldState& w) {
         for (; processed < roundEnd; ++processed) {
             const int c = scratch[processed];
             if (applyUpdate(w, c, static_cast<Update>(updates[processed]))) keep(c, gatheredLooks[processed]);
+        }
+    }
+}
+
+}  // namespace i2d::detail
+
+namespace i2d::detail {
+
+void refreshStruckContacts(WorldState& w) {
+    // A struck body is awake, so collide gathered all its contacts: the
+    // struck bodies' lists are walked, not every active contact.
+    if (w.impactStruckBodies.empty()) return;
+    // A dynamic body asleep on the other side stays as collide left it
+    // (waking it here would change the islands after they were gathered).
+    auto asleep = [&](const Body& b) { return b.type == BodyType::dynamic_body && !b.awake; };
+    for (const int s : w.impactStruckBodies) {
+        for (const int c : w.bodies[s].contacts) {
+            Contact& ct = w.contacts[c];
+            if (ct.isSensor || ct.manifold.pointCount > 0) continue;
+            Body& a = w.bodies[ct.bodyA];
+            Body& b = w.bodies[ct.bodyB];
+            if (asleep(a) || asleep(b)) continue;
+            // At the poses the step began with (the rows measure from them,
+            // impactShift adding what the stage moved), with the new velocities.
+            struct Pose {
+                Body& body;
+                Vec2 center;
+                Transform xf;
+            };
+            Pose saved[2] = {{a, a.center, a.xf}, {b, b.center, b.xf}};
+            for (Pose& p : saved)
+                if (const StepStart* start = w.shiftedStart(p.body)) {
+                    p.body.center = start->center;
+                    p.body.xf.q = start->q;
+                    p.body.xf.p = start->center - rotate(start->q, p.body.localCenter);
+                }
+            auto restore = [&] {
+                for (Pose& p : saved) {
+                    p.body.center = p.center;
+                    p.body.xf = p.xf;
+                }
+            };
+            Manifold fresh;
+            computeManifold(w, ct, fresh);
+            if (ct.seamRule) dropSeamGhosts(w, ct, fresh);
+            if (w.preSolve && fresh.pointCount > 0 &&
+                !w.preSolve(w.shapeHandle(ct.shapeA), w.shapeHandle(ct.shapeB), fresh))
+                fresh.pointCount = 0;
+            // Rare (a few contacts a step in a pile under a rain of bodies):
+            // its place among the active contacts is looked up.
+            const auto at = fresh.pointCount > 0 ? std::find(w.activeContacts.begin(), w.activeContacts.end(), c)
+                                                 : w.activeContacts.end();
+            if (at == w.activeContacts.end()) {  // (not gathered: cannot be, as said above)
+                restore();
+                continue;
+            }
+            ct.manifold = fresh;
+            markOverlapFromStart(w, ct, a, b);
+            for (int j = 0; j < 2; ++j) ct.normalImpulse[j] = ct.tangentImpulse[j] = 0.0f;
+            ct.touchBegan = true;
+            ct.framed = false;
+            if (ct.persists) recordManifoldFrame(ct, a, b);
+            restore();
+            applyUpdate(w, c, Update::touching);
+            w.activeLooks[static_cast<std::size_t>(at - w.activeContacts.begin())].rowFlags = rowLook(w, c, ct);
         }
     }
 }

@@ -200,6 +200,13 @@ std::uint8_t turningLook(const WorldState& w, const Contact& ct, float dt);
 /// activeLooks.
 void collide(WorldState& w);
 
+/// After the impact stage: a contact of a body the stage struck that had no
+/// manifold point (its bodies, at their velocities when the step began,
+/// could not close the gap within it) gets its manifold again at the new
+/// velocities, so that a body knocked into a neighbour meets it there rather
+/// than going into it for a step. Events and wakes as collide's.
+void refreshStruckContacts(WorldState& w);
+
 /// Destroys every contact of `body` whose other shape is `shape` (or any of the
 /// body's contacts when `shape` is kNullIndex), reporting touching ones as ended.
 void destroyBodyContacts(WorldState& w, int body, int shape);

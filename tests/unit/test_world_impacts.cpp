@@ -247,6 +247,50 @@ TEST(WorldImpacts, BodyStruckEarlyAndLateInAStepEndsOutsideBoth) {
     }
 }
 
+// A body at rest struck in a step runs into a neighbour it was a few
+// centimetres from. The contact between the two had no point when the step
+// began (neither moved: its margin was the speculative distance, 2 cm), so
+// no row stopped the struck body: knocked at 10 m/s from 5 cm away, it went
+// 11 cm into its neighbour in the step (a paddle at 20 rad/s in a box of
+// small boxes pressed them 9 to 15 cm into each other that way). Such a
+// contact now gets its manifold again at the struck body's new velocity
+// (refreshStruckContacts, contact.cpp) and its row stops it at the surface.
+// Without gravity: every overlap past the penetration slop (which the soft
+// rows leave unpushed) is the strike's, and the neighbour is pushed on.
+TEST(WorldImpacts, ABodyKnockedIntoANeighbourMeetsIt) {
+    for (const bool circles : {false, true}) {
+        World world({.gravity = {0, 0}, .enableSleep = false});
+        auto make = [&](float x, float v) {
+            BodyId b = world.createBody({.type = BodyType::dynamic_body, .position = {x, 0}, .linearVelocity = {v, 0}});
+            if (circles)
+                world.createCircleShape(b, {}, Circle{{0.0f, 0.0f}, 0.5f});
+            else
+                world.createPolygonShape(b, {}, makeBox(0.5f, 0.5f));
+            return b;
+        };
+        const float gap = 0.05f;  // between the neighbour and the body struck (m)
+        const BodyId neighbour = make(-1.0f - gap, 0.0f);
+        const BodyId struck = make(0.0f, 0.0f);
+        const BodyId striker = make(1.001f, -20.0f);  // 1 mm away: struck at the step's start
+        const std::pair<BodyId, BodyId> pairs[] = {{neighbour, struck}, {struck, striker}};
+        for (int i = 0; i < 10; ++i) {
+            world.step(1.0f / 60.0f);
+            const float slop = world.settings().penetrationSlop;
+            for (const auto& [p, q] : pairs) {
+                const Manifold m = circles ? collideCircles(Circle{{0, 0}, 0.5f}, world.transform(p),
+                                                            Circle{{0, 0}, 0.5f}, world.transform(q), 0.0f)
+                                           : collidePolygons(makeBox(0.5f, 0.5f), world.transform(p),
+                                                             makeBox(0.5f, 0.5f), world.transform(q), 0.0f);
+                float depth = 0.0f;
+                for (int j = 0; j < m.pointCount; ++j) depth = std::max(depth, -m.points[j].separation);
+                ASSERT_LE(depth, slop) << (circles ? "circles" : "boxes") << ", step " << i;
+            }
+        }
+        // The neighbour was reached and pushed on.
+        EXPECT_LT(world.linearVelocity(neighbour).x, -1.0f) << (circles ? "circles" : "boxes");
+    }
+}
+
 namespace {
 
 /// Largest total energy over 5 s, relative to its start, of two boxes (half
