@@ -7,6 +7,7 @@
 
 #include <array>
 #include <cstdint>
+#include <vector>
 
 #include "impulse2d/collision.hpp"
 #include "slot_array.hpp"
@@ -88,6 +89,11 @@ struct Contact {
     /// Its manifold got points in this step's narrowphase and had none
     /// before: its rows start without the load they will carry (kWideCold).
     bool touchBegan : 1 = false;
+    /// Its manifold got points after a body of it was struck in this step's
+    /// impact stage (refreshStruckContacts): it could close its gap only
+    /// after that strike, which the stage's timing of it allows for.
+    /// Cleared by the narrowphase.
+    bool foundAfterStrike : 1 = false;
     /// How deep a point must be to count as a deep overlap, in 1/255 of
     /// kDeepOverlap (kFullDeepScale: kDeepOverlap itself); set from the two
     /// shapes' thickness when the contact is created (deepOverlapOf).
@@ -200,12 +206,15 @@ std::uint8_t turningLook(const WorldState& w, const Contact& ct, float dt);
 /// activeLooks.
 void collide(WorldState& w);
 
-/// After the impact stage: a contact of a body the stage struck that had no
-/// manifold point (its bodies, at their velocities when the step began,
-/// could not close the gap within it) gets its manifold again at the new
-/// velocities, so that a body knocked into a neighbour meets it there rather
-/// than going into it for a step. Events and wakes as collide's.
-void refreshStruckContacts(WorldState& w);
+/// In the impact stage, after a sweep and after the stage: each contact of a
+/// body in `struckBodies` (bodies the stage struck) that has no manifold
+/// point (its bodies, at their velocities when the step began, could not
+/// close the gap within it) gets its manifold again at the poses the step
+/// began with and the new velocities. A point found there is struck by the
+/// stage's next sweep and is a row for the solver, so that a body knocked
+/// into a neighbour meets it rather than going into it for a step. Events
+/// and wakes as collide's.
+void refreshStruckContacts(WorldState& w, const std::vector<int>& struckBodies);
 
 /// Destroys every contact of `body` whose other shape is `shape` (or any of the
 /// body's contacts when `shape` is kNullIndex), reporting touching ones as ended.

@@ -280,6 +280,48 @@ Vec2 localCentroid(const Shape& s) {
     return {};
 }
 
+/// The manifold of `moving` against the front face of chain segment
+/// `chain` alone: the segment's line extended past both ends (so that no end
+/// is a feature and the normal is the face's), keeping the points that lie
+/// along the segment itself (those beyond an end are the neighbour's to
+/// make). Ids are set apart from the segment's own manifolds'.
+Manifold faceOnlyManifold(const WorldState& w, const Shape& chain, const Shape& moving, float margin) {
+    const Transform& xfChain = w.bodies[chain.body].xf;
+    const Transform& xfMoving = w.bodies[moving.body].xf;
+    const Segment& seg = chain.geometry.segment;
+    const float span = distance(seg.point1, seg.point2);
+    Manifold f;
+    if (!(span > 0.0f)) return f;
+    const Vec2 d = (1.0f / span) * (seg.point2 - seg.point1);
+    // Past the whole of the moving shape (its box's diagonal), so that no end is within its reach.
+    const AABB box = shapeAABB(moving, xfMoving);
+    const float reach = length(box.upper - box.lower);
+    const Segment line{seg.point1 - reach * d, seg.point2 + reach * d};
+    switch (moving.type) {
+        case ShapeType::circle:
+            f = collideSegmentAndCircle(line, xfChain, moving.geometry.circle, xfMoving, margin);
+            break;
+        case ShapeType::capsule:
+            f = collideSegmentAndCapsule(line, xfChain, moving.geometry.capsule, xfMoving, margin);
+            break;
+        case ShapeType::polygon:
+            f = collideSegmentAndPolygon(line, xfChain, moving.geometry.polygon, xfMoving, margin);
+            break;
+        default: return Manifold{};  // (two segments never collide)
+    }
+    const Vec2 p1 = transformPoint(xfChain, seg.point1), dw = rotate(xfChain.q, d);
+    int kept = 0;
+    for (int i = 0; i < f.pointCount; ++i) {
+        const float along = dot(f.points[i].point - p1, dw);
+        if (along < -kShareTolerance || along > span + kShareTolerance) continue;
+        f.points[kept] = f.points[i];
+        f.points[kept].id = static_cast<std::uint16_t>(f.points[kept].id | 0x8000u);
+        ++kept;
+    }
+    f.pointCount = kept;
+    return f;
+}
+
 /// A chain segment's rule, with its stored ghost vertices as the
 /// neighbours: one-sided (nothing whose centroid is behind the segment's
 /// line collides with it, nor any point whose normal points behind it), and
@@ -312,18 +354,39 @@ void applyChainRule(const WorldState& w, const Shape& chain, const Shape& moving
     // front face sliding along a flat chain) clips both of its ends; the far
     // one, kept by a fast body's speculative margin, carried the ghost normal
     // past the near end's rule and stopped the box.
+    //
+    // A neighbour rising in front of the segment (a concave corner, as
+    // inside a drum) makes a point at the shared vertex no ghost but a body
+    // pressed into the corner, against both sides: dropped by both segments,
+    // a box carried round the inside of a chain drum lost both contacts at
+    // once and left through the corner. Such a point's manifold is taken
+    // against the segment's face alone (faceOnlyManifold). Kept with its own
+    // normal instead, the normal of the body's side, a box driven across a
+    // chain's shallow valley stopped dead at its first vertex.
+    float margin = w.settings.speculativeDistance;
+    for (int i = 0; i < m.pointCount; ++i) margin = std::max(margin, m.points[i].separation);
     for (int i = 0; i < m.pointCount; ++i) {
         const ManifoldPoint& pt = m.points[i];
         const Vec2 p = pt.point - 0.5f * pt.separation * n;
-        bool ghost = false;
-        if (distance(p, p1) <= kShareTolerance && distance(g1, p1) > 0.0f)
-            ghost = dot(n, normalize(g1 - p1)) > kLean;
-        else if (distance(p, p2) <= kShareTolerance && distance(g2, p2) > 0.0f)
-            ghost = dot(n, normalize(g2 - p2)) > kLean;
-        if (ghost) {
-            m.pointCount = 0;
+        Vec2 v{}, g{};
+        if (distance(p, p1) <= kShareTolerance)
+            v = p1, g = g1;
+        else if (distance(p, p2) <= kShareTolerance)
+            v = p2, g = g2;
+        else
+            continue;
+        if (!(distance(g, v) > 0.0f)) continue;
+        const Vec2 u = normalize(g - v);
+        if (!(dot(n, u) > kLean)) continue;
+        if (dot(front, u) > kLean) {  // concave: the face alone
+            // (f's normal points from the chain to `moving`, as n does.)
+            const bool chainIsA = dot(m.normal, n) > 0.0f;
+            m = faceOnlyManifold(w, chain, moving, margin);
+            if (!chainIsA) m.normal = -m.normal;
             return;
         }
+        m.pointCount = 0;
+        return;
     }
 }
 

@@ -858,7 +858,6 @@ void stepWorld(WorldState& w, float dt) {
 
     t = Clock::now();
     resolveImpacts(w, dt);
-    refreshStruckContacts(w);
     profile.impacts = msSince(t);
 
     t = Clock::now();

@@ -56,6 +56,7 @@ struct WorldState {
     std::vector<float> impactBodyDw;      ///< ... and of angular velocity
     std::vector<StepStart> impactStarts;  ///< per body slot: its start, if the impact stage moved it (body.hpp)
     std::vector<int> impactStruckBodies, impactStruckContacts;  ///< what the last impact stage wrote
+    std::vector<int> impactFreshlyStruck;                       ///< scratch: the bodies one sweep of the stage struck
     // The impact stage's shock pass (impact_stage.cpp): scratch, kept so a
     // step allocates nothing once grown. shockLocal is per body slot, −1
     // between passes.

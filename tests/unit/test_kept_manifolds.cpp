@@ -6,6 +6,7 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
+#include <random>
 #include <vector>
 
 #include <impulse2d/impulse2d.hpp>
@@ -16,13 +17,23 @@ namespace {
 constexpr float kDt = 1.0f / 60.0f;
 constexpr float kPi = 3.14159265f;
 
+struct DrumFigures {
+    float farthest = 0.0f;  ///< largest distance of a body's origin from the drum's centre (m)
+    int lost = 0;           ///< bodies outside the drum's corners at the end
+};
+
 /// A kinematic drum turning at `omega`: a looped chain of 12 points on a
 /// circle of radius `radius`, clockwise so that its solid side is outside,
 /// with 30 small bodies (boxes, discs, capsules, triangles, pentagons and
-/// flat boxes, about 0.3 m across) created in a grid inside it. Returns the
+/// flat boxes, about 0.3 m across) created in a grid inside it, each moved
+/// by up to 5 cm either way in x and y by `seed` (0: not moved). Returns the
 /// largest distance of a body's origin from the drum's centre over `steps`
-/// steps (the chain's corners are at `radius`, its sides 0.966·radius away).
-float drumLoad(float omega, int steps, float radius = 2.5f) {
+/// steps (the chain's corners are at `radius`, its sides 0.966·radius away)
+/// and how many bodies end outside the corners.
+DrumFigures drumLoad(float omega, int steps, float radius = 2.5f, unsigned seed = 0) {
+    std::mt19937 rng(seed);
+    std::uniform_real_distribution<float> jitter(-0.05f, 0.05f);
+    auto moved = [&] { return seed == 0 ? 0.0f : jitter(rng); };
     World world({.enableSleep = false});
     const BodyId drum = world.createBody(
         {.type = BodyType::kinematic_body, .position = {0.0f, 5.0f}, .angularVelocity = omega});
@@ -43,7 +54,7 @@ float drumLoad(float omega, int steps, float radius = 2.5f) {
     for (int j = 0; j < 5; ++j)
         for (int i = 0; i < 6; ++i) {
             const BodyId b = world.createBody(
-                {.type = BodyType::dynamic_body, .position = {-1.4f + 0.5f * i, 3.6f + 0.5f * j}});
+                {.type = BodyType::dynamic_body, .position = {-1.4f + 0.5f * i + moved(), 3.6f + 0.5f * j + moved()}});
             const ShapeDef def{};
             switch ((i + 6 * j) % 6) {
                 case 0: world.createPolygonShape(b, def, makeBox(0.15f, 0.15f)); break;
@@ -55,12 +66,13 @@ float drumLoad(float omega, int steps, float radius = 2.5f) {
             }
             load.push_back(b);
         }
-    float farthest = 0.0f;
+    DrumFigures f;
     for (int step = 0; step < steps; ++step) {
         world.step(kDt);
-        for (const BodyId b : load) farthest = std::max(farthest, length(world.position(b) - world.position(drum)));
+        for (const BodyId b : load) f.farthest = std::max(f.farthest, length(world.position(b) - world.position(drum)));
     }
-    return farthest;
+    for (const BodyId b : load) f.lost += length(world.position(b) - world.position(drum)) > radius ? 1 : 0;
+    return f;
 }
 
 // A drum's load turns with it, so a load resting on a side barely moves
@@ -77,11 +89,33 @@ float drumLoad(float omega, int steps, float radius = 2.5f) {
 // and 2.42 m.
 TEST(KeptManifolds, AChainDrumTurningKeepsItsLoad) {
     for (const float omega : {1.0f, 5.0f, 12.0f}) {
-        const float farthest = drumLoad(omega, 600);
+        const float farthest = drumLoad(omega, 600).farthest;
         std::printf("[figure] chain drum turning at %.0f rad/s: bodies at most %.3f m from its centre (corners at "
                     "2.5 m)\n",
                     omega, farthest);
         EXPECT_LT(farthest, 2.5f) << omega << " rad/s";
+    }
+}
+
+// The drum's corners are concave from inside: both sides rise from the
+// corner towards the load. A box pressed into a corner meets the chain's
+// shared vertex with one of its own faces, so each side's manifold has the
+// box's face normal at that vertex, which the chain rule took for a ghost (a
+// normal leaning over the neighbouring side, as a box sliding across a flat
+// junction catches its vertex) and dropped, on both sides at once: the box
+// left through the corner. At a vertex whose neighbour rises in front of the
+// side, the manifold is now taken against the side's face alone (seams.cpp,
+// faceOnlyManifold). These ten layouts of the load (seeds 1 to 10) lost 3
+// and 3 of their 300 bodies at 8 and 10 rad/s before; none now. (At 12, 14
+// and 16 rad/s, 8, 14 and 30 before against 1, 2 and 8, where the load
+// presses thin bodies into the sides deeper than they are thick;
+// docs/robustness.md.)
+TEST(KeptManifolds, AChainDrumsConcaveCornersHoldTheLoadPressedIntoThem) {
+    for (const float omega : {8.0f, 10.0f}) {
+        int lost = 0;
+        for (unsigned seed = 1; seed <= 10; ++seed) lost += drumLoad(omega, 600, 2.5f, seed).lost;
+        std::printf("[figure] chain drum turning at %.0f rad/s: %d of 300 bodies lost over 10 layouts\n", omega, lost);
+        EXPECT_EQ(lost, 0) << omega << " rad/s";
     }
 }
 
