@@ -650,10 +650,6 @@ void collide(WorldState& w) {
     }
 }
 
-}  // namespace i2d::detail
-
-namespace i2d::detail {
-
 void refreshStruckContacts(WorldState& w, const std::vector<int>& struckBodies) {
     // A struck body is awake, so collide gathered all its contacts: the
     // struck bodies' lists are walked, not every active contact.
@@ -696,11 +692,14 @@ void refreshStruckContacts(WorldState& w, const std::vector<int>& struckBodies) 
                 !w.preSolve(w.shapeHandle(ct.shapeA), w.shapeHandle(ct.shapeB), fresh))
                 fresh.pointCount = 0;
             // Only a manifold with more points than before is taken (what
-            // the step's start showed stays). Rare (a few contacts a step in
-            // a pile under a rain of bodies): its place among the active
-            // contacts is looked up.
-            const auto at = fresh.pointCount > had ? std::find(w.activeContacts.begin(), w.activeContacts.end(), c)
-                                                   : w.activeContacts.end();
+            // the step's start showed stays).
+            if (fresh.pointCount <= had) {
+                restore();
+                continue;
+            }
+            // Rare (a few contacts a step in a pile under a rain of bodies):
+            // its place among the active contacts is looked up.
+            const auto at = std::find(w.activeContacts.begin(), w.activeContacts.end(), c);
             if (at == w.activeContacts.end()) {  // (not gathered: cannot be, as said above)
                 restore();
                 continue;

@@ -517,7 +517,10 @@ public:
     /// excluded; manifold with points), after its manifold is computed:
     /// return false to switch the contact off for this step. One-way
     /// platforms: switch off contacts whose normal does not push the body up
-    /// (docs/guide.md). Called for contacts with an awake body only.
+    /// (docs/guide.md). Called for contacts with an awake body only. A
+    /// contact whose body the step's impact stage strikes may gain points
+    /// at the new velocity (docs/impacts.md): it is called again with that
+    /// manifold, and false then keeps the one it had.
     void setPreSolve(PreSolveFn fn);
 
     // ---- Queries --------------------------------------------------------
