@@ -206,14 +206,16 @@ std::uint8_t turningLook(const WorldState& w, const Contact& ct, float dt);
 /// activeLooks.
 void collide(WorldState& w);
 
-/// In the impact stage, after a sweep and after the stage: each contact of a
-/// body in `struckBodies` (bodies the stage struck) that has no manifold
-/// point (its bodies, at their velocities when the step began, could not
-/// close the gap within it) gets its manifold again at the poses the step
-/// began with and the new velocities. A point found there is struck by the
+/// In the impact stage, after each sweep and after the shock pass: each
+/// contact of a body in `struckBodies` (bodies just struck) whose manifold is
+/// not full (no point, or one where two can be: at their velocities when
+/// the step began its bodies could not close the rest of the gap within it)
+/// gets its manifold again at the poses the step began with and the new
+/// velocities, taken when it has more points (impulses carried by feature
+/// id; Contact::foundAfterStrike set). A point found there is struck by the
 /// stage's next sweep and is a row for the solver, so that a body knocked
-/// into a neighbour meets it rather than going into it for a step. Events
-/// and wakes as collide's.
+/// into a neighbour meets it rather than going into it for a step. A new
+/// touch's events and wakes are collide's.
 void refreshStruckContacts(WorldState& w, const std::vector<int>& struckBodies);
 
 /// Destroys every contact of `body` whose other shape is `shape` (or any of the

@@ -369,17 +369,16 @@ void applyChainRule(const WorldState& w, const Shape& chain, const Shape& moving
         const ManifoldPoint& pt = m.points[i];
         const Vec2 p = pt.point - 0.5f * pt.separation * n;
         Vec2 v{}, g{};
-        if (distance(p, p1) <= kShareTolerance)
+        if (distance(p, p1) <= kShareTolerance && distance(g1, p1) > 0.0f)
             v = p1, g = g1;
-        else if (distance(p, p2) <= kShareTolerance)
+        else if (distance(p, p2) <= kShareTolerance && distance(g2, p2) > 0.0f)
             v = p2, g = g2;
         else
             continue;
-        if (!(distance(g, v) > 0.0f)) continue;
         const Vec2 u = normalize(g - v);
         if (!(dot(n, u) > kLean)) continue;
         if (dot(front, u) > kLean) {  // concave: the face alone
-            // (f's normal points from the chain to `moving`, as n does.)
+            // (faceOnlyManifold's normal points from the chain to `moving`, as n does.)
             const bool chainIsA = dot(m.normal, n) > 0.0f;
             m = faceOnlyManifold(w, chain, moving, margin);
             if (!chainIsA) m.normal = -m.normal;
