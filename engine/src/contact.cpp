@@ -247,6 +247,26 @@ void markOverlapFromStart(const WorldState& w, Contact& ct, const Body& a, const
 /// nothing to do (most contacts of a resting pile; it need not read them again).
 enum class Update : std::uint8_t { parted, apart, touching, kept };
 
+/// The contact's impulses carried over by feature id to the points of
+/// manifold m, from those of the points it had (ids lastIds[0…lastCount));
+/// a point with no match starts from zero.
+void carryImpulses(Contact& ct, const std::uint16_t* lastIds, int lastCount, const Manifold& m) {
+    float ni[2] = {0.0f, 0.0f}, ti[2] = {0.0f, 0.0f};
+    for (int i = 0; i < m.pointCount; ++i) {
+        for (int j = 0; j < lastCount; ++j) {
+            if (lastIds[j] == m.points[i].id) {
+                ni[i] = ct.normalImpulse[j];
+                ti[i] = ct.tangentImpulse[j];
+                break;
+            }
+        }
+    }
+    for (int i = 0; i < 2; ++i) {
+        ct.normalImpulse[i] = ni[i];
+        ct.tangentImpulse[i] = ti[i];
+    }
+}
+
 /// The manifold part of a contact's update: the new manifold (kept or
 /// computed), seam ghosts dropped, the pre-solve callback, the impulses
 /// carried over by feature id, the frame for reuse. Writes this contact
@@ -286,21 +306,7 @@ Update updateManifold(WorldState& w, int c) {
     } else {
         touching = m.pointCount > 0;
         if (touching) markOverlapFromStart(w, ct, bodyA, bodyB);
-        // Warm start: carry impulses over by feature id.
-        float ni[2] = {0.0f, 0.0f}, ti[2] = {0.0f, 0.0f};
-        for (int i = 0; i < m.pointCount; ++i) {
-            for (int j = 0; j < lastCount; ++j) {
-                if (lastIds[j] == m.points[i].id) {
-                    ni[i] = ct.normalImpulse[j];
-                    ti[i] = ct.tangentImpulse[j];
-                    break;
-                }
-            }
-        }
-        for (int i = 0; i < 2; ++i) {
-            ct.normalImpulse[i] = ni[i];
-            ct.tangentImpulse[i] = ti[i];
-        }
+        carryImpulses(ct, lastIds, lastCount, m);  // the warm start
     }
     ct.touchBegan = touching && !ct.touching;
     if (!reused) {
@@ -704,16 +710,9 @@ void refreshStruckContacts(WorldState& w, const std::vector<int>& struckBodies) 
                 restore();
                 continue;
             }
-            // The impulses carried by feature id, as the narrowphase carries them.
-            float normal[2] = {0.0f, 0.0f}, tangent[2] = {0.0f, 0.0f};
-            for (int i = 0; i < fresh.pointCount; ++i)
-                for (int j = 0; j < had; ++j)
-                    if (ct.manifold.points[j].id == fresh.points[i].id) {
-                        normal[i] = ct.normalImpulse[j];
-                        tangent[i] = ct.tangentImpulse[j];
-                    }
+            const std::uint16_t lastIds[2] = {ct.manifold.points[0].id, ct.manifold.points[1].id};
+            carryImpulses(ct, lastIds, had, fresh);
             ct.manifold = fresh;
-            for (int j = 0; j < 2; ++j) ct.normalImpulse[j] = normal[j], ct.tangentImpulse[j] = tangent[j];
             markOverlapFromStart(w, ct, a, b);
             ct.foundAfterStrike = true;
             ct.framed = false;

@@ -685,6 +685,16 @@ void resolveImpacts(WorldState& w, float dt) {
         return true;
     };
 
+    // The contacts of the bodies the sweep (or shock pass) of `stamp` struck
+    // computed again at their new velocities (refreshStruckContacts).
+    auto refreshStruckAt = [&](std::uint32_t stamp) {
+        std::vector<int>& fresh = w.impactFreshlyStruck;
+        fresh.clear();
+        for (const int b : w.impactStruckBodies)
+            if (changed[static_cast<std::size_t>(b)] == stamp) fresh.push_back(b);
+        refreshStruckContacts(w, fresh);
+    };
+
     // A heavy body closing on a light one (the narrowphase's look) calls
     // for the shock pass whatever the sweeps do; found in the first sweep.
     bool heavyOnLight = false;
@@ -715,22 +725,13 @@ void resolveImpacts(WorldState& w, float dt) {
         // sweep (it looks at this sweep's bodies' contacts) strikes. Struck
         // in the solver instead, as rows without restitution, a row of
         // elastic balls 5 cm apart passed on half the energy.
-        std::vector<int>& fresh = w.impactFreshlyStruck;
-        fresh.clear();
-        for (const int b : w.impactStruckBodies)
-            if (changed[static_cast<std::size_t>(b)] == sweepStamp) fresh.push_back(b);
-        refreshStruckContacts(w, fresh);
+        refreshStruckAt(sweepStamp);
     }
     if (!settled || heavyOnLight) {
         sweepStamp = kShockStamp;
         sizeArrays();
         propagateShock(w, strike, threshold, kShockResidual * threshold);
-        // What the shock pass struck: rows for the solver.
-        std::vector<int>& fresh = w.impactFreshlyStruck;
-        fresh.clear();
-        for (const int b : w.impactStruckBodies)
-            if (changed[static_cast<std::size_t>(b)] == kShockStamp) fresh.push_back(b);
-        refreshStruckContacts(w, fresh);
+        refreshStruckAt(kShockStamp);  // what the shock pass struck: rows for the solver
     }
 }
 

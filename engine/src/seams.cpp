@@ -42,6 +42,7 @@
 // speculative distance of a face's end; none for a body resting inside a face.
 #include <cmath>
 
+#include "contact.hpp"
 #include "seams.hpp"
 #include "world_state.hpp"
 
@@ -296,19 +297,9 @@ Manifold faceOnlyManifold(const WorldState& w, const Shape& chain, const Shape& 
     // Past the whole of the moving shape (its box's diagonal), so that no end is within its reach.
     const AABB box = shapeAABB(moving, xfMoving);
     const float reach = length(box.upper - box.lower);
-    const Segment line{seg.point1 - reach * d, seg.point2 + reach * d};
-    switch (moving.type) {
-        case ShapeType::circle:
-            f = collideSegmentAndCircle(line, xfChain, moving.geometry.circle, xfMoving, margin);
-            break;
-        case ShapeType::capsule:
-            f = collideSegmentAndCapsule(line, xfChain, moving.geometry.capsule, xfMoving, margin);
-            break;
-        case ShapeType::polygon:
-            f = collideSegmentAndPolygon(line, xfChain, moving.geometry.polygon, xfMoving, margin);
-            break;
-        default: return Manifold{};  // (two segments never collide)
-    }
+    Shape line = chain;
+    line.geometry.segment = Segment{seg.point1 - reach * d, seg.point2 + reach * d};
+    f = collideShapes(line, xfChain, moving, xfMoving, margin);
     const Vec2 p1 = transformPoint(xfChain, seg.point1), dw = rotate(xfChain.q, d);
     int kept = 0;
     for (int i = 0; i < f.pointCount; ++i) {
