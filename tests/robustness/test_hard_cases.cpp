@@ -25,6 +25,29 @@ float maxSpeed(const World& world, const std::vector<BodyId>& bodies) {
     return v;
 }
 
+/// A pyramid of square boxes of half-extent `half` (density 1) standing on the
+/// ground at y = 0, `base` boxes in its bottom row, each row centred on the
+/// one below and resting on it; built bottom row first, left to right, so the
+/// top box is the last. `built` holds where each box was created.
+struct BoxPyramid {
+    std::vector<BodyId> boxes;
+    std::vector<Vec2> built;
+};
+BoxPyramid buildPyramid(World& world, int base, float half, float friction = 0.6f) {
+    BoxPyramid p;
+    const float size = 2.0f * half;
+    for (int row = 0; row < base; ++row) {
+        const int n = base - row;
+        for (int i = 0; i < n; ++i) {
+            const Vec2 at{size * (static_cast<float>(i) - 0.5f * static_cast<float>(n - 1)),
+                          half + size * static_cast<float>(row)};
+            p.boxes.push_back(test::makeBox(world, at, half, 1.0f, friction));
+            p.built.push_back(at);
+        }
+    }
+    return p;
+}
+
 bool allFinite(const World& world) {
     for (BodyId b : world.bodies())
         if (!isFinite(world.position(b)) || !isFinite(world.linearVelocity(b)) ||
@@ -639,14 +662,7 @@ TEST(HardCases, PyramidsSettleWithoutLeaning) {
         World world({.enableSleep = false});
         test::makeGround(world, 2.0f * c.halfExtent * static_cast<float>(c.base));
         const float size = 2.0f * c.halfExtent;
-        BodyId top;
-        for (int row = 0; row < c.base; ++row) {
-            const int n = c.base - row;
-            for (int i = 0; i < n; ++i) {
-                const float x = size * (static_cast<float>(i) - 0.5f * static_cast<float>(n - 1));
-                top = test::makeBox(world, {x, c.halfExtent + size * static_cast<float>(row)}, c.halfExtent);
-            }
-        }
+        const BodyId top = buildPyramid(world, c.base, c.halfExtent).boxes.back();
         const float y0 = world.position(top).y;
         float sway = 0.0f;
         for (int i = 0; i < 10 * 60; ++i) {
@@ -685,17 +701,7 @@ TEST(HardCases, PyramidsWithFrictionPointThreeStand) {
         World world({.enableSleep = false});
         const float size = 2.0f * c.halfExtent;
         test::makeGround(world, size * static_cast<float>(c.base), kFriction);
-        std::vector<BodyId> boxes;
-        std::vector<Vec2> built;
-        for (int row = 0; row < c.base; ++row) {
-            const int n = c.base - row;
-            for (int i = 0; i < n; ++i) {
-                const Vec2 p{size * (static_cast<float>(i) - 0.5f * static_cast<float>(n - 1)),
-                             c.halfExtent + size * static_cast<float>(row)};
-                boxes.push_back(test::makeBox(world, p, c.halfExtent, 1.0f, kFriction));
-                built.push_back(p);
-            }
-        }
+        const auto [boxes, built] = buildPyramid(world, c.base, c.halfExtent, kFriction);
         float aside = 0.0f;
         for (int step = 0; step < 20 * 60; ++step) {
             world.step(kDt);
@@ -730,17 +736,7 @@ TEST(HardCases, TinyPyramidStaysWithinTheSamplesDepth) {
     constexpr float kHalf = 0.025f;
     World world({.enableSleep = false});
     test::makeGround(world, 2.0f);
-    std::vector<BodyId> boxes;
-    std::vector<Vec2> built;
-    for (int row = 0; row < kBase; ++row) {
-        const int n = kBase - row;
-        for (int i = 0; i < n; ++i) {
-            const Vec2 at{2.0f * kHalf * (static_cast<float>(i) - 0.5f * static_cast<float>(n - 1)),
-                          kHalf + 2.0f * kHalf * static_cast<float>(row)};
-            boxes.push_back(test::makeBox(world, at, kHalf));
-            built.push_back(at);
-        }
-    }
+    const auto [boxes, built] = buildPyramid(world, kBase, kHalf);
     float transient = 0.0f, settled = 0.0f;
     for (int i = 0; i < 10 * 60; ++i) {
         world.step(kDt);
@@ -774,13 +770,7 @@ TEST(HardCases, PyramidBuiltAtRestSinksNoFurtherThanItsRest) {
     constexpr int kBase = 20;
     World world({.enableSleep = false});
     test::makeGround(world, 20.0f);
-    BodyId top;
-    for (int row = 0; row < kBase; ++row) {
-        const int n = kBase - row;
-        for (int i = 0; i < n; ++i)
-            top = test::makeBox(
-                world, {static_cast<float>(i) - 0.5f * static_cast<float>(n - 1), 0.5f + static_cast<float>(row)});
-    }
+    const BodyId top = buildPyramid(world, kBase, 0.5f).boxes.back();
     const float y0 = world.position(top).y;
     float lowest = y0;
     for (int i = 0; i < 5 * 60; ++i) {
