@@ -681,16 +681,14 @@ TEST(HardCases, PyramidsSettleWithoutLeaning) {
 }
 
 // A pyramid with friction 0.3 stands (the hard-cases issue, item 1). Friction
-// is what holds it: the soft contacts sag under the rows above, the boxes tilt
-// by the sag's difference across their width, and the normals tilt with them;
-// without friction the boxes slide off each other (measured: at friction 0
-// both pyramids here fall, boxes ending 39 and 130 widths from where they
-// were built; at 0.05 they stand, at most 0.05 of a width aside). The bar of
-// standing: no box moves a quarter of its width sideways (each rests on the
-// two below with half its width on each, so a quarter keeps it on both; the
-// Tiny Pyramid's bar below), and the top drops less than half a box.
-// Measured at 0.3, 20 s, sleeping off: base 20 of 1 m boxes at most 1.6 mm
-// aside, the top 11 mm lower; base 40 of 0.5 m boxes 18 mm, 50 mm.
+// is what holds it: at friction 0 both pyramids here fall, their boxes ending
+// 39 and 265 widths (39 m and 133 m) from where they were built; at 0.05 they
+// stand, at most 0.06 of a width aside. The bar of standing: no box moves a
+// quarter of its width sideways (each rests on the two below with half its
+// width on each, so a quarter keeps it on both; the Tiny Pyramid's bar
+// below), and the top drops less than half a box. Measured at 0.3, 20 s,
+// sleeping off: base 20 of 1 m boxes at most 1.6 mm aside, the top 11 mm
+// lower; base 40 of 0.5 m boxes 18 mm, 50 mm.
 TEST(HardCases, PyramidsWithFrictionPointThreeStand) {
     struct Case {
         int base;
