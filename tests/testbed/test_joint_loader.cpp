@@ -72,9 +72,9 @@ TEST(JointLoader, Revolute) {
     EXPECT_FLOAT_EQ(r.dampingRatio, 0.4f);
     EXPECT_TRUE(r.collideConnected);
 
-    const auto& plain = parse(R"({"type": "revolute", "body_a": "a", "body_b": "b", "reference_angle": 0.25})")
-                            .joints[0]
-                            .as<i2d::RevoluteJointDef>();
+    const auto plain = parse(R"({"type": "revolute", "body_a": "a", "body_b": "b", "reference_angle": 0.25})")
+                           .joints[0]
+                           .as<i2d::RevoluteJointDef>();
     EXPECT_FLOAT_EQ(plain.referenceAngle, 0.25f);
     EXPECT_FALSE(plain.enableLimit || plain.enableMotor || plain.enableSpring);
 
@@ -97,11 +97,11 @@ TEST(JointLoader, Revolute) {
 }
 
 TEST(JointLoader, Prismatic) {
-    const auto& p = parse(R"({"type": "prismatic", "body_a": "ground", "body_b": "a", "anchor_a": [0, 1],
+    const auto p = parse(R"({"type": "prismatic", "body_a": "ground", "body_b": "a", "anchor_a": [0, 1],
         "axis_a": [0, 2], "reference_angle": 0.1, "limit": {"lower_translation": -1, "upper_translation": 2},
         "motor": {"motor_speed": -1, "max_motor_force": 500}, "spring": {"hertz": 1, "damping_ratio": 0.5}})")
-                        .joints[0]
-                        .as<i2d::PrismaticJointDef>();
+                       .joints[0]
+                       .as<i2d::PrismaticJointDef>();
     EXPECT_FLOAT_EQ(p.localAxisA.y, 2.0f);  // the engine normalises it
     EXPECT_FLOAT_EQ(p.referenceAngle, 0.1f);
     EXPECT_TRUE(p.enableLimit);
@@ -123,10 +123,10 @@ TEST(JointLoader, Prismatic) {
 }
 
 TEST(JointLoader, Weld) {
-    const auto& w = parse(R"({"type": "weld", "body_a": "a", "body_b": "b", "anchor_a": [1, 0], "anchor_b": [-1, 0],
+    const auto w = parse(R"({"type": "weld", "body_a": "a", "body_b": "b", "anchor_a": [1, 0], "anchor_b": [-1, 0],
         "linear_hertz": 5, "linear_damping_ratio": 0.5, "angular_hertz": 6, "angular_damping_ratio": 0.7})")
-                        .joints[0]
-                        .as<i2d::WeldJointDef>();
+                       .joints[0]
+                       .as<i2d::WeldJointDef>();
     EXPECT_NEAR(w.referenceAngle, 0.5f, 1e-6f);
     EXPECT_FLOAT_EQ(w.linearHertz, 5.0f);
     EXPECT_FLOAT_EQ(w.linearDampingRatio, 0.5f);
@@ -138,16 +138,16 @@ TEST(JointLoader, Weld) {
 }
 
 TEST(JointLoader, Wheel) {
-    const auto& def = parse(R"({"type": "wheel", "body_a": "b", "body_b": "a"})").joints[0].as<i2d::WheelJointDef>();
+    const auto def = parse(R"({"type": "wheel", "body_a": "b", "body_b": "a"})").joints[0].as<i2d::WheelJointDef>();
     EXPECT_TRUE(def.enableSpring);  // the definition's default suspension: on, 1 Hz, 0.7
     EXPECT_FLOAT_EQ(def.hertz, 1.0f);
     EXPECT_FLOAT_EQ(def.dampingRatio, 0.7f);
     EXPECT_FLOAT_EQ(def.localAxisA.y, 1.0f);
-    const auto& w = parse(R"({"type": "wheel", "body_a": "b", "body_b": "a", "anchor_a": [-2, -0.5], "axis_a": [0.5, 1],
+    const auto w = parse(R"({"type": "wheel", "body_a": "b", "body_b": "a", "anchor_a": [-2, -0.5], "axis_a": [0.5, 1],
         "spring": {"hertz": 4, "damping_ratio": 0.9}, "limit": {"lower_translation": -0.2, "upper_translation": 0.3},
         "motor": {"motor_speed": -20, "max_motor_torque": 15}})")
-                        .joints[0]
-                        .as<i2d::WheelJointDef>();
+                       .joints[0]
+                       .as<i2d::WheelJointDef>();
     EXPECT_FLOAT_EQ(w.localAxisA.x, 0.5f);
     EXPECT_FLOAT_EQ(w.hertz, 4.0f);
     EXPECT_FLOAT_EQ(w.dampingRatio, 0.9f);
@@ -168,10 +168,10 @@ TEST(JointLoader, Wheel) {
 }
 
 TEST(JointLoader, Motor) {
-    const auto& m = parse(R"({"type": "motor", "body_a": "ground", "body_b": "a", "linear_offset": [0, 1],
+    const auto m = parse(R"({"type": "motor", "body_a": "ground", "body_b": "a", "linear_offset": [0, 1],
         "angular_offset": 0.3, "max_force": 50, "max_torque": 20, "correction_factor": 0.5})")
-                        .joints[0]
-                        .as<i2d::MotorJointDef>();
+                       .joints[0]
+                       .as<i2d::MotorJointDef>();
     EXPECT_FLOAT_EQ(m.linearOffset.y, 1.0f);
     EXPECT_FLOAT_EQ(m.angularOffset, 0.3f);
     EXPECT_FLOAT_EQ(m.maxForce, 50.0f);
@@ -184,10 +184,10 @@ TEST(JointLoader, Motor) {
 }
 
 TEST(JointLoader, Mouse) {
-    const auto& m = parse(R"({"type": "mouse", "body_a": "ground", "body_b": "a", "target": [0.2, 1.5], "hertz": 4,
+    const auto m = parse(R"({"type": "mouse", "body_a": "ground", "body_b": "a", "target": [0.2, 1.5], "hertz": 4,
         "damping_ratio": 0.5, "max_force": 300})")
-                        .joints[0]
-                        .as<i2d::MouseJointDef>();
+                       .joints[0]
+                       .as<i2d::MouseJointDef>();
     EXPECT_FLOAT_EQ(m.target.x, 0.2f);
     EXPECT_FLOAT_EQ(m.hertz, 4.0f);
     EXPECT_FLOAT_EQ(m.dampingRatio, 0.5f);
@@ -199,18 +199,18 @@ TEST(JointLoader, Mouse) {
 }
 
 TEST(JointLoader, Pulley) {
-    const auto& p = parse(R"({"type": "pulley", "body_a": "a", "body_b": "b", "ground_anchor_a": [0, 4],
+    const auto p = parse(R"({"type": "pulley", "body_a": "a", "body_b": "b", "ground_anchor_a": [0, 4],
         "ground_anchor_b": [2, 5], "ratio": 1.5})")
-                        .joints[0]
-                        .as<i2d::PulleyJointDef>();
+                       .joints[0]
+                       .as<i2d::PulleyJointDef>();
     EXPECT_FLOAT_EQ(p.groundAnchorB.y, 5.0f);
     EXPECT_FLOAT_EQ(p.lengthA, 3.0f);  // measured from the layout: (0, 4) to a's origin (0, 1)
     EXPECT_FLOAT_EQ(p.lengthB, 4.0f);
     EXPECT_FLOAT_EQ(p.ratio, 1.5f);
-    const auto& given = parse(R"({"type": "pulley", "body_a": "a", "body_b": "b", "ground_anchor_a": [0, 4],
+    const auto given = parse(R"({"type": "pulley", "body_a": "a", "body_b": "b", "ground_anchor_a": [0, 4],
         "ground_anchor_b": [2, 5], "length_a": 2, "length_b": 6})")
-                            .joints[0]
-                            .as<i2d::PulleyJointDef>();
+                           .joints[0]
+                           .as<i2d::PulleyJointDef>();
     EXPECT_FLOAT_EQ(given.lengthA, 2.0f);
     EXPECT_FLOAT_EQ(given.lengthB, 6.0f);
     const std::string pulley = R"({"type": "pulley", "body_a": "a", "body_b": "b", "ground_anchor_a": [0, 4], )";
