@@ -218,17 +218,22 @@ inline __attribute__((always_inline)) void computeManifold(const WorldState& w, 
     if (kept != m.pointCount) m.pointCount = kept;  // (as above: no write when nothing moved)
 }
 
+/// The separation of the manifold's deepest point, or 0 if none is deeper.
+inline float deepestPoint(const Manifold& m) {
+    float deepest = 0.0f;
+    for (int i = 0; i < m.pointCount; ++i) deepest = std::min(deepest, m.points[i].separation);
+    return deepest;
+}
+
 /// Contact::overlapFromStart for a contact whose new manifold has points:
 /// set at its first touch when a point is deeper than deepOverlapOf and none
 /// closes faster than the impact threshold (bodies created or moved inside
 /// each other, not a collision, which the impact law must meet however deep
 /// its first manifold: a fast body's first touch of a thin plank can be
 /// deeper than the plank's deep-overlap depth), cleared once every point is
-/// within the penetration slop.
-void markOverlapFromStart(const WorldState& w, Contact& ct, const Body& a, const Body& b) {
+/// within the penetration slop. `deepest`: deepestPoint of its manifold.
+inline void markOverlapFromStart(const WorldState& w, Contact& ct, const Body& a, const Body& b, float deepest) {
     const Manifold& m = ct.manifold;
-    float deepest = 0.0f;
-    for (int i = 0; i < m.pointCount; ++i) deepest = std::min(deepest, m.points[i].separation);
     if (ct.touching) {
         if (ct.overlapFromStart && deepest > -w.settings.penetrationSlop) ct.overlapFromStart = false;
         return;
@@ -240,6 +245,17 @@ void markOverlapFromStart(const WorldState& w, Contact& ct, const Body& a, const
         overlap = !(dot(dv, m.normal) < -w.settings.impactThreshold);
     }
     ct.overlapFromStart = overlap;
+}
+
+/// Contact::stillDeep and overlapFromStart for a contact whose new manifold
+/// has points. stillDeep is judged against the depth deepOverlapOf gives
+/// with its last value: the depth a contact becomes deep from, or the
+/// shallower one it stays deep to.
+inline void markDepth(const WorldState& w, Contact& ct, const Body& a, const Body& b) {
+    const float deepest = deepestPoint(ct.manifold);
+    const bool deep = deepest < -deepOverlapOf(ct);
+    if (deep != ct.stillDeep) ct.stillDeep = deep;  // (written only when it changes, as most contacts keep it)
+    markOverlapFromStart(w, ct, a, b, deepest);
 }
 
 /// What the narrowphase found for one contact (updateManifold).
@@ -305,7 +321,10 @@ Update updateManifold(WorldState& w, int c) {
         for (int i = 0; i < m.pointCount; ++i) touching = touching || m.points[i].separation < 0.0f;
     } else {
         touching = m.pointCount > 0;
-        if (touching) markOverlapFromStart(w, ct, bodyA, bodyB);
+        if (touching)
+            markDepth(w, ct, bodyA, bodyB);
+        else if (ct.stillDeep)
+            ct.stillDeep = false;
         carryImpulses(ct, lastIds, lastCount, m);  // the warm start
     }
     ct.touchBegan = touching && !ct.touching;
@@ -713,7 +732,7 @@ void refreshStruckContacts(WorldState& w, const std::vector<int>& struckBodies) 
             const std::uint16_t lastIds[2] = {ct.manifold.points[0].id, ct.manifold.points[1].id};
             carryImpulses(ct, lastIds, had, fresh);
             ct.manifold = fresh;
-            markOverlapFromStart(w, ct, a, b);
+            markDepth(w, ct, a, b);
             ct.foundAfterStrike = true;
             ct.framed = false;
             if (ct.persists) recordManifoldFrame(ct, a, b);

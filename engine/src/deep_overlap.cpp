@@ -83,28 +83,24 @@ constexpr int kPushSweeps = 16;
 // maxPushSpeed (below). A sideways push leaves no velocity and lifts nothing,
 // so the cap, which bounds the energy an upward push adds, need not hold it to
 // the same speed; what it bounds there is how far a body jumps in a step (at
-// 6 m/s, 2.5 cm per substep). A pile created at one point must spread before
+// 9 m/s, 3.75 cm per substep). A pile created at one point must spread before
 // it parts: 50 unit boxes cover 50 m², a disc of radius 4 m, which at 3 m/s
 // takes 1.3 s before any lag of the sweeps, and 50 boxes or capsules created
 // at one point in the air were still up to 52 cm deep at 2 s. At twice the
 // cap, of 180 such piles not used in choosing it (30, 50 and 80 boxes,
-// circles or capsules from 5 and 10 m), 106 instead of 74 are within 2 cm at
-// 2 s; 11 instead of 5 rise more than 0.5 m, nearly all piles of 80 that stay
-// deep either way (docs/validation.md, "Overlaps that separate gently").
-constexpr float kSidewaysPushFactor = 2.0f;
-// The same for a body that rests on nothing (not supported): a pile falling
-// in the air has nothing to spread on but itself, and at twice the cap 23 of
-// 60 piles of 80 bodies created at one point were deeper than 2 cm at 2 s.
-// At three times the cap for such bodies, of the 180 piles of 30, 50 and 80
-// above, 158 instead of 154 are within 2 cm at 2 s and none instead of two
-// rises more than 0.5 m; of 90 not used in choosing it 82 instead of 75. A
-// supported body stays at twice: at three times for every body, piles
-// created on the ground met every bound less often (171 to 169 of 180).
-// A step then moves such a body up to 3·c·Δt = 15 cm sideways (3.75 cm a
-// substep at the defaults); 60 circles of radius 5 to 25 cm created at one
-// point beside a static wall 1 or 4 cm thick crossed it no more often than
-// at twice (docs/validation.md, "Three times the cap in the air").
-constexpr float kUnsupportedSidewaysPushFactor = 3.0f;
+// circles or capsules from 5 and 10 m), 106 instead of 74 were within 2 cm at
+// 2 s. At three times, for bodies resting on nothing first, of the 180 piles
+// 158 instead of 154 (and 82 instead of 75 of 90 not used in choosing it);
+// 60 circles of radius 5 to 25 cm created at one point beside a static wall
+// 1 or 4 cm thick crossed it no more often than at twice. A supported body
+// was held to twice while the soft rows took over a pile's overlaps at the
+// deep depth (at three times, piles created on the ground broke the energy
+// bound more often); since a deep overlap stays deep to a quarter of that
+// depth (kDeepExitFraction), every body may reach three times: 20 boxes,
+// circles and capsules created at one point on the ground spread 20 m, and
+// at twice their edges took 1.6 s to get there and the piles 2.1 to 2.4 s to
+// part (docs/validation.md, "Deep until well apart").
+constexpr float kSidewaysPushFactor = 3.0f;
 // The fraction of a deep row's push impulse at the end of a step that the
 // next step's push starts from (within a step each substep starts from all of
 // the last one's). Started from zero in every substep, the sweeps found a
@@ -318,7 +314,6 @@ void pushDeepOverlaps(WorldState& w, float h) {
     SolverArrays& s = w.solver;
     const float cap = w.settings.maxPushSpeed;
     const float sidewaysCap = kSidewaysPushFactor * cap;
-    const float unsupportedSidewaysCap = kUnsupportedSidewaysPushFactor * cap;
     s.biasV.assign(s.states.size(), Vec2{});
     s.biasW.assign(s.states.size(), 0.0f);
     const BodyState* states = s.states.data();
@@ -387,8 +382,7 @@ void pushDeepOverlaps(WorldState& w, float h) {
     // Each body's pseudo-velocity: along its free acceleration (down, under
     // gravity) at most maxPushSpeed c, against it (up) at most c less its
     // speed along that acceleration, and never less than c/2; across it at
-    // most kSidewaysPushFactor·c, kUnsupportedSidewaysPushFactor·c for a body
-    // resting on nothing (without gravity, twice c in any direction).
+    // most kSidewaysPushFactor·c (without gravity, in any direction).
     // A body at rest may be pushed up at c (out of the ground under a stack
     // of four boxes: stack5_overlap, apart in 1.8 s; at c/2 it took 2.2 s).
     // A body of a falling pile pushed up at u while it falls at g·t gains g·u·t of
@@ -448,7 +442,7 @@ void pushDeepOverlaps(WorldState& w, float h) {
             }
             const float u = dot(v, up);
             Vec2 across = v - u * up;
-            limitTo(across, s.supported[i] ? sidewaysCap : unsupportedSidewaysCap);
+            limitTo(across, sidewaysCap);
             v = across + clamp(u, -cap, limit) * up;
         } else {
             limitTo(v, sidewaysCap);

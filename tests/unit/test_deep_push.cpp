@@ -1,8 +1,8 @@
 // The push of deep overlaps (deep_overlap.cpp, pushDeepOverlaps): each
-// body's pseudo-velocity across gravity is held to twice maxPushSpeed c when
-// the body is supported (rests, through upward normals, on something
-// immovable) and to three times c when it rests on nothing; without gravity
-// to twice c in every direction.
+// body's pseudo-velocity across gravity is held to three times maxPushSpeed
+// c, whether the body is supported (rests, through upward normals, on
+// something immovable) or rests on nothing; without gravity to three times c
+// in every direction.
 #include <gtest/gtest.h>
 
 #include <algorithm>
@@ -90,7 +90,7 @@ float fastestPush(Vec2 gravity, bool supported) {
 // Float rounding of limitTo's rescaling (a few ulps of 9 m/s).
 constexpr float kRounding = 1e-5f;
 
-TEST(DeepPush, AcrossGravityTwiceTheCapForASupportedBodyThriceForOneOnNothing) {
+TEST(DeepPush, AcrossGravityThriceTheCapForEveryBody) {
     const float c = WorldSettings{}.maxPushSpeed;
     {
         WorldState w({}, 1);
@@ -98,16 +98,16 @@ TEST(DeepPush, AcrossGravityTwiceTheCapForASupportedBodyThriceForOneOnNothing) {
         const ContactConstraint& cc = w.solver.constraints[0];
         ASSERT_GT(cc.biasRate * 0.5f, c) << "each row must ask for the cap";
     }
-    EXPECT_NEAR(fastestPush({0.0f, -10.0f}, true), 2.0f * c, kRounding);
-    // Reaching 3c shows the pile asks for more than the 2c a supported body
-    // is held to.
+    // Reaching 3c shows the pile asks for more than each point's c; a
+    // supported body is held to the same limit as one resting on nothing.
+    EXPECT_NEAR(fastestPush({0.0f, -10.0f}, true), 3.0f * c, kRounding);
     EXPECT_NEAR(fastestPush({0.0f, -10.0f}, false), 3.0f * c, kRounding);
 }
 
-// Without gravity nothing is supported and no direction is across: 2c.
-TEST(DeepPush, WithoutGravityTwiceTheCapInEveryDirection) {
+// Without gravity nothing is supported and every direction is across: 3c.
+TEST(DeepPush, WithoutGravityThriceTheCapInEveryDirection) {
     const float c = WorldSettings{}.maxPushSpeed;
-    EXPECT_NEAR(fastestPush({0.0f, 0.0f}, false), 2.0f * c, kRounding);
+    EXPECT_NEAR(fastestPush({0.0f, 0.0f}, false), 3.0f * c, kRounding);
 }
 
 // The same row stood on end: the first body 0.5 m deep in something
