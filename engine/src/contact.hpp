@@ -51,9 +51,9 @@ constexpr float kMinDeepOverlap = 0.01f;
 /// that the soft rows, whose push goes through the velocities, take over
 /// only the last of it. Handed over at 5 cm, the soft rows' pushes added
 /// along the chains of a pile created on the ground and were left in the
-/// velocities where the relax pass could not take them back: 20 circles
-/// created at one point on the ground rolled apart with 4 % of the pile's
-/// energy added and peaked at 1.10 times its start, 20 boxes at 1.07
+/// velocities where the relax pass could not take them back: piles of 20
+/// bodies created at one point on the ground peaked at up to 1.12 times
+/// their energy, and 20 circles rolled apart with 4 % of it added for good
 /// (docs/validation.md, "Deep until well apart"). A contact sagging under a
 /// load is pushed only beyond what the load explains, deep or not.
 constexpr float kDeepExitFraction = 0.25f;
@@ -136,6 +136,9 @@ inline constexpr std::array<float, 512> kDeepDepths = [] {
     }
     return depths;
 }();
+/// The depth beyond which a point of `c` is a deep overlap (m): the depth it
+/// becomes deep from, or, while it is still deep, the shallower one it stays
+/// deep to.
 inline float deepOverlapOf(const Contact& c) {
     return kDeepDepths[static_cast<std::size_t>(c.deepScale) | (c.stillDeep ? 256u : 0u)];
 }
