@@ -70,10 +70,10 @@ struct WorldSettings {
     /// touching so the narrowphase keeps reporting them (Tamis and Maggiore (2015) §8.1, last note).
     float penetrationSlop = 0.005f;
     /// Largest speed used to push overlapping bodies apart (m/s). Overlaps
-    /// deeper than 5 cm in soft_step are pushed on pseudo-velocities that
-    /// leave no velocity behind; those may move a body across gravity at
-    /// twice this, three times for a body resting on nothing (a sideways
-    /// move lifts nothing), up or down at most this.
+    /// deeper than 5 cm in soft_step (less between thin shapes) are pushed on
+    /// pseudo-velocities that leave no velocity behind, until they are within
+    /// a quarter of that depth; those may move a body across gravity at three
+    /// times this (a sideways move lifts nothing), up or down at most this.
     float maxPushSpeed = 3.0f;
     /// Contact stiffness (Hz) and damping ratio for soft_step. The stiffness is
     /// capped at a quarter of the substep rate (60 Hz at 60 Hz × 4 substeps),
