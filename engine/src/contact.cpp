@@ -218,20 +218,13 @@ inline __attribute__((always_inline)) void computeManifold(const WorldState& w, 
     if (kept != m.pointCount) m.pointCount = kept;  // (as above: no write when nothing moved)
 }
 
-/// The separation of the manifold's deepest point, or 0 if none is deeper.
-inline float deepestPoint(const Manifold& m) {
-    float deepest = 0.0f;
-    for (int i = 0; i < m.pointCount; ++i) deepest = std::min(deepest, m.points[i].separation);
-    return deepest;
-}
-
 /// Contact::overlapFromStart for a contact whose new manifold has points:
 /// set at its first touch when a point is deeper than deepOverlapOf and none
 /// closes faster than the impact threshold (bodies created or moved inside
 /// each other, not a collision, which the impact law must meet however deep
 /// its first manifold: a fast body's first touch of a thin plank can be
 /// deeper than the plank's deep-overlap depth), cleared once every point is
-/// within the penetration slop. `deepest`: deepestPoint of its manifold.
+/// within the penetration slop. `deepest`: deepestSeparation of its manifold.
 inline void markOverlapFromStart(const WorldState& w, Contact& ct, const Body& a, const Body& b, float deepest) {
     const Manifold& m = ct.manifold;
     if (ct.touching) {
@@ -252,7 +245,7 @@ inline void markOverlapFromStart(const WorldState& w, Contact& ct, const Body& a
 /// with its last value: the depth a contact becomes deep from, or the
 /// shallower one it stays deep to.
 inline void markDepth(const WorldState& w, Contact& ct, const Body& a, const Body& b) {
-    const float deepest = deepestPoint(ct.manifold);
+    const float deepest = deepestSeparation(ct.manifold);
     const bool deep = deepest < -deepOverlapOf(ct);
     if (deep != ct.stillDeep) ct.stillDeep = deep;  // (written only when it changes, as most contacts keep it)
     markOverlapFromStart(w, ct, a, b, deepest);

@@ -5,6 +5,7 @@
 // id (the warm start).
 #pragma once
 
+#include <algorithm>
 #include <array>
 #include <cstdint>
 #include <vector>
@@ -136,6 +137,13 @@ inline constexpr std::array<float, 512> kDeepDepths = [] {
     }
     return depths;
 }();
+/// The separation of the manifold's deepest point (m), or 0 if none is deeper.
+inline float deepestSeparation(const Manifold& m) {
+    float deepest = 0.0f;
+    for (int i = 0; i < m.pointCount; ++i) deepest = std::min(deepest, m.points[i].separation);
+    return deepest;
+}
+
 /// The depth beyond which a point of `c` is a deep overlap (m): the depth it
 /// becomes deep from, or, while it is still deep, the shallower one it stays
 /// deep to.

@@ -251,8 +251,7 @@ void prepareDeepOverlaps(WorldState& w) {
         // jiggle after 10 s, against up to 0.89 m and 2.6 to 5.9 J pushed
         // along the normals (docs/validation.md, "Hard cases not yet met").
         if (upper.gravityScale <= 0.0f) continue;
-        float depth = 0.0f;
-        for (int j = 0; j < ct.manifold.pointCount; ++j) depth = std::max(depth, -ct.manifold.points[j].separation);
+        const float depth = -deepestSeparation(ct.manifold);
         if (dot(upper.center, up) + depth * std::abs(nu) <= upper.highest) continue;
         const Shape& shA = w.shapes[ct.shapeA];
         const Shape& shB = w.shapes[ct.shapeB];
