@@ -67,7 +67,7 @@ struct Body {
     /// Where the body was (origin and rotation) when its shapes' boxes were
     /// last measured inside their fat boxes, and the least room they had
     /// there (m; 0: measure again). Until its shapes may have moved that far
-    /// the boxes still hold them, and leftFatBox computes none (broad_phase.cpp).
+    /// the boxes still hold them, and leftFatBoxes computes none (broad_phase.cpp).
     Vec2 boxOrigin{};
     Rot boxRotation{};
     float boxSlack = 0.0f;

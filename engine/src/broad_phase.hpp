@@ -80,11 +80,12 @@ void destroyProxy(WorldState& w, int shape);
 /// Refreshes the proxies of a body's shapes after it moved; after a step of
 /// dt, a box that must move is stretched ahead along the body's velocity.
 void synchronizeProxies(WorldState& w, int body, float dt = 0.0f);
-/// Whether a shape of the body left its fat box (synchronizeProxies then
-/// moves it). Reads the world and writes this body's Body::boxSlack and
-/// pose only: the solve's write-back asks it of every awake body on the
-/// workers, where the body is in the cache (proxyLeaves).
-bool leftFatBox(const WorldState& w, Body& body);
+/// Whether a shape of each of `count` bodies (the world's body slots at
+/// `bodies`) left its fat box, into `leaves` (1: it left; synchronizeProxies
+/// then moves it). Reads the world and writes these bodies' Body::boxSlack
+/// and pose only: the solve's write-back asks it of every awake body on the
+/// workers, where the bodies are in the cache (proxyLeaves).
+void leftFatBoxes(WorldState& w, const int* bodies, std::size_t count, std::uint8_t* leaves);
 /// The game set the body's velocity (or created it moving): at the next
 /// step's start its fat boxes are made to hold its motion over that step
 /// (coverSetMotions), as a step's end does for the velocity it leaves.

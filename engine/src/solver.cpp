@@ -715,9 +715,13 @@ void solve(WorldState& w, float dt) {
             body.force = {};
             body.torque = 0.0f;
             body.solverIndex = kNullIndex;
-            leaves[i] = leftFatBox(w, body) ? 1 : 0;
-            sweeps[i] = continuous && needsSweep(w, body, st) ? 1 : 0;
         }
+        leftFatBoxes(w, s.stateBodies.data() + first, static_cast<std::size_t>(last - first), leaves.data() + first);
+        if (continuous)
+            for (std::size_t i = static_cast<std::size_t>(first); i < static_cast<std::size_t>(last); ++i)
+                sweeps[i] = needsSweep(w, w.bodies[s.stateBodies[i]], s.states[i]) ? 1 : 0;
+        else
+            std::fill(sweeps.begin() + first, sweeps.begin() + last, std::uint8_t{0});
     };
     w.runner.run(static_cast<int>(n), kBodyGrain, writeBack);
 }

@@ -1,7 +1,7 @@
 // The broadphase keeps every moving shape's speculative box inside its fat
 // box. A body whose shapes cannot have moved further than the room they had
 // when last measured is not measured again (Body::boxSlack, broad_phase.cpp
-// leftFatBox). These tests hold each part of that bound: a box creeping a
+// leftFatBoxes). These tests hold each part of that bound: a box creeping a
 // millimetre a step, a plank turning about its own origin (no translation at
 // all), a box turning about a centre of mass set far from it, must each meet
 // a wall rather than pass it (a fat box left behind finds no pair with the
