@@ -697,31 +697,35 @@ void solve(WorldState& w, float dt) {
     std::vector<std::uint8_t>& sweeps = s.sweeps;
     sweeps.resize(n);
     auto writeBack = [&](int first, int last) {
-        for (std::size_t i = static_cast<std::size_t>(first); i < static_cast<std::size_t>(last); ++i) {
-            Body& body = w.bodies[s.stateBodies[i]];
-            BodyState& st = s.states[i];
-            if (soft && s.anyDeepOverlap && s.integration[i].movedByForces)  // the last substep's push lift
-                payPushLift(s, i, st, s.integration[i].linearAcceleration, up, h);
-            clampVelocity(st, maxSpeed, maxAngular);
-            body.v = st.v;
-            body.w = st.w;
-            body.center += st.dp;
-            Rot q = mulRot(st.dq, body.xf.q);
-            float mag = std::sqrt(q.c * q.c + q.s * q.s);
-            q = {q.c / mag, q.s / mag};
-            body.xf.q = q;
-            body.xf.p = body.center - rotate(q, body.localCenter);
-            body.highest = std::max(body.highest, dot(body.center, up));
-            body.force = {};
-            body.torque = 0.0f;
-            body.solverIndex = kNullIndex;
+        // In runs of kRun bodies, each still in the first-level cache when
+        // its fat boxes are checked: the check's bound for a whole run goes
+        // through a loop of its own (leftFatBoxes says why).
+        constexpr int kRun = 32;
+        for (int run = first; run < last; run += kRun) {
+            const int end = std::min(run + kRun, last);
+            for (std::size_t i = static_cast<std::size_t>(run); i < static_cast<std::size_t>(end); ++i) {
+                Body& body = w.bodies[s.stateBodies[i]];
+                BodyState& st = s.states[i];
+                if (soft && s.anyDeepOverlap && s.integration[i].movedByForces)  // the last substep's push lift
+                    payPushLift(s, i, st, s.integration[i].linearAcceleration, up, h);
+                clampVelocity(st, maxSpeed, maxAngular);
+                body.v = st.v;
+                body.w = st.w;
+                body.center += st.dp;
+                Rot q = mulRot(st.dq, body.xf.q);
+                float mag = std::sqrt(q.c * q.c + q.s * q.s);
+                q = {q.c / mag, q.s / mag};
+                body.xf.q = q;
+                body.xf.p = body.center - rotate(q, body.localCenter);
+                body.highest = std::max(body.highest, dot(body.center, up));
+                body.force = {};
+                body.torque = 0.0f;
+                body.solverIndex = kNullIndex;
+            }
+            leftFatBoxes(w, s.stateBodies.data() + run, static_cast<std::size_t>(end - run), leaves.data() + run);
+            for (std::size_t i = static_cast<std::size_t>(run); i < static_cast<std::size_t>(end); ++i)
+                sweeps[i] = continuous && needsSweep(w, w.bodies[s.stateBodies[i]], s.states[i]) ? 1 : 0;
         }
-        leftFatBoxes(w, s.stateBodies.data() + first, static_cast<std::size_t>(last - first), leaves.data() + first);
-        if (continuous)
-            for (std::size_t i = static_cast<std::size_t>(first); i < static_cast<std::size_t>(last); ++i)
-                sweeps[i] = needsSweep(w, w.bodies[s.stateBodies[i]], s.states[i]) ? 1 : 0;
-        else
-            std::fill(sweeps.begin() + first, sweeps.begin() + last, std::uint8_t{0});
     };
     w.runner.run(static_cast<int>(n), kBodyGrain, writeBack);
 }
