@@ -584,8 +584,13 @@ void resolveImpacts(WorldState& w, float dt) {
                                ? firstHit
                                : std::min(from + closingTime(gap, approach + an * halfSubstep, an, dt), dt);
         firstHit = tHit;
-        const Vec2 vA0 = sideA.v + (halfSubstep + tHit) * accA;
-        const Vec2 vB0 = sideB.v + (halfSubstep + tHit) * accB;
+        // The velocities at the hit, within the speed limit the solver's
+        // integration holds them to: a body of 2.4e-26 kg under an applied
+        // force has a free acceleration beyond 1e25 m/s², and taken whole it
+        // reached the law at 7e25 m/s, whose change moved its start 1e24 m
+        // (fuzz_world; continuous collision then met a non-finite normal).
+        const Vec2 vA0 = limitSpeed(sideA.v + (halfSubstep + tHit) * accA, maxSpeed);
+        const Vec2 vB0 = limitSpeed(sideB.v + (halfSubstep + tHit) * accB, maxSpeed);
         const float wB0 = sideB.w, wA0 = sideA.w;
 
         // The law's convention: f points from B to A and A receives +p.
