@@ -215,10 +215,10 @@ bool measureFatBoxes(const WorldState& w, Body& body) {
 
 void leftFatBoxes(WorldState& w, const int* bodies, std::size_t count, std::uint8_t* leaves) {
     // Two passes: the bound for every body first, a short loop without calls
-    // whose square roots and divisions the CPU overlaps from body to body
-    // (one body's, followed by its measuring, left them waiting on each
-    // other: a swinging hinge grid spent 7 % of its step here), then the
-    // measuring for the bodies the bound leaves in doubt.
+    // whose square roots the CPU works on for several bodies at once, then
+    // the measuring for the bodies the bound leaves in doubt. Asked body by
+    // body, each bound waited on its square roots before the next body's
+    // began: a swinging hinge grid spent 7 % of its step here.
     const float dt = w.stepDt, speculative = w.settings.speculativeDistance;
     for (std::size_t i = 0; i < count; ++i) {
         const Body& body = w.bodies[bodies[i]];
