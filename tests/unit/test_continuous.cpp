@@ -252,6 +252,41 @@ TEST(Continuous, ABodyPartlyThroughAFloorIsNotFrozen) {
     EXPECT_GT(turned, 0.5f * reportedTurn);
 }
 
+// A box landing under a push towards the ground far beyond its weight (a
+// force the game applies for one step) ends that step held by its contact
+// some centimetres into the ground (its soft rows yield under 100 times its
+// weight), and continuous collision puts it back on the surface. The
+// velocity it is given there took the step's acceleration back as if the box
+// had flown free since it reached the surface: 6.5 m/s up under 1,000 N,
+// and the 400 m/s speed limit under 100 kN, from a landing with no
+// restitution. Whatever the contacts do, nothing in a landing without
+// restitution throws the box up faster than the push that moves overlaps
+// apart (WorldSettings::maxPushSpeed), so it never rises higher than that
+// speed carries it against gravity, v²/2g (0.46 m at the defaults).
+TEST(Continuous, ABoxLandingUnderALargePushIsNotThrownUp) {
+    for (float force : {300.0f, 1.0e3f, 1.0e5f}) {
+        World world;
+        BodyId ground = world.createBody({});
+        world.createPolygonShape(ground, {}, makeBox(10.0f, 0.5f));
+        // 5 cm above the ground (its surface at y = 0.5), falling at 10 m/s.
+        BodyId box = world.createBody(
+            {.type = BodyType::dynamic_body, .position = {0.0f, 1.05f}, .linearVelocity = {0.0f, -10.0f}});
+        world.createPolygonShape(box, {.density = 1.0f}, makeBox(0.5f, 0.5f));
+        const WorldSettings& s = world.settings();
+        const float g = -s.gravity.y;
+        const float rest = 1.0f;  // the box's centre resting on the ground
+        float highest = 0.0f, fastestUp = 0.0f;
+        for (int i = 0; i < 60; ++i) {
+            if (i == 0) world.applyForceToCenter(box, {0.0f, -force});
+            world.step(1.0f / 60.0f);
+            highest = std::max(highest, world.position(box).y - rest);
+            fastestUp = std::max(fastestUp, world.linearVelocity(box).y);
+        }
+        EXPECT_LE(fastestUp, s.maxPushSpeed) << "force " << force;
+        EXPECT_LE(highest, s.maxPushSpeed * s.maxPushSpeed / (2.0f * g)) << "force " << force;
+    }
+}
+
 // A circle shot at the vertex two static segments share (a wall from
 // (0, 50) to (0, −50) in two pieces, or a chain through the same points),
 // aimed at it exactly, is stopped as by one segment: its centre never gets
