@@ -392,29 +392,31 @@ void sweepBody(WorldState& w, Body& body, const Mover& m, Vec2 rewind) {
     // 2e-16 kg left at 4e16 m/s).
     const Vec2 ended = body.v;
     body.v = limitSpeed(ended - (1.0f - stop.t) * rewind, w.settings.maxLinearSpeed);
-    // That takes the acceleration back as if the body had flown free since;
-    // a body the contacts held did not. At the time it reached the surface
-    // it was not leaving it faster than it ended the step (nor leaving it at
-    // all, had it ended the step going in). A 1 kg box landing at 10 m/s
-    // under a 1,000 N push towards the ground, held by its contact 2 cm into
-    // the ground at the step's end, was put back on the surface leaving it at
-    // 6.5 m/s, and at the 400 m/s limit under 100 kN.
+    // Along each stop's normal (from the surface towards the body) that
+    // velocity is held between two bounds:
+    // - above: the rewind takes the acceleration back as if the body had
+    //   flown free since; a body the contacts held did not. At the time it
+    //   reached the surface it was not leaving it faster than it ended the
+    //   step (nor leaving it at all, had it ended the step going in). A 1 kg
+    //   box landing at 10 m/s under a 1,000 N push towards the ground, held
+    //   by its contact 2 cm into the ground at the step's end, was put back
+    //   on the surface leaving it at 6.5 m/s, and at the 400 m/s limit under
+    //   100 kN.
+    // - below, for a body stopped by a probe: it is driving into a static
+    //   surface it already touches, and its contact did not stop it (one
+    //   contact point, say, about which the body turned). Kept, that velocity
+    //   would be put back again in every step and freeze the body where it
+    //   is: the centroid's approach speed is taken out, as an inelastic
+    //   impact of the centroid with the static surface would (the surface
+    //   takes the momentum).
     for (const Stop* at : {&stop, &hold}) {
         if (at->normal.x == 0.0f && at->normal.y == 0.0f) continue;
         const float most = std::max(dot(ended, at->normal), 0.0f);
         const float away = dot(body.v, at->normal);
-        if (away > most) body.v -= (away - most) * at->normal;
-    }
-    // A body stopped by a probe is driving into a static surface it already
-    // touches, and its contact did not stop it (one contact point, say,
-    // about which the body turned). Kept, that velocity would be put back
-    // again in every step and freeze the body where it is: the centroid's
-    // approach speed is taken out, as an inelastic impact of the centroid
-    // with the static surface would (the surface takes the momentum).
-    for (const Stop* probe : {&stop, &hold}) {
-        if (!probe->byProbe) continue;
-        const float approach = dot(body.v, probe->normal);
-        if (approach < 0.0f) body.v -= approach * probe->normal;
+        if (away > most)
+            body.v -= (away - most) * at->normal;
+        else if (at->byProbe && away < 0.0f)
+            body.v -= away * at->normal;
     }
 }
 
