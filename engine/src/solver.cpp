@@ -838,6 +838,8 @@ void stepWorld(WorldState& w, float dt) {
     Profile& profile = w.profile;
     auto t0 = Clock::now();
     auto t = t0;
+    // Before the contacts carry their impulses to this step's manifolds.
+    releaseRemovedForces(w, dt);
     coverSetMotions(w, dt);
     updatePairs(w);
     profile.pairs = msSince(t);

@@ -232,6 +232,8 @@ void World::applyForce(BodyId id, Vec2 force, Vec2 point, bool wake) {
     if (body.type != BodyType::dynamic_body) return;
     if (wake) detail::wakeBody(state(), b);
     if (!body.awake) return;  // a sleeping body ignores forces unless woken (as in Box2D)
+    // Listed for the next step, which compares it with the last (releaseRemovedForces).
+    if (body.force.x == 0.0f && body.force.y == 0.0f) state().forcedBodies.push_back(b);
     body.force += force;
     body.torque += cross(point - body.center, force);
 }

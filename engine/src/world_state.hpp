@@ -20,6 +20,7 @@
 #include "impulse2d/types.hpp"
 #include "island.hpp"
 #include "joint.hpp"
+#include "lost_load.hpp"
 #include "shape.hpp"
 #include "slot_array.hpp"
 #include "solver.hpp"
@@ -72,6 +73,13 @@ struct WorldState {
     /// Per body slot: its place in the lost loads being released
     /// (lost_load.cpp), −1 outside a release.
     std::vector<int> lostLoadPlace;
+    /// The bodies given a force (World::applyForce) since the last step,
+    /// listed when their force stops being zero; and the forces of the last
+    /// step, per substep (releaseRemovedForces, lost_load.hpp).
+    std::vector<int> forcedBodies;
+    std::vector<AppliedLoad> appliedLoads;
+    std::vector<LostLoad>
+        removedForceScratch;  ///< releaseRemovedForces' list, kept so a step allocates nothing once grown
     /// Per contact slot: when a destroyed contact or joint last took the
     /// contact's load away (releaseLostLoads), as 1 + the stamp of the step
     /// before; 0 if never. Sized at the first such release. Its soft rows

@@ -164,7 +164,10 @@ public:
     /// Add a force (N) at a world point (m) for the next step, then it is
     /// cleared (locked). Only dynamic bodies are affected; with wake false a
     /// sleeping body ignores it. Throws i2d::Error unless force and point are
-    /// bounded.
+    /// bounded. A force applied in one step and not (or less) in the next no
+    /// longer loads the contacts and joints that held the body against it:
+    /// the body is not thrown back when the game lets go (its torque is not
+    /// followed so).
     void applyForce(BodyId id, Vec2 force, Vec2 worldPoint, bool wake = true);
     /// applyForce at the centre of mass: no torque.
     void applyForceToCenter(BodyId id, Vec2 force, bool wake = true);
