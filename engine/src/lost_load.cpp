@@ -128,13 +128,8 @@ void releaseLostLoads(WorldState& w, std::vector<LostLoad>& lost) {
     }
 }
 
-void releaseRemovedForces(WorldState& w, float dt) {
+void releaseRemovedForces(WorldState& w, float h) {
     if (w.appliedLoads.empty() && w.forcedBodies.empty()) return;
-    // The warm start is re-applied in every substep (soft_step), or once in
-    // the step: a force's impulse is compared over that time.
-    const WorldSettings& set = w.settings;
-    const float h = set.positionCorrection == PositionCorrection::soft_step ? dt / static_cast<float>(set.substeps)
-                                                                            : dt;
     auto current = [&](int b, std::uint32_t generation) -> const Body* {
         if (b < 0 || b >= w.bodies.capacity()) return nullptr;
         const Body& body = w.bodies[b];
@@ -145,9 +140,9 @@ void releaseRemovedForces(WorldState& w, float dt) {
     for (const AppliedLoad& a : w.appliedLoads) {
         const Body* body = current(a.body, a.generation);
         if (body == nullptr) continue;
-        // A sleeping body's contacts were not solved with the force; it was
-        // cleared when the body fell asleep.
-        const Vec2 gone = a.impulse - h * body->force;
+        // (A body that fell asleep at the end of the last step had its force
+        // cleared: the whole of it is gone.)
+        const Vec2 gone = h * (a.force - body->force);
         if (gone.x != 0.0f || gone.y != 0.0f) addLoss(w, lost, a.body, gone, 0);
     }
     if (!lost.empty()) releaseLostLoads(w, lost);
@@ -159,7 +154,7 @@ void releaseRemovedForces(WorldState& w, float dt) {
     for (const int b : w.forcedBodies) {
         const Body& body = w.bodies[b];
         if (current(b, body.generation) == nullptr || (body.force.x == 0.0f && body.force.y == 0.0f)) continue;
-        w.appliedLoads.push_back({b, body.generation, h * body.force});
+        w.appliedLoads.push_back({b, body.generation, body.force});
     }
     w.forcedBodies.clear();
 }

@@ -61,22 +61,21 @@ void addJointLoss(WorldState& w, const Joint& jt, std::vector<LostLoad>& lost);
 /// reaching it later, round a loop of contacts, is left).
 void releaseLostLoads(WorldState& w, std::vector<LostLoad>& lost);
 
-/// A force the game applied to a body in the last step, as the impulse it
-/// gave the body in each substep (N·s), for the next step to compare.
+/// A force the game applied to a body in the last step, for the next step
+/// to compare with its own.
 struct AppliedLoad {
     int body;
     std::uint32_t generation;  ///< the body's, so that a slot reused since is not taken for it
-    Vec2 impulse;
+    Vec2 force;
 };
 
-/// At the start of a step of length dt: what each body's applied force gave
-/// it in a substep of the last step and no longer gives it in this one (the
-/// last impulse less this step's, WorldState::appliedLoads against
-/// Body::force) is released down its load path as a lost load
-/// (releaseLostLoads); then this step's forces are kept for the next. Torques
-/// are not followed (a lost load is a force on a body). A world whose game
-/// applies no forces pays nothing: the bodies given a force are listed as it
-/// is given (WorldState::forcedBodies).
-void releaseRemovedForces(WorldState& w, float dt);
+/// At the start of a step whose substep is h, once the warm starts are
+/// scaled to it (warm_start.hpp): what each body's applied force gave it in
+/// a substep and no longer gives it in this one, h·(F_last − F), is released
+/// down its load path as a lost load (releaseLostLoads); then this step's
+/// forces are kept for the next. Torques are not followed (a lost load is a
+/// force on a body). A world whose game applies no forces pays nothing: the
+/// bodies given a force are listed as it is given (WorldState::forcedBodies).
+void releaseRemovedForces(WorldState& w, float h);
 
 }  // namespace i2d::detail

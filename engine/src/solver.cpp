@@ -43,6 +43,7 @@
 #include "impact_stage.hpp"
 #include "integration.hpp"
 #include "joint_solver.hpp"
+#include "warm_start.hpp"
 #include "world_state.hpp"
 
 namespace i2d::detail {
@@ -839,7 +840,7 @@ void stepWorld(WorldState& w, float dt) {
     auto t0 = Clock::now();
     auto t = t0;
     // Before the contacts carry their impulses to this step's manifolds.
-    releaseRemovedForces(w, dt);
+    carryWarmStarts(w, dt);
     coverSetMotions(w, dt);
     updatePairs(w);
     profile.pairs = msSince(t);

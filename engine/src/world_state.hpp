@@ -75,7 +75,7 @@ struct WorldState {
     std::vector<int> lostLoadPlace;
     /// The bodies given a force (World::applyForce) since the last step,
     /// listed when their force stops being zero; and the forces of the last
-    /// step, per substep (releaseRemovedForces, lost_load.hpp).
+    /// step (releaseRemovedForces, lost_load.hpp).
     std::vector<int> forcedBodies;
     std::vector<AppliedLoad> appliedLoads;
     std::vector<LostLoad>
@@ -107,7 +107,9 @@ struct WorldState {
     /// body's start (impactStarts): the row preparation reads no body's
     /// start in a step without any.
     std::uint32_t startsShiftedAt = 0;
-    float stepDt = 0.0f;    ///< the step's Δt, set as it begins (the narrowphase's speculative margins)
+    float stepDt = 0.0f;  ///< the step's Δt, set as it begins (the narrowphase's speculative margins)
+    float lastSubstep =
+        0.0f;  ///< the substep (Δt in one-pass modes) the warm starts were found at, 0 before the first step (warm_start.hpp)
     bool locked = false;    ///< true while stepping or drawing (see checkUnlocked)
     bool stepping = false;  ///< true inside step(): end events go to this step's lists, not the pending ones
 

@@ -2,7 +2,9 @@
 // against closed-form answers (issue: engine foundation, "Tests").
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
+#include <cstdint>
 #include <cstdio>
 #include <cstring>
 #include <memory>
@@ -376,4 +378,51 @@ TEST(SolverBehaviour, BodiesIntegrateTogetherAsEachAlone) {
     // The limits acted (else the one-at-a-time fallback went untested).
     EXPECT_LE(length(together.linearVelocity(inTogether[5])), together.settings().maxLinearSpeed);
     EXPECT_GT(length(together.linearVelocity(inTogether[5])), 0.99f * together.settings().maxLinearSpeed);
+}
+
+// A game that steps with its frame time gives every step another length. A
+// warm start is a force times the substep, so each step's impulses are
+// scaled to the new substep (engine/src/warm_start.hpp). Stacks at rest
+// (a column of 20 unit boxes, a pyramid of 20 rows; friction 0.6, sleeping
+// off) stepped for 10 s with steps drawn uniformly from [1/75, 1/50] s: in
+// that range the contact rows keep their 50 Hz (the cap, a quarter of the
+// substep rate, is 50 Hz at 1/50 s), so neither the loads nor the rows'
+// stiffness change and the stacks have no reason to move. Bound: one
+// substep of gravity at the longest substep, g·h = 0.05 m/s, the most a body
+// falls while a warm start that is right catches it within the substep.
+// Unscaled, the warm starts were too large after a short step and too small
+// after a long one: the stacks moved at 0.19 and 0.32 m/s. Scaled: 0.004
+// and 0.0004 m/s.
+TEST(SolverBehaviour, StacksStayAtRestWhenTheStepLengthVaries) {
+    for (const bool pyramid : {false, true}) {
+        WorldSettings settings;
+        settings.enableSleep = false;
+        World world(settings);
+        test::makeGround(world);
+        std::vector<BodyId> boxes;
+        const int rows = 20;
+        if (pyramid) {
+            for (int r = 0; r < rows; ++r)
+                for (int i = 0; i < rows - r; ++i)
+                    boxes.push_back(
+                        test::makeBox(world, {-0.5f * static_cast<float>(rows - r - 1) + static_cast<float>(i),
+                                              0.5f + static_cast<float>(r)}));
+        } else {
+            for (int i = 0; i < rows; ++i) boxes.push_back(test::makeBox(world, {0.0f, 0.5f + static_cast<float>(i)}));
+        }
+        for (int i = 0; i < 120; ++i) world.step(kDt);
+        const float shortest = 1.0f / 75.0f, longest = 1.0f / 50.0f;
+        std::uint32_t seed = 7u;
+        float fastest = 0.0f;
+        for (int i = 0; i < 600; ++i) {
+            seed = seed * 1664525u + 1013904223u;  // a fixed sequence on every platform
+            const float u = static_cast<float>(seed >> 8) / static_cast<float>(1u << 24);
+            world.step(shortest + u * (longest - shortest));
+            for (BodyId b : boxes) fastest = std::max(fastest, length(world.linearVelocity(b)));
+        }
+        const float bound = -world.settings().gravity.y * longest / static_cast<float>(world.settings().substeps);
+        std::printf("[figure] %s at rest, steps of 1/75 to 1/50 s: fastest %.4f m/s (bound %.4f)\n",
+                    pyramid ? "pyramid of 20 rows" : "column of 20", fastest, bound);
+        EXPECT_LT(fastest, bound) << (pyramid ? "pyramid" : "column");
+    }
 }

@@ -59,7 +59,8 @@ public:
     // ---- Stepping -------------------------------------------------------
 
     /// Advance the world by dt seconds (finite, in [1e-6, 1]; use a fixed
-    /// value, usually 1/60). Runs: broadphase pairs → narrowphase → impacts →
+    /// value, usually 1/60; another length is allowed, and the impulses carried
+    /// from the last step are scaled to it). Runs: broadphase pairs → narrowphase → impacts →
     /// velocity solve → integrate → position correction → continuous
     /// collision of fast bodies against static shapes → sleep. Events of this step are
     /// readable afterwards until the next step; forces applied before it are
