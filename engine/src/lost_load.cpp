@@ -41,6 +41,20 @@ void addLoss(WorldState& w, std::vector<LostLoad>& lost, int b, Vec2 impulse, st
     }
 }
 
+/// What of a load `last` (an impulse a substep) is gone when the body has
+/// `now` instead: the part of `last` along its own direction that `now` no
+/// longer gives (all of it when `now` is zero or turned away, none when `now`
+/// is as large along it). What `now` adds, along `last` or across it, is a new
+/// load the solver finds, not one to take out of the warm starts: taken as
+/// a lost load the other way, it took the load off the contacts above a
+/// body as if they had held it against the new force.
+Vec2 removedPart(Vec2 last, Vec2 now) {
+    const float size2 = dot(last, last);
+    if (!(size2 > 0.0f)) return {};
+    const float kept = std::clamp(dot(now, last) / size2, 0.0f, 1.0f);
+    return (1.0f - kept) * last;
+}
+
 }  // namespace
 
 void addContactLoss(WorldState& w, const Contact& ct, std::vector<LostLoad>& lost) {
@@ -129,7 +143,14 @@ void releaseLostLoads(WorldState& w, std::vector<LostLoad>& lost) {
 }
 
 void releaseRemovedForces(WorldState& w, float h) {
-    if (w.appliedLoads.empty() && w.forcedBodies.empty()) return;
+    const Vec2 g = w.settings.gravity;
+    // The gravity the last step's warm starts carried (none before the first step).
+    const bool stepped = w.gravityStepped;
+    const Vec2 gLast = stepped ? w.lastGravity : g;
+    w.lastGravity = g;
+    w.gravityStepped = true;
+    const bool gravityChanged = gLast.x != g.x || gLast.y != g.y;
+    if (w.appliedLoads.empty() && w.forcedBodies.empty() && w.rescaledBodies.empty() && !gravityChanged) return;
     auto current = [&](int b, std::uint32_t generation) -> const Body* {
         if (b < 0 || b >= w.bodies.capacity()) return nullptr;
         const Body& body = w.bodies[b];
@@ -137,13 +158,57 @@ void releaseRemovedForces(WorldState& w, float h) {
     };
     std::vector<LostLoad>& lost = w.removedForceScratch;
     lost.clear();
+    // Gravity: of the weight m·s_last·g_last a substep, what m·s·g no longer
+    // gives (removedPart), s_last the body's gravity
+    // scale in the last step (WorldState::rescaledBodies keeps the first
+    // scale a body had before the game changed it). Every dynamic body when
+    // the world's gravity changed, asleep or not (a sleeping pile's warm
+    // starts act when it wakes); the rescaled bodies otherwise.
+    std::stable_sort(w.rescaledBodies.begin(), w.rescaledBodies.end(),
+                     [](const RescaledBody& x, const RescaledBody& y) { return x.body < y.body; });
+    w.rescaledBodies.erase(std::unique(w.rescaledBodies.begin(), w.rescaledBodies.end(),
+                                       [](const RescaledBody& x, const RescaledBody& y) { return x.body == y.body; }),
+                           w.rescaledBodies.end());
+    auto gravityGone = [&](const Body& body, float scaleLast) {
+        return removedPart((body.mass * h * scaleLast) * gLast, (body.mass * h * body.gravityScale) * g);
+    };
+    if (gravityChanged) {
+        std::size_t next = 0;  // the rescaled bodies, in slot order as the loop
+        for (int b = 0; b < w.bodies.capacity(); ++b) {
+            const Body& body = w.bodies[b];
+            if (!body.alive || body.type != BodyType::dynamic_body) continue;
+            while (next < w.rescaledBodies.size() && w.rescaledBodies[next].body < b) ++next;
+            const bool rescaled = next < w.rescaledBodies.size() && w.rescaledBodies[next].body == b &&
+                                  w.rescaledBodies[next].generation == body.generation;
+            const Vec2 gone = gravityGone(body, rescaled ? w.rescaledBodies[next].scale : body.gravityScale);
+            if (gone.x != 0.0f || gone.y != 0.0f) addLoss(w, lost, b, gone, 0);
+        }
+    } else {
+        for (const RescaledBody& r : w.rescaledBodies)
+            if (const Body* body = current(r.body, r.generation)) {
+                const Vec2 gone = gravityGone(*body, r.scale);
+                if (gone.x != 0.0f || gone.y != 0.0f) addLoss(w, lost, r.body, gone, 0);
+            }
+    }
+    w.rescaledBodies.clear();
     for (const AppliedLoad& a : w.appliedLoads) {
         const Body* body = current(a.body, a.generation);
         if (body == nullptr) continue;
         // (A body that fell asleep at the end of the last step had its force
         // cleared: the whole of it is gone.)
-        const Vec2 gone = h * (a.force - body->force);
+        const Vec2 gone = removedPart(h * a.force, h * body->force);
         if (gone.x != 0.0f || gone.y != 0.0f) addLoss(w, lost, a.body, gone, 0);
+    }
+    // Released from the top down (along the last step's gravity): a load
+    // reaching a body whose own was released before it is left (releaseLostLoads).
+    if (lost.size() > 1) {
+        const float size = length(gLast);
+        const Vec2 up = size > 0.0f ? (-1.0f / size) * gLast : Vec2{0.0f, 1.0f};
+        std::stable_sort(lost.begin(), lost.end(), [&](const LostLoad& x, const LostLoad& y) {
+            return dot(w.bodies[x.body].center, up) > dot(w.bodies[y.body].center, up);
+        });
+        for (std::size_t k = 0; k < lost.size(); ++k)
+            w.lostLoadPlace[static_cast<std::size_t>(lost[k].body)] = static_cast<int>(k);
     }
     if (!lost.empty()) releaseLostLoads(w, lost);
     // This step's forces, for the next. A body is listed again when its force

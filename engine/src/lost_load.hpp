@@ -69,13 +69,25 @@ struct AppliedLoad {
     Vec2 force;
 };
 
+/// A body whose gravity scale the game changed since the last step, with the
+/// scale it had then (World::setGravityScale lists it).
+struct RescaledBody {
+    int body;
+    std::uint32_t generation;
+    float scale;
+};
+
 /// At the start of a step whose substep is h, once the warm starts are
 /// scaled to it (warm_start.hpp): what each body's applied force gave it in
-/// a substep and no longer gives it in this one, h·(F_last − F), is released
+/// a substep and no longer gives it in this one (of h·F_last, the part along
+/// it that h·F does not give), is released
 /// down its load path as a lost load (releaseLostLoads); then this step's
-/// forces are kept for the next. Torques are not followed (a lost load is a
-/// force on a body). A world whose game applies no forces pays nothing: the
-/// bodies given a force are listed as it is given (WorldState::forcedBodies).
+/// forces are kept for the next. The same for gravity: when the world's
+/// gravity or a body's gravity scale changed, the part of its last weight
+/// m·s_last·g_last·h that each body no longer has. Torques are not followed (a lost load is a
+/// force on a body). A world whose game changes none of these pays nothing:
+/// the bodies given a force or a new gravity scale are listed as the game
+/// gives them (WorldState::forcedBodies, rescaledBodies).
 void releaseRemovedForces(WorldState& w, float h);
 
 }  // namespace i2d::detail

@@ -22,7 +22,8 @@ void scale(JointImpulses& j, float r) {
 
 void carryWarmStarts(WorldState& w, float dt) {
     const WorldSettings& set = w.settings;
-    const float h = set.positionCorrection == PositionCorrection::soft_step ? dt / static_cast<float>(set.substeps) : dt;
+    const float h = set.positionCorrection == PositionCorrection::soft_step ? dt / static_cast<float>(set.substeps)
+                                                                            : dt;
     // Every contact and joint, asleep or not: a sleeping island's warm starts
     // are applied when it wakes, at that step's substep. A world stepped at
     // one rate never comes here.

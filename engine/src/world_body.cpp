@@ -345,7 +345,11 @@ float World::gravityScale(BodyId id) const { return state().bodies[state().bodyI
 void World::setGravityScale(BodyId id, float s) {
     int b = state().bodyIndex(id);
     requireBounded(s, "gravity scale");
-    state().bodies[b].gravityScale = s;
+    detail::Body& body = state().bodies[b];
+    // Listed for the next step, which takes the weight the body no longer
+    // has out of its supports' warm starts (releaseRemovedForces).
+    if (s != body.gravityScale) state().rescaledBodies.push_back({b, body.generation, body.gravityScale});
+    body.gravityScale = s;
 }
 bool World::isFixedRotation(BodyId id) const { return state().bodies[state().bodyIndex(id)].fixedRotation; }
 void World::setFixedRotation(BodyId id, bool flag) {

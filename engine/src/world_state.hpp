@@ -78,6 +78,9 @@ struct WorldState {
     /// step (releaseRemovedForces, lost_load.hpp).
     std::vector<int> forcedBodies;
     std::vector<AppliedLoad> appliedLoads;
+    std::vector<RescaledBody> rescaledBodies;  ///< bodies given a new gravity scale since the last step
+    Vec2 lastGravity{};                        ///< the gravity of the last step, valid once gravityStepped
+    bool gravityStepped = false;
     std::vector<LostLoad>
         removedForceScratch;  ///< releaseRemovedForces' list, kept so a step allocates nothing once grown
     /// Per contact slot: when a destroyed contact or joint last took the

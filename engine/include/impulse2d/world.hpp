@@ -89,7 +89,9 @@ public:
     void setTaskSystem(TaskSystem* tasks);
     TaskSystem* taskSystem() const;
     /// Set the gravity acceleration (m/s², locked), applied from the next step.
-    /// Does not wake sleeping bodies. Throws i2d::Error unless bounded.
+    /// Does not wake sleeping bodies. The weight a body no longer has is taken
+    /// out of what its supports carry, so a pile whose gravity is turned off
+    /// is not thrown up. Throws i2d::Error unless bounded.
     void setGravity(Vec2 gravity);
     /// Gravity acceleration (m/s²).
     Vec2 gravity() const;
@@ -216,8 +218,9 @@ public:
     void setAngularDamping(BodyId id, float damping);
     /// Multiplier of the world's gravity for this body (dimensionless).
     float gravityScale(BodyId id) const;
-    /// Any bounded value (negative makes the body fall up). Throws
-    /// i2d::Error when scale is not bounded.
+    /// Any bounded value (negative makes the body fall up); the weight the
+    /// body no longer has is released from its supports at the next step, as
+    /// for setGravity. Throws i2d::Error when scale is not bounded.
     void setGravityScale(BodyId id, float scale);
     /// True when the body cannot rotate (infinite rotational inertia).
     bool isFixedRotation(BodyId id) const;
