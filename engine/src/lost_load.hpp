@@ -14,11 +14,12 @@
 // loads and pushed back, a 40-row pyramid whose top box was destroyed
 // jumping at 0.88 m/s.
 //
-// A force the game stops applying is a lost load the same way: the contacts
-// and joints that held a body against it keep impulses found for it. A
-// column of five 1 kg boxes whose top the game pressed down with 1 kN for
-// half a second was thrown up at 1.2 m/s when let go, and toppled under 10
-// kN (releaseRemovedForces).
+// A force the game stops applying is a lost load the same way, and so is
+// weight a change of gravity takes away: the contacts and joints that held a
+// body against it keep impulses found for it. A column of five 1 kg boxes
+// whose top the game pressed down with 1 kN for half a second was thrown up
+// at 1.2 m/s when let go; a column of 20 whose gravity was turned off, at
+// 0.6 m/s (releaseRemovedForces).
 #pragma once
 
 #include <cstdint>
@@ -80,12 +81,12 @@ struct RescaledBody {
 /// At the start of a step whose substep is h, once the warm starts are
 /// scaled to it (warm_start.hpp): what each body's applied force gave it in
 /// a substep and no longer gives it in this one (of h·F_last, the part along
-/// it that h·F does not give), is released
-/// down its load path as a lost load (releaseLostLoads); then this step's
-/// forces are kept for the next. The same for gravity: when the world's
-/// gravity or a body's gravity scale changed, the part of its last weight
-/// m·s_last·g_last·h that each body no longer has. Torques are not followed (a lost load is a
-/// force on a body). A world whose game changes none of these pays nothing:
+/// it that h·F does not give) is released down its load path as a lost load
+/// (releaseLostLoads); then this step's forces are kept for the next. The
+/// same for gravity: when the world's gravity or a body's gravity scale
+/// changed, the part of its last weight m·s_last·g_last·h that each body no
+/// longer has. Torques are not followed (a lost load is a force on a body).
+/// A world whose game changes none of these pays nothing:
 /// the bodies given a force or a new gravity scale are listed as the game
 /// gives them (WorldState::forcedBodies, rescaledBodies).
 void releaseRemovedForces(WorldState& w, float h);

@@ -81,8 +81,8 @@ struct WorldState {
     std::vector<RescaledBody> rescaledBodies;  ///< bodies given a new gravity scale since the last step
     Vec2 lastGravity{};                        ///< the gravity of the last step, valid once gravityStepped
     bool gravityStepped = false;
-    std::vector<LostLoad>
-        removedForceScratch;  ///< releaseRemovedForces' list, kept so a step allocates nothing once grown
+    /// releaseRemovedForces' list, kept so a step allocates nothing once grown.
+    std::vector<LostLoad> removedForceScratch;
     /// Per contact slot: when a destroyed contact or joint last took the
     /// contact's load away (releaseLostLoads), as 1 + the stamp of the step
     /// before; 0 if never. Sized at the first such release. Its soft rows
@@ -111,8 +111,9 @@ struct WorldState {
     /// start in a step without any.
     std::uint32_t startsShiftedAt = 0;
     float stepDt = 0.0f;  ///< the step's Δt, set as it begins (the narrowphase's speculative margins)
-    float lastSubstep =
-        0.0f;  ///< the substep (Δt in one-pass modes) the warm starts were found at, 0 before the first step (warm_start.hpp)
+    /// The substep (Δt in one-pass modes) the warm starts were found at, 0
+    /// before the first step (warm_start.hpp).
+    float lastSubstep = 0.0f;
     bool locked = false;    ///< true while stepping or drawing (see checkUnlocked)
     bool stepping = false;  ///< true inside step(): end events go to this step's lists, not the pending ones
 
