@@ -364,7 +364,7 @@ void resolveImpacts(WorldState& w, float dt) {
     const WorldSettings& settings = w.settings;
     if (settings.impactModel != ImpactModel::closed_form) return;
     const float threshold = settings.impactThreshold;
-    const int substeps = settings.positionCorrection == PositionCorrection::soft_step ? settings.substeps : 1;
+    const int substeps = solverSubsteps(settings);
     const float halfSubstep = 0.5f * dt / static_cast<float>(substeps);
     // The speeds the step integrates with (clampVelocity): a strike's change
     // beyond them is never flown. Shifted by the whole of it, a 2.4e-26 kg

@@ -508,7 +508,7 @@ void solve(WorldState& w, float dt) {
     const WorldSettings& set = w.settings;
     SolverArrays& s = w.solver;
     const bool soft = set.positionCorrection == PositionCorrection::soft_step;
-    const int substeps = soft ? set.substeps : 1;
+    const int substeps = solverSubsteps(set);
     const float h = dt / static_cast<float>(substeps);
     const float maxSpeed = set.maxLinearSpeed;
 

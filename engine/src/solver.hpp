@@ -17,6 +17,13 @@ namespace i2d::detail {
 
 struct WorldState;
 
+/// The solver passes of a step: `substeps` under soft_step, one otherwise.
+/// The solve, the impact stage's timing and the warm starts' scaling
+/// (warm_start.hpp) each divide the step by it.
+inline int solverSubsteps(const WorldSettings& s) {
+    return s.positionCorrection == PositionCorrection::soft_step ? s.substeps : 1;
+}
+
 inline constexpr std::uint8_t kBodyMoves = 1, kBodyTurns = 2;  ///< SolverArrays::bodyMoves
 
 /// What the greedy colouring needs of one active contact (solver.cpp,

@@ -21,9 +21,7 @@ void scale(JointImpulses& j, float r) {
 }  // namespace
 
 void carryWarmStarts(WorldState& w, float dt) {
-    const WorldSettings& set = w.settings;
-    const float h = set.positionCorrection == PositionCorrection::soft_step ? dt / static_cast<float>(set.substeps)
-                                                                            : dt;
+    const float h = dt / static_cast<float>(solverSubsteps(w.settings));
     // Every contact and joint, asleep or not: a sleeping island's warm starts
     // are applied when it wakes, at that step's substep. A world stepped at
     // one rate never comes here.
