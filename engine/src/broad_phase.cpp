@@ -95,6 +95,7 @@ void createProxy(WorldState& w, int s) {
     sh.inStaticTree = body.type == BodyType::static_body;
     DynamicTree& tree = sh.inStaticTree ? bp.staticTree : bp.movingTree;
     sh.proxy = tree.createProxy(fat, s);
+    if (body.type == BodyType::kinematic_body) ++bp.kinematicProxies;
     if (!sh.inStaticTree) {
         sh.moved = true;
         bp.moveBuffer.push_back(s);
@@ -117,6 +118,7 @@ void destroyProxy(WorldState& w, int s) {
     if (sh.proxy == DynamicTree::kNull) return;
     w.bodies[sh.body].boxSlack = 0.0f;
     (sh.inStaticTree ? bp.staticTree : bp.movingTree).destroyProxy(sh.proxy);
+    if (w.bodies[sh.body].type == BodyType::kinematic_body) --bp.kinematicProxies;
     sh.proxy = DynamicTree::kNull;
     if (sh.moved) {
         bp.moveBuffer.erase(std::remove(bp.moveBuffer.begin(), bp.moveBuffer.end(), s), bp.moveBuffer.end());

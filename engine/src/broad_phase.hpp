@@ -26,6 +26,10 @@ struct BroadPhase {
     std::vector<std::uint8_t> proxyLeaves;  ///< per awake body: a shape left its fat box this step (refreshProxies)
     PairSet pairs;                          ///< shape pairs that have a contact
     std::vector<int> motionSet;             ///< bodies whose velocity the game set since the last step (noteMotionSet)
+    /// Proxies of kinematic bodies' shapes in movingTree: continuous
+    /// collision sweeps fast bodies against them (continuous.cpp), and a
+    /// world without any does not look for them.
+    int kinematicProxies = 0;
     /// Per shape slot: the box in the broadphase tree (grown by the margin;
     /// that of a shape without a proxy means nothing). Apart from the
     /// shapes: every contact's update checks its two boxes each step, and

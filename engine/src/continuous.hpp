@@ -1,4 +1,4 @@
-// Continuous collision of fast bodies against static shapes (continuous.cpp).
+// Continuous collision of fast bodies against static and kinematic shapes (continuous.cpp).
 #pragma once
 
 namespace i2d::detail {
@@ -16,8 +16,9 @@ struct WorldState;
 bool needsSweep(const WorldState& w, const Body& body, const BodyState& s);
 
 /// After the solver has moved the bodies: each body that moved further than
-/// the speculative distance is swept against the static shapes near its
-/// path and put back to its first time of impact (it keeps its velocity).
+/// the speculative distance is swept against the static and kinematic shapes
+/// near its path and put back to its first time of impact (it keeps its
+/// velocity).
 /// After the solve of a step of length dt; the bodies swept are those the
 /// write-back flagged (needsSweep).
 void solveContinuous(WorldState& w, float dt);

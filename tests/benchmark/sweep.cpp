@@ -948,7 +948,7 @@ void writeMarkdown(const std::vector<SceneResult>& results, const std::vector<Sc
               "| impacts | the closed-form impact law at approaching contacts |\n"
               "| solve | the solver: awake bodies gathered, rows coloured and prepared, the substeps (integrate, warm "
               "start, solve, relax), restitution, impulses and positions stored |\n"
-              "| continuous | fast bodies swept against static shapes (and bullets) |\n"
+              "| continuous | fast bodies swept against static and kinematic shapes (and bullets) |\n"
               "| proxies | the broadphase boxes moved of the bodies the solve's write-back found outside them (or continuous collision moved) |\n"
               "| sleep | the sleep test and freeing the step's large arrays |\n\n"
               "| scene | bodies | touching contacts | steps untimed + timed × repeats | workers | step ms "

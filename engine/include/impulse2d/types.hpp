@@ -141,12 +141,13 @@ struct WorldSettings {
     float maxLinearSpeed = 400.0f;
 
     bool enableWarmStarting = true;
-    /// Continuous collision against static shapes: a dynamic body whose points
-    /// may move further than speculativeDistance in a step is swept against
-    /// the static shapes near its path and, if it would touch one, put back to
-    /// its first time of impact (keeping its velocity), so it cannot pass
-    /// through thin walls. Dynamic-versus-dynamic pairs are swept only for
-    /// bullets (BodyDef::isBullet) against bodies that are not bullets.
+    /// Continuous collision against static and kinematic shapes: a dynamic
+    /// body whose points may move further than speculativeDistance in a step
+    /// is swept against the static and kinematic shapes near its path (against
+    /// a kinematic one along its motion relative to it) and, if it would touch
+    /// one, put back to its first time of impact (keeping its velocity), so it
+    /// cannot pass through thin walls. Dynamic-versus-dynamic pairs are swept
+    /// only for bullets (BodyDef::isBullet) against bodies that are not bullets.
     bool enableContinuous = true;
     bool enableSleep = true;
     /// Seconds an island must rest before it sleeps.

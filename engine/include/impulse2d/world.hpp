@@ -62,7 +62,7 @@ public:
     /// value, usually 1/60; another length is allowed, and the impulses carried
     /// from the last step are scaled to it). Runs: broadphase pairs → narrowphase → impacts →
     /// velocity solve → integrate → position correction → continuous
-    /// collision of fast bodies against static shapes → sleep. Events of this step are
+    /// collision of fast bodies against static and kinematic shapes → sleep. Events of this step are
     /// readable afterwards until the next step; forces applied before it are
     /// used and then cleared. Throws i2d::Error for dt NaN, ±∞, ≤ 0 (also −0),
     /// < 1e-6 s or > 1 s, and when called from inside draw (locked).
