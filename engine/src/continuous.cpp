@@ -179,9 +179,10 @@ SweepStart sweepStartOf(const WorldState& w, const Body& body, const BodyState& 
 /// The motion of an awake body over the step, or false when every point of
 /// it moved less than the speculative distance (a surface it could reach was
 /// then within the speculative distance at the step's start and has a
-/// contact).
-bool makeMover(const WorldState& w, const Body& body, const BodyState& s, Mover& m) {
-    if (!movedBeyondContacts(w, body, s)) return false;
+/// contact), unless it is `pressed` deep into a static or kinematic shape
+/// (markPressedBodies).
+bool makeMover(const WorldState& w, const Body& body, const BodyState& s, Mover& m, bool pressed) {
+    if (!pressed && !movedBeyondContacts(w, body, s)) return false;
     const SweepStart start = sweepStartOf(w, body, s);
     const Vec2 c0 = start.center;
     const Rot dq = start.turn;
@@ -535,6 +536,39 @@ bool needsSweep(const WorldState& w, const Body& body, const BodyState& s) {
     return body.type == BodyType::dynamic_body && body.reach >= 0.0f && movedBeyondContacts(w, body, s);
 }
 
+namespace {
+
+/// In a step with a deep overlap: the dynamic bodies with a deep contact
+/// against a static or kinematic body are swept too (SolverArrays::sweeps
+/// kPressedSweep), however little they moved. A body pressed into such a
+/// shape by a load far heavier than itself sinks a little each step, never
+/// further than the speculative distance, so it was never swept: a flat box
+/// 15 cm thick under a box 800 times its mass went into a chain ground
+/// until its centre crossed the chain, which then let it fall, and through
+/// a two-sided segment, which pushed it out below. Swept, its centroid's
+/// probe keeps the centre from crossing the surface (probeCentroid).
+constexpr std::uint8_t kPressedSweep = 2;
+
+void markPressedBodies(WorldState& w) {
+    SolverArrays& s = w.solver;
+    for (std::size_t k = 0; k < w.activeContacts.size(); ++k) {
+        if ((w.activeLooks[k].rowFlags & kLookDeep) == 0) continue;
+        const Contact& ct = w.contacts[w.activeContacts[k]];
+        const Body& a = w.bodies[ct.bodyA];
+        const Body& b = w.bodies[ct.bodyB];
+        const bool aFixed = a.type != BodyType::dynamic_body, bFixed = b.type != BodyType::dynamic_body;
+        if (aFixed == bFixed) continue;  // two dynamic bodies (or none)
+        const int pressed = aFixed ? ct.bodyB : ct.bodyA;
+        const int i = s.rowBodies[static_cast<std::size_t>(pressed)].state;
+        if (i < 0 || static_cast<std::size_t>(i) >= s.stateBodies.size() ||
+            s.stateBodies[static_cast<std::size_t>(i)] != pressed)
+            continue;
+        if (s.sweeps[static_cast<std::size_t>(i)] == 0) s.sweeps[static_cast<std::size_t>(i)] = kPressedSweep;
+    }
+}
+
+}  // namespace
+
 void solveContinuous(WorldState& w, float dt) {
     // Non-bullets first: the bullets then meet them where they ended the step.
     struct Bullet {
@@ -543,13 +577,14 @@ void solveContinuous(WorldState& w, float dt) {
         Vec2 rewind;
     };
     std::vector<Bullet> bullets;  // allocates only in a step with a fast bullet
+    if (w.solver.anyDeepOverlap) markPressedBodies(w);
     const std::vector<std::uint8_t>& sweeps = w.solver.sweeps;
     for (std::size_t i = 0; i < w.solver.stateBodies.size(); ++i) {
         if (sweeps[i] == 0) continue;  // needsSweep said no in the write-back
         Body& body = w.bodies[w.solver.stateBodies[i]];
         if (!body.isBullet && !mayMeetFixed(w, body, w.solver.states[i])) continue;
         Mover m;
-        if (!makeMover(w, body, w.solver.states[i], m)) continue;
+        if (!makeMover(w, body, w.solver.states[i], m, sweeps[i] == kPressedSweep)) continue;
         // The velocity the free acceleration added over the whole step.
         const Vec2 rewind = dt * w.solver.integration[i].linearAcceleration;
         if (body.isBullet)

@@ -375,6 +375,23 @@ void applyChainRule(const WorldState& w, const Shape& chain, const Shape& moving
             if (!chainIsA) m.normal = -m.normal;
             return;
         }
+        // A body pressed deeper into the segment than the speculative
+        // distance is no body sliding across a seam: its deep points make the
+        // separating axis test pick its own faces against the segment's ends
+        // (a flat box 15 cm thick under a box 800 times its mass, tilted 5°
+        // and 7 cm deep over a chain's vertex: its side face against the
+        // vertex, and its tilted bottom face). Both segments under it dropped
+        // theirs as ghosts, the contact let go of a body still in front of
+        // the chain, and it fell through. Its manifold is taken against the
+        // segment's face alone instead, which pushes it out in front. (A body
+        // resting or sliding on a chain stays within the penetration slop of
+        // its face, 5 mm, and its sag under load.)
+        if (deepestSeparation(m) < -w.settings.speculativeDistance) {
+            const bool chainIsA = dot(m.normal, n) > 0.0f;
+            m = faceOnlyManifold(w, chain, moving, w.settings.speculativeDistance);
+            if (!chainIsA) m.normal = -m.normal;
+            return;
+        }
         m.pointCount = 0;
         return;
     }
