@@ -443,7 +443,12 @@ void sweepBody(WorldState& w, Body& body, const Mover& m, Vec2 rewind) {
     // moves as far as the other shapes let it (the earliest other stop) and
     // only its centroid's approach along that surface's normal is taken out
     // of the move, as it is out of the velocity below.
-    if (hold.holdApproach) xf.p -= std::min(0.0f, stop.t * dot(stop.sweep.dc, hold.normal)) * hold.normal;
+    // (The move from the body's own start: a stop on a sweep relative to a
+    // kinematic body starts where the kinematic body carried the body.)
+    if (hold.holdApproach) {
+        const float moved = stop.t * dot(stop.sweep.dc, hold.normal) + dot(stop.sweep.c0 - m.sweep.c0, hold.normal);
+        xf.p -= std::min(0.0f, moved) * hold.normal;
+    }
     body.xf = xf;
     body.center = transformPoint(xf, body.localCenter);
     // Its proxies are checked again (the write-back checked the step's end).
