@@ -77,7 +77,7 @@ void prepareContacts(WorldState& w, float h, bool soft) {
     s.deepContactCount.assign(s.states.size(), 0);
     s.rolling.clear();
     s.deepRows.clear();
-    bool anyDeep = false;
+    bool anyDeep = false, anyTurning = false;
     // Each row goes straight to its place in colour order (solver.cpp coloured
     // the contacts and left each colour's first slot in colourOffsets).
     s.constraints.resizeForOverwrite(static_cast<std::size_t>(s.rowCount));
@@ -91,6 +91,7 @@ void prepareContacts(WorldState& w, float h, bool soft) {
         ContactConstraint& cc = s.constraints[static_cast<std::size_t>(row)];
         const bool deep = prepareContactRow(w, x, c, cc);
         setTurning(cc, w.activeLooks[k].rowFlags);
+        anyTurning = anyTurning || cc.turnA || cc.turnB;
         if (deep) {
             s.deepRows.push_back(row);
             ++s.deepContactCount[static_cast<std::size_t>(cc.a)];
@@ -101,6 +102,7 @@ void prepareContacts(WorldState& w, float h, bool soft) {
         if (surface && surface->rollingResistance > 0.0f) prepareRollingResistance(w, row, *surface);
     }
     s.anyDeepOverlap = anyDeep;
+    s.anyTurningRow = anyTurning;
     std::sort(s.deepRows.begin(), s.deepRows.end());  // the push sweeps them in row order
     if (anyDeep && !soft) sharePushAmongDeepContacts(w);
     for (ContactConstraint& cc : s.constraints) finishContactRow(x, w.settings.penetrationSlop, cc);
@@ -448,9 +450,21 @@ float turningSpeed(const TurningRow& g, int j, Vec2 direction, const BodyVelocit
 /// n̈ = −ω_F²·n): C̈ = (ẍ_B − ẍ_A)·n + 2(ẋ_B − ẋ_A)·ṅ − ω_F²(x_B − x_A)·n,
 /// each material point turning about its centre of mass (ẍ = −ω²·r; a
 /// circle's point, which follows the normal, at the face's ω).
-float turningBend(const ContactConstraint& cc, const TurningRow& g, int j, const BodyVelocities& v) {
-    const float wF = cc.turnA ? v.wA : v.wB;
-    const float wA = cc.roundA ? wF : v.wA, wB = cc.roundB ? wF : v.wB;
+//
+// The face's spin is its body's when the step began (spinA or spinB), and a
+// round side's point follows the face: taken from the velocities the sweep
+// is changing, the bend fed back into them through ω_F². A box of 24.5 g
+// pinched by a force chain between two circles, its face turned at
+// 111 rad/s by a warm start in the first substep, was asked to close at
+// ½h·ω²·r and more in each pass, and its spin and its rows' impulses
+// diverged within the step (830 N·s), throwing a settled pile of 120 bodies
+// over 20 m walls (docs/validation.md, "Random passive piles that blew up").
+// The other side's own spin, a material point turning about its centre, is
+// its current one.
+float turningBend(const ContactConstraint& cc, const TurningRow& g, int j, const BodyVelocities& v, float spinA,
+                  float spinB) {
+    const float wF = cc.turnA ? spinA : spinB;
+    const float wA = cc.turnA || cc.roundA ? wF : v.wA, wB = cc.turnB || cc.roundB ? wF : v.wB;
     const Vec2 rA = g.pointA[j], rB = g.pointB[j];
     const Vec2 velocityA = v.vA + cross(wA, rA), velocityB = v.vB + cross(wB, rB);
     const Vec2 accelerationA = -(wA * wA) * rA, accelerationB = -(wB * wB) * rB;
@@ -476,8 +490,8 @@ void warmStartTurningRow(const ContactConstraint& cc, BodyState& sA, BodyState& 
 /// One pass of a turning row: its normal points (together when the row's
 /// points are, as solvePointPair), then friction, as solveContactsFor.
 template <SolvePass passKind>
-void solveTurningRow(ContactConstraint& cc, BodyState& sA, BodyState& sB, float invH, float beta, float slop,
-                     bool leaveImpacts, float impactSpeed) {
+void solveTurningRow(ContactConstraint& cc, BodyState& sA, BodyState& sB, float spinA, float spinB, float invH,
+                     float beta, float slop, bool leaveImpacts, float impactSpeed) {
     const TurningRow g = turningRow(cc, sA, sB);
     BodyVelocities v{sA.v, sA.w, sB.v, sB.w};
     PointTarget target[2];
@@ -497,7 +511,7 @@ void solveTurningRow(ContactConstraint& cc, BodyState& sA, BodyState& sB, float 
         // It is not capped: held to the push cap (3 m/s), a box spun at 40
         // rad/s lost all of 100 balls (½h·ω²·r is 6 m/s there), uncapped 9.
         if constexpr (beforeMove) {
-            if (s <= 0.0f) target[j].bias += 0.5f / invH * std::min(turningBend(cc, g, j, v), 0.0f);
+            if (s <= 0.0f) target[j].bias += 0.5f / invH * std::min(turningBend(cc, g, j, v, spinA, spinB), 0.0f);
         }
     }
     const bool together = cc.pointsTogether && cc.pointCount == 2 && !skip[0] && !skip[1];
@@ -552,7 +566,11 @@ void solveContactsFor(WorldState& w, float h, std::size_t first, bool backward) 
         BodyState& sA = states[cc.a];
         BodyState& sB = states[cc.b];
         if (cc.turnA || cc.turnB) {
-            solveTurningRow<passKind>(cc, sA, sB, invH, beta, slop, leaveImpacts, impactSpeed);
+            // (startSpin is filled in every step with a turning row: anyTurningRow.)
+            const std::vector<float>& spin = w.solver.startSpin;
+            const auto a = static_cast<std::size_t>(cc.a), b = static_cast<std::size_t>(cc.b);
+            solveTurningRow<passKind>(cc, sA, sB, a < spin.size() ? spin[a] : sA.w, b < spin.size() ? spin[b] : sB.w,
+                                      invH, beta, slop, leaveImpacts, impactSpeed);
             continue;
         }
         Vec2 vA = sA.v, vB = sB.v;

@@ -207,6 +207,7 @@ void colourContacts(WorldState& w) {
     s.rowCount = rows;
     s.anyDeepOverlap = any & kKeyDeep;
     s.anyRollingRow = any & kKeyRolling;
+    s.anyTurningRow = any & kKeyTurning;
 }
 
 /// The wide blocks of the coloured rows, row group c's rows ending at
@@ -602,6 +603,10 @@ void solve(WorldState& w, float dt) {
         w.runner.run(static_cast<int>(n), kBodyGrain, range);
         stopIfNonFinite();
     };
+    if (s.anyTurningRow) {  // (before the first substep changes them)
+        s.startSpin.resize(s.states.size());
+        for (std::size_t i = 0; i < s.states.size(); ++i) s.startSpin[i] = s.states[i].w;
+    }
     if (soft) {
         for (int i = 0; i < substeps; ++i) {
             velocities(h, i > 0 && s.anyDeepOverlap);

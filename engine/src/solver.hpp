@@ -105,8 +105,12 @@ struct SolverArrays {
     bool pushTrees = false;                  ///< an exact tree is pushed this step (TreeNode::pushed)
     /// Per wide block: a hinge of it became a deep joint (refreshWideRevolutes).
     std::vector<std::uint8_t> wideDeep;
-    bool anyDeepOverlap = false;               ///< some row overlaps deeper than kDeepOverlap this step
-    bool anyRollingRow = false;                ///< some row gets a rolling-resistance row this step
+    bool anyDeepOverlap = false;  ///< some row overlaps deeper than kDeepOverlap this step
+    bool anyRollingRow = false;   ///< some row gets a rolling-resistance row this step
+    bool anyTurningRow = false;   ///< some row is a turning row this step (contact_solver.cpp)
+    /// Per state, in a step with a turning row: its angular velocity when the
+    /// step began, which the turning rows' bend is predicted with (turningBend).
+    std::vector<float> startSpin;
     std::vector<int> deepRows;                 ///< the rows that do, ascending (contact_solver.cpp)
     std::vector<SidePush> sidePushes;          ///< deep rows pushed sideways, in row order (deep_overlap.cpp)
     std::vector<DeepCarry> deepCarry;          ///< per deep row, in deepRows' order (contact_solver.cpp)
