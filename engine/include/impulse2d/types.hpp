@@ -112,8 +112,9 @@ struct WorldSettings {
     /// (velocity_bias; with closed_form, impactThreshold decides which
     /// contacts are impacts and so bounce).
     float restitutionThreshold = 1.0f;
-    /// Approach speed (m/s) above which a new contact is resolved as an impact
-    /// by the closed-form law (when impactModel == closed_form).
+    /// Approach speed (m/s), at the moment the surfaces meet within the step,
+    /// above which a contact is resolved as an impact by the closed-form law
+    /// (when impactModel == closed_form).
     float impactThreshold = 1.0f;
 
     /// Approach speed (m/s) above which a touching contact with a shape that
