@@ -328,17 +328,24 @@ void sweepPair(const Shape& shape, const ShapeCore& core, const Mover& m, const 
     probeCentroid(shape, core, m, other, xfOther, stop);
 }
 
+/// The body's state this step (after the write-back, which clears
+/// Body::solverIndex), or kNullIndex for a body without one.
+int stateIndexOf(const SolverArrays& s, int body) {
+    const auto slot = static_cast<std::size_t>(body);
+    const int i = slot < s.rowBodies.size() ? s.rowBodies[slot].state : kNullIndex;
+    return i >= 0 && static_cast<std::size_t>(i) < s.stateBodies.size() &&
+                   s.stateBodies[static_cast<std::size_t>(i)] == body
+               ? i
+               : kNullIndex;
+}
+
 /// Where a kinematic body was when the step began: its state's motion over
 /// the step taken back; one without a state this step (asleep) did not move.
 Transform kinematicStart(const WorldState& w, int body) {
-    const SolverArrays& s = w.solver;
     const Body& k = w.bodies[body];
-    const auto slot = static_cast<std::size_t>(body);
-    const int i = slot < s.rowBodies.size() ? s.rowBodies[slot].state : kNullIndex;
-    if (i < 0 || static_cast<std::size_t>(i) >= s.stateBodies.size() ||
-        s.stateBodies[static_cast<std::size_t>(i)] != body)
-        return k.xf;
-    const BodyState& st = s.states[static_cast<std::size_t>(i)];
+    const int i = stateIndexOf(w.solver, body);
+    if (i == kNullIndex) return k.xf;
+    const BodyState& st = w.solver.states[static_cast<std::size_t>(i)];
     const Rot q0 = invMulRot(st.dq, k.xf.q);
     return {(k.center - st.dp) - rotate(q0, k.localCenter), q0};
 }
@@ -563,11 +570,8 @@ void markPressedBodies(WorldState& w) {
         const Body& b = w.bodies[ct.bodyB];
         const bool aFixed = a.type != BodyType::dynamic_body, bFixed = b.type != BodyType::dynamic_body;
         if (aFixed == bFixed) continue;  // two dynamic bodies (or none)
-        const int pressed = aFixed ? ct.bodyB : ct.bodyA;
-        const int i = s.rowBodies[static_cast<std::size_t>(pressed)].state;
-        if (i < 0 || static_cast<std::size_t>(i) >= s.stateBodies.size() ||
-            s.stateBodies[static_cast<std::size_t>(i)] != pressed)
-            continue;
+        const int i = stateIndexOf(s, aFixed ? ct.bodyB : ct.bodyA);
+        if (i == kNullIndex) continue;
         if (s.sweeps[static_cast<std::size_t>(i)] == 0) s.sweeps[static_cast<std::size_t>(i)] = kPressedSweep;
     }
 }

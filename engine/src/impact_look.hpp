@@ -21,6 +21,12 @@ constexpr float kShockResidual = 0.01f;
 /// heavy body by a part of its impulse as small as the ratio's inverse.
 constexpr float kShockMassRatio = 10.0f;
 
+/// The body's free acceleration for the impact stage's timing (gravity and
+/// applied force), zero if it does not move.
+inline Vec2 freeAcceleration(const Body& b, bool moves, Vec2 gravity) {
+    return moves ? b.gravityScale * gravity + b.invMass * b.force : Vec2{};
+}
+
 /// The narrowphase's look at contact `ct` for the impact stage: `passOver`
 /// as passesOverImpacts, and `heavyOnLight` when it joins two moving bodies
 /// of which one is at least kShockMassRatio times as heavy as the other,
@@ -50,12 +56,9 @@ inline ImpactLook lookAtImpacts(const WorldState& w, const Contact& ct, bool tou
     // not yet faster than the threshold.
     float flight = NAN;
     auto flightGain = [&] {
-        auto freeAcceleration = [&](const Body& x) {
-            return x.type == BodyType::dynamic_body && x.awake
-                       ? x.gravityScale * w.settings.gravity + x.invMass * x.force
-                       : Vec2{};
-        };
-        const float an = dot(freeAcceleration(b) - freeAcceleration(a), ct.manifold.normal);
+        auto moves = [](const Body& x) { return x.type == BodyType::dynamic_body && x.awake; };
+        const Vec2 g = w.settings.gravity;
+        const float an = dot(freeAcceleration(b, moves(b), g) - freeAcceleration(a, moves(a), g), ct.manifold.normal);
         const float halfSubstep = 0.5f * w.stepDt / static_cast<float>(solverSubsteps(w.settings));
         return an * halfSubstep + std::min(an, 0.0f) * w.stepDt;
     };

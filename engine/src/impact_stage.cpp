@@ -71,11 +71,6 @@ constexpr int kMaxGroupedContacts = 8;
 // from 5 m, −61 % at the fourth. Rotation has no free acceleration here: its
 // start is moved by t*·(ω before − ω after) as before.
 
-/// The body's free acceleration for the timing, zero if it does not move.
-Vec2 freeAcceleration(const Body& b, bool moves, Vec2 gravity) {
-    return moves ? b.gravityScale * gravity + b.invMass * b.force : Vec2{};
-}
-
 /// What the law strikes on one side of a contact: a body, or the rigid
 /// cluster of bodies welded to it (findWeldClusters), as one rigid body: the
 /// bodies' summed mass, their common centre of mass, their summed inertia
