@@ -92,16 +92,14 @@ void createProxy(WorldState& w, int s) {
     AABB& fat = bp.fatBox(s);
     fat = fatten(speculativeBox(w, sh, body), body.type == BodyType::static_body ? 0.0f : w.settings.aabbMargin);
     w.bodies[sh.body].boxSlack = 0.0f;  // a new box: measure again
-    sh.inStaticTree = body.type == BodyType::static_body;
-    DynamicTree& tree = sh.inStaticTree ? bp.staticTree : bp.movingTree;
-    sh.proxy = tree.createProxy(fat, s);
-    if (body.type == BodyType::kinematic_body) ++bp.kinematicProxies;
-    if (!sh.inStaticTree) {
+    sh.treeType = body.type;
+    sh.proxy = bp.tree(sh.treeType).createProxy(fat, s);
+    if (!sh.inStaticTree()) {
         sh.moved = true;
         bp.moveBuffer.push_back(s);
     } else {
-        // A new static shape: let the moving shapes around it look again.
-        bp.movingTree.query(fat, [&](int other) {
+        // A new static shape: let the dynamic shapes around it look again.
+        bp.dynamicTree.query(fat, [&](int other) {
             Shape& o = w.shapes[other];
             if (!o.moved) {
                 o.moved = true;
@@ -117,8 +115,7 @@ void destroyProxy(WorldState& w, int s) {
     BroadPhase& bp = w.broadPhase;
     if (sh.proxy == DynamicTree::kNull) return;
     w.bodies[sh.body].boxSlack = 0.0f;
-    (sh.inStaticTree ? bp.staticTree : bp.movingTree).destroyProxy(sh.proxy);
-    if (w.bodies[sh.body].type == BodyType::kinematic_body) --bp.kinematicProxies;
+    bp.tree(sh.treeType).destroyProxy(sh.proxy);
     sh.proxy = DynamicTree::kNull;
     if (sh.moved) {
         bp.moveBuffer.erase(std::remove(bp.moveBuffer.begin(), bp.moveBuffer.end(), s), bp.moveBuffer.end());
@@ -156,8 +153,7 @@ void synchronizeProxies(WorldState& w, int b, float dt) {
             (ahead.x < 0.0f ? fat.lower.x : fat.upper.x) += ahead.x;
             (ahead.y < 0.0f ? fat.lower.y : fat.upper.y) += ahead.y;
         }
-        DynamicTree& tree = sh.inStaticTree ? bp.staticTree : bp.movingTree;
-        tree.moveProxy(sh.proxy, fat);
+        bp.tree(sh.treeType).moveProxy(sh.proxy, fat);
         bp.markMoved(sh, s);
     }
 }
@@ -258,23 +254,18 @@ void refreshProxies(WorldState& w, float dt) {
 void wakeShapesAround(WorldState& w, int b) {
     BroadPhase& bp = w.broadPhase;
     if (!w.bodies[b].enabled) return;
+    // Only the dynamic shapes can touch it; kinematic ones are woken too, as
+    // a static body's move wakes whatever lies against it.
+    auto wake = [&](int other) {
+        Shape& o = w.shapes[other];
+        wakeBody(w, o.body);
+        bp.markMoved(o, other);
+        return true;
+    };
     for (int s : bodyShapes(w.shapes, w.bodies[b])) {
         const AABB box = bp.fatBox(s);
-        bp.staticTree.query(box, [&](int other) {
-            Shape& o = w.shapes[other];
-            if (w.bodies[o.body].type != BodyType::static_body) wakeBody(w, o.body);
-            bp.markMoved(o, other);
-            return true;
-        });
-        bp.movingTree.query(box, [&](int other) {
-            Shape& o = w.shapes[other];
-            wakeBody(w, o.body);
-            if (!o.moved) {
-                o.moved = true;
-                bp.moveBuffer.push_back(other);
-            }
-            return true;
-        });
+        bp.kinematicTree.query(box, wake);
+        bp.dynamicTree.query(box, wake);
     }
 }
 

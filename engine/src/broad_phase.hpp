@@ -1,7 +1,11 @@
-// The broadphase: two AABB trees of fattened shape boxes (static shapes never
-// query, so a level's static geometry costs nothing while nothing moves near
-// it), the buffer of proxies that moved, and the set of pairs that already
-// have a contact.
+// The broadphase: an AABB tree of fattened shape boxes per body type, the
+// buffer of proxies that moved, and the set of pairs that already have a
+// contact. Static shapes never query, so a level's static geometry costs
+// nothing while nothing moves near it; kinematic shapes query the dynamic
+// tree only (a contact needs a dynamic body), and continuous collision finds
+// the few kinematic shapes near a fast body in their own small tree instead
+// of among every moving shape (as Box2D v3 keeps a tree per body type:
+// Catto, 2024, Box2D v3.0, broad_phase.c).
 //
 // A proxy moves in its tree only when its shape leaves the fat box; only
 // moved proxies query for new pairs, so the cost per step follows how much
@@ -21,15 +25,12 @@ struct WorldState;
 
 struct BroadPhase {
     DynamicTree staticTree;                 ///< shapes of static bodies
-    DynamicTree movingTree;                 ///< shapes of kinematic and dynamic bodies
+    DynamicTree kinematicTree;              ///< shapes of kinematic bodies
+    DynamicTree dynamicTree;                ///< shapes of dynamic bodies
     std::vector<int> moveBuffer;            ///< shapes whose proxies moved or were created
     std::vector<std::uint8_t> proxyLeaves;  ///< per awake body: a shape left its fat box this step (refreshProxies)
     PairSet pairs;                          ///< shape pairs that have a contact
     std::vector<int> motionSet;             ///< bodies whose velocity the game set since the last step (noteMotionSet)
-    /// Proxies of kinematic bodies' shapes in movingTree: continuous
-    /// collision sweeps fast bodies against them (continuous.cpp), and a
-    /// world without any does not look for them.
-    int kinematicProxies = 0;
     /// Per shape slot: the box in the broadphase tree (grown by the margin;
     /// that of a shape without a proxy means nothing). Apart from the
     /// shapes: every contact's update checks its two boxes each step, and
@@ -37,21 +38,38 @@ struct BroadPhase {
     /// twice a contact, three quarters of the update's time in many_pyramids.
     std::vector<AABB> fatBoxes;
 
+    DynamicTree& tree(BodyType type) {
+        return type == BodyType::static_body ? staticTree
+                                             : (type == BodyType::kinematic_body ? kinematicTree : dynamicTree);
+    }
+    /// Calls visit(shape) for the proxies of all three trees whose boxes
+    /// overlap `box`, static, kinematic, then dynamic; stops where visit
+    /// returns false.
+    template <class Visit>
+    void queryAll(const AABB& box, Visit&& visit) const {
+        bool more = true;
+        auto until = [&](int s) { return more = visit(s); };
+        staticTree.query(box, until);
+        if (more) kinematicTree.query(box, until);
+        if (more) dynamicTree.query(box, until);
+    }
+
     const AABB& fatBox(int shape) const { return fatBoxes[static_cast<std::size_t>(shape)]; }
     AABB& fatBox(int shape) { return fatBoxes[static_cast<std::size_t>(shape)]; }
 
     /// Puts a moving shape into the move buffer (once).
     void markMoved(Shape& shape, int index) {
-        if (!shape.moved && !shape.inStaticTree) {
+        if (!shape.moved && !shape.inStaticTree()) {
             shape.moved = true;
             moveBuffer.push_back(index);
         }
     }
 
     /// Calls onPair(s, other) for every pair of a moved shape with a shape
-    /// whose fat box overlaps its own: distinct shapes of distinct bodies
-    /// without a contact yet, each pair of two moved shapes once. Then
-    /// empties the move buffer. Deterministic: the buffer is in the order the
+    /// whose fat box overlaps its own and that may touch it (one of the two
+    /// is dynamic): distinct shapes of distinct bodies without a contact
+    /// yet, each pair of two moved shapes once. Then empties the move
+    /// buffer. Deterministic: the buffer is in the order the
     /// proxies moved and the trees are visited in a fixed order.
     template <class OnPair>
     void findNewPairs(SlotArray<Shape>& shapes, OnPair&& onPair) {
@@ -62,14 +80,17 @@ struct BroadPhase {
                 if (other == s) return true;
                 const Shape& o = shapes[other];
                 // Both moved: the pair is handled once, from the lower index.
-                if (o.moved && other < s && !o.inStaticTree) return true;
+                if (o.moved && other < s && !o.inStaticTree()) return true;
                 if (o.body == sh.body) return true;
                 if (pairs.contains(pairKey(s, other))) return true;
                 onPair(s, other);
                 return true;
             };
-            movingTree.query(box, visit);
-            if (!sh.inStaticTree) staticTree.query(box, visit);
+            dynamicTree.query(box, visit);
+            if (sh.treeType == BodyType::dynamic_body) {
+                kinematicTree.query(box, visit);
+                staticTree.query(box, visit);
+            }
         }
         for (int s : moveBuffer) shapes[s].moved = false;
         moveBuffer.clear();

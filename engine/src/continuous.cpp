@@ -401,10 +401,9 @@ void sweepBody(WorldState& w, Body& body, const Mover& m, Vec2 rewind) {
             const Body& ob = w.bodies[o.body];
             if (o.body == shape.body) return true;
             const bool kinematic = ob.type == BodyType::kinematic_body;
-            // In the moving tree: kinematic bodies, and for a bullet the
-            // dynamic bodies that are not bullets.
-            if (!o.inStaticTree && !kinematic && (!body.isBullet || ob.type != BodyType::dynamic_body || ob.isBullet))
-                return true;
+            // In the dynamic tree, for a bullet: the dynamic bodies that are
+            // not bullets.
+            if (o.treeType == BodyType::dynamic_body && (!body.isBullet || ob.isBullet)) return true;
             if (jointPreventsCollision(w, shape.body, o.body)) return true;
             const Mover pm = kinematic ? relativeTo(m, body, kinematicStart(w, o.body), ob.xf) : m;
             if (o.chainSegment &&
@@ -425,10 +424,10 @@ void sweepBody(WorldState& w, Body& body, const Mover& m, Vec2 rewind) {
             pair.sweep = pm.sweep;
             // A static or kinematic body takes the approach's momentum; a
             // dynamic one takes it through the contact.
-            pair.byProbe = pair.byProbe && (o.inStaticTree || kinematic);
+            pair.byProbe = pair.byProbe && (o.inStaticTree() || kinematic);
             // Held in place (below) only against a static surface: against a
             // kinematic one the stop at t = 0 carries the body along with it.
-            pair.holdApproach = pair.holdApproach && pair.byProbe && o.inStaticTree;
+            pair.holdApproach = pair.holdApproach && pair.byProbe && o.inStaticTree();
             if (kinematic) pair.surfaceVelocity = ob.v + cross(ob.w, body.center - ob.center);
             if (pair.holdApproach) {
                 if (!hold.holdApproach) hold = pair;
@@ -438,7 +437,8 @@ void sweepBody(WorldState& w, Body& body, const Mover& m, Vec2 rewind) {
             return true;
         };
         w.broadPhase.staticTree.query(swept, visit);
-        if (body.isBullet || w.broadPhase.kinematicProxies > 0) w.broadPhase.movingTree.query(swept, visit);
+        w.broadPhase.kinematicTree.query(swept, visit);
+        if (body.isBullet) w.broadPhase.dynamicTree.query(swept, visit);
     }
     if (stop.t >= 1.0f && !hold.holdApproach) return;
     Transform xf = stop.sweep.at(stop.t);
@@ -521,17 +521,13 @@ bool mayMeetFixed(const WorldState& w, const Body& body, const BodyState& s) {
         AABB box = unionOf(shapeAABB(shape, xf0), shapeAABB(shape, body.xf));
         box.lower -= Vec2{grow, grow};
         box.upper += Vec2{grow, grow};
-        statics.query(box, [&](int) {
+        // (A kinematic body's box holds its whole step: broad_phase.cpp.)
+        auto any = [&](int) {
             found = true;
             return false;
-        });
-        if (found) return true;
-        // A kinematic body's box holds its whole step (broad_phase.cpp).
-        if (w.broadPhase.kinematicProxies > 0)
-            w.broadPhase.movingTree.query(box, [&](int other) {
-                found = w.bodies[w.shapes[other].body].type == BodyType::kinematic_body;
-                return !found;
-            });
+        };
+        statics.query(box, any);
+        if (!found) w.broadPhase.kinematicTree.query(box, any);
         if (found) return true;
     }
     return false;
@@ -544,7 +540,8 @@ bool needsSweep(const WorldState& w, const Body& body, const BodyState& s) {
     // swinging joint grid's step when asked of every body). A body that is
     // not a bullet is swept against static and kinematic shapes only: none,
     // no sweep.
-    if (!body.isBullet && w.broadPhase.staticTree.proxyCount() == 0 && w.broadPhase.kinematicProxies == 0) return false;
+    const BroadPhase& bp = w.broadPhase;
+    if (!body.isBullet && bp.staticTree.proxyCount() == 0 && bp.kinematicTree.proxyCount() == 0) return false;
     return body.type == BodyType::dynamic_body && body.reach >= 0.0f && movedBeyondContacts(w, body, s);
 }
 

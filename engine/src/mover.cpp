@@ -77,8 +77,7 @@ std::vector<int> candidates(detail::WorldState& w, const AABB& box, const QueryF
         if (!w.shapes[s].isSensor) found.push_back(s);
         return true;
     };
-    w.broadPhase.staticTree.query(box, visit);
-    w.broadPhase.movingTree.query(box, visit);
+    w.broadPhase.queryAll(box, visit);
     std::sort(found.begin(), found.end());
     // The game's accept function runs with the world locked, released
     // however it ends (an exception from it left the world locked for good).

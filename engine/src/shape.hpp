@@ -51,9 +51,13 @@ struct Shape {
     bool enableSensorEvents = true;
     bool enableHitEvents = false;
     bool alive = false;
-    bool inStaticTree = false;
+    /// The broadphase tree its proxy is in: its body's type when the proxy
+    /// was made (BroadPhase::tree).
+    BodyType treeType = BodyType::static_body;
     bool moved = false;  ///< in the broadphase move buffer
     std::uintptr_t userData = 0;
+
+    bool inStaticTree() const { return treeType == BodyType::static_body; }
 };
 
 /// The shapes of a body in creation order, for range-for:

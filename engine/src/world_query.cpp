@@ -1,5 +1,5 @@
 // World: the public API facade for queries — ray casts, shape casts, box,
-// shape and point overlap over both broadphase trees.
+// shape and point overlap over the broadphase's trees.
 #include <algorithm>
 
 #include "impulse2d/world.hpp"
@@ -34,7 +34,7 @@ std::optional<RayHit> castRayAt(const detail::Shape& sh, const Transform& xf, Ve
     return hit;
 }
 
-// Shapes of both trees whose fat box overlaps `box`, that pass the filter and
+// Shapes of the three trees whose fat box overlaps `box`, that pass the filter and
 // the exact test `accept`, as handles in slot order (independent of tree shape).
 template <class Exact>
 std::vector<ShapeId> shapesInBox(const detail::WorldState& w, const AABB& box, const QueryFilter& filter, Exact exact) {
@@ -43,8 +43,7 @@ std::vector<ShapeId> shapesInBox(const detail::WorldState& w, const AABB& box, c
         if (passes(w, s, filter) && exact(w.shapes[s])) found.push_back(s);
         return true;
     };
-    w.broadPhase.staticTree.query(box, visit);
-    w.broadPhase.movingTree.query(box, visit);
+    w.broadPhase.queryAll(box, visit);
     std::sort(found.begin(), found.end());
     std::vector<ShapeId> out;
     out.reserve(found.size());
@@ -75,10 +74,9 @@ std::optional<RayResult> World::rayCastClosest(Vec2 origin, Vec2 translation, co
         best = RayResult{w.shapeHandle(s), hit->point, hit->normal, hit->fraction};
         return hit->fraction;
     };
-    float maxFraction = 1.0f;
-    w.broadPhase.staticTree.rayCast(origin, translation, maxFraction, visit);
-    if (best) maxFraction = best->fraction;
-    w.broadPhase.movingTree.rayCast(origin, translation, maxFraction, visit);
+    for (const detail::DynamicTree* tree :
+         {&w.broadPhase.staticTree, &w.broadPhase.kinematicTree, &w.broadPhase.dynamicTree})
+        tree->rayCast(origin, translation, best ? best->fraction : 1.0f, visit);
     return best;
 }
 
@@ -96,8 +94,9 @@ std::optional<RayResult> World::rayCastAny(Vec2 origin, Vec2 translation, const 
         found = RayResult{w.shapeHandle(s), hit->point, hit->normal, hit->fraction};
         return -1.0f;
     };
-    w.broadPhase.staticTree.rayCast(origin, translation, 1.0f, visit);
-    if (!found) w.broadPhase.movingTree.rayCast(origin, translation, 1.0f, visit);
+    for (const detail::DynamicTree* tree :
+         {&w.broadPhase.staticTree, &w.broadPhase.kinematicTree, &w.broadPhase.dynamicTree})
+        if (!found) tree->rayCast(origin, translation, 1.0f, visit);
     return found;
 }
 
@@ -113,8 +112,9 @@ std::vector<RayResult> World::rayCastAll(Vec2 origin, Vec2 translation, const Qu
         if (hit && passes(w, s, filter)) out.push_back({w.shapeHandle(s), hit->point, hit->normal, hit->fraction});
         return maxFraction;
     };
-    w.broadPhase.staticTree.rayCast(origin, translation, 1.0f, visit);
-    w.broadPhase.movingTree.rayCast(origin, translation, 1.0f, visit);
+    for (const detail::DynamicTree* tree :
+         {&w.broadPhase.staticTree, &w.broadPhase.kinematicTree, &w.broadPhase.dynamicTree})
+        tree->rayCast(origin, translation, 1.0f, visit);
     std::sort(out.begin(), out.end(), [](const RayResult& a, const RayResult& b) {
         return a.fraction != b.fraction ? a.fraction < b.fraction : a.shape.index1 < b.shape.index1;
     });
@@ -153,8 +153,7 @@ std::optional<ShapeCastResult> World::castShape(const ShapeProxy& proxy, Vec2 tr
         if (!w.shapes[s].isSensor) candidates.push_back(s);
         return true;
     };
-    w.broadPhase.staticTree.query(swept, visit);
-    w.broadPhase.movingTree.query(swept, visit);
+    w.broadPhase.queryAll(swept, visit);
     // Slot order: the lower slot wins a tie whatever the trees' shape.
     std::sort(candidates.begin(), candidates.end());
     std::optional<ShapeCastResult> best;

@@ -379,5 +379,64 @@ TEST(BroadPhase, FastBodiesNeverOverlapWithoutTheirContact) {
     EXPECT_EQ(unseen, 0);
 }
 
+TEST(BroadPhase, EachBodyTypesShapesAreQueriedAndPairedAsTheTypeAllows) {
+    // The broadphase keeps a tree per body type. Three unit boxes in a row,
+    // static, kinematic and dynamic, each overlapping the next and a second
+    // kinematic box overlapping the static one: every query finds all
+    // four, only the pairs with the dynamic box get contacts, and a body
+    // whose type changes is found, and paired, from its new tree. A query
+    // or a pair search that skipped a tree would miss a box here.
+    World world({.gravity = {0.0f, 0.0f}, .enableSleep = false});
+    auto boxAt = [&](BodyType type, Vec2 at) {
+        const BodyId b = world.createBody({.type = type, .position = at});
+        world.createPolygonShape(b, {.density = 1.0f}, makeBox(0.5f, 0.5f));
+        return b;
+    };
+    const BodyId fixed = boxAt(BodyType::static_body, {0.0f, 0.0f});
+    const BodyId kinematic = boxAt(BodyType::kinematic_body, {0.9f, 0.0f});
+    const BodyId dynamic = boxAt(BodyType::dynamic_body, {1.8f, 0.0f});
+    const BodyId kinematicOnFixed = boxAt(BodyType::kinematic_body, {0.0f, 0.9f});
+    world.step(kDt);
+    const std::vector<RayResult> hits = world.rayCastAll({-2.0f, 0.1f}, {6.0f, 0.0f});
+    EXPECT_EQ(hits.size(), 3u);  // the row; the box above is off the ray
+    EXPECT_EQ(world.overlapAABB({{-1.0f, -1.0f}, {3.0f, 2.0f}}).size(), 4u);
+    // Each box alone: a point in its own corner, and a ray from outside that
+    // meets it first.
+    const struct {
+        BodyId body;
+        Vec2 corner, rayFrom, ray;
+    } alone[] = {{fixed, {-0.3f, -0.3f}, {-3.0f, -0.2f}, {3.0f, 0.0f}},
+                 {kinematic, {0.7f, -0.3f}, {0.7f, -3.0f}, {0.0f, 3.0f}},
+                 {dynamic, {2.0f, -0.3f}, {5.0f, -0.2f}, {-3.0f, 0.0f}},
+                 {kinematicOnFixed, {-0.3f, 1.2f}, {0.0f, 4.0f}, {0.0f, -3.0f}}};
+    for (const auto& a : alone) {
+        const std::vector<ShapeId> at = world.queryPoint(a.corner);
+        ASSERT_EQ(at.size(), 1u);
+        EXPECT_TRUE(world.shapeBody(at[0]) == a.body);
+        const std::optional<RayResult> hit = world.rayCastClosest(a.rayFrom, a.ray);
+        ASSERT_TRUE(hit.has_value());
+        EXPECT_TRUE(world.shapeBody(hit->shape) == a.body);
+    }
+    // Only the kinematic box touches the dynamic one.
+    ASSERT_EQ(world.bodyContacts(dynamic).size(), 1u);
+    EXPECT_TRUE(world.bodyContacts(kinematicOnFixed).empty());
+    // The dynamic box, put across the corner the other three meet at (the
+    // kinematic boxes rest: only the dynamic box looks for pairs), meets
+    // all three.
+    world.setTransform(dynamic, {0.9f, 0.9f}, 0.0f);
+    world.step(kDt);
+    world.step(kDt);  // the pair found in a step's broadphase has its manifold in the next
+    EXPECT_EQ(world.bodyContacts(dynamic).size(), 3u);
+    // The box on the static one, made dynamic, meets it, the box beside it
+    // (made static) and the dynamic box.
+    world.setBodyType(kinematicOnFixed, BodyType::dynamic_body);
+    world.setBodyType(kinematic, BodyType::static_body);
+    world.step(kDt);
+    world.step(kDt);
+    EXPECT_EQ(world.bodyContacts(kinematicOnFixed).size(), 3u);
+    EXPECT_EQ(world.bodyContacts(dynamic).size(), 3u);
+    EXPECT_EQ(world.overlapAABB({{-1.0f, -1.0f}, {3.0f, 2.0f}}).size(), 4u);
+}
+
 }  // namespace
 }  // namespace i2d
