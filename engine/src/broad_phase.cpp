@@ -246,9 +246,12 @@ void coverSetMotions(WorldState& w, float dt) {
 
 void refreshProxies(WorldState& w, float dt) {
     const std::vector<int>& awake = w.islands.awakeBodies;
-    const std::vector<std::uint8_t>& leaves = w.broadPhase.proxyLeaves;
+    std::vector<std::uint8_t>& leaves = w.broadPhase.proxyLeaves;
     for (std::size_t i = 0; i < awake.size(); ++i)
-        if (leaves[i]) synchronizeProxies(w, awake[i], dt);
+        if (leaves[i]) {
+            synchronizeProxies(w, awake[i], dt);
+            leaves[i] = 0;
+        }
 }
 
 void wakeShapesAround(WorldState& w, int b) {

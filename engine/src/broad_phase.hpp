@@ -121,7 +121,8 @@ void noteMotionSet(WorldState& w, int body);
 void coverSetMotions(WorldState& w, float dt);
 /// synchronizeProxies for the awake bodies the step's write-back found
 /// outside their fat boxes (BroadPhase::proxyLeaves) or continuous collision
-/// moved since, in the awake list's order.
+/// moved since, in the awake list's order; their marks are cleared, so a
+/// second call moves only what was marked in between.
 void refreshProxies(WorldState& w, float dt);
 
 /// A static body was moved: its proxies never query, so the moving shapes

@@ -216,6 +216,33 @@ TEST(Continuous, BulletDoesNotPassADynamicPlank) {
     EXPECT_LT(ballIntoPlank(false, 200.0f), -0.05f);  // not a bullet: stopped by its speculative contact
 }
 
+// A bullet meets a dynamic plank where the plank ended the step, found
+// through the plank's box in the broadphase tree, which must then hold that
+// end pose. A thin plank 1 m long, 1.2 m above the bullet's line, is driven
+// down by a force that moves it about a metre in one step, across the line:
+// its box from the step's start (nothing foreseen its move) lies wholly
+// above the line. The bullet, 2.5 m from the plank at 300 m/s (5 m a step),
+// must stop at the plank's face rather than pass to 2.5 m beyond it.
+TEST(Continuous, ABulletMeetsAPlankDrivenAcrossItsPathWithinTheStep) {
+    World world({.gravity = {0.0f, 0.0f}, .enableSleep = false});
+    const BodyId plank = world.createBody({.type = BodyType::dynamic_body, .position = {0.0f, 1.2f}});
+    world.createPolygonShape(plank, {.density = 1.0f}, makeBox(0.05f, 0.5f));
+    const BodyId bullet = world.createBody({.type = BodyType::dynamic_body,
+                                            .position = {-2.5f, 0.0f},
+                                            .linearVelocity = {300.0f, 0.0f},
+                                            .isBullet = true});
+    world.createCircleShape(bullet, {.density = 1.0f}, {{0.0f, 0.0f}, 0.05f});
+    // The force for about 1 m in the step: 4 substeps of semi-implicit Euler
+    // move a body a·Δt²·5/8 from rest.
+    const float mass = world.mass(plank), dt = 1.0f / 60.0f;
+    world.applyForceToCenter(plank, {0.0f, -mass * 1.0f / (dt * dt * 0.625f)});
+    world.step(dt);
+    const float plankBottom = world.position(plank).y - 0.5f, plankTop = world.position(plank).y + 0.5f;
+    ASSERT_LT(plankBottom, -0.05f);  // the plank did end the step across the bullet's line
+    ASSERT_GT(plankTop, 0.05f);
+    EXPECT_LT(world.position(bullet).x, world.position(plank).x - 0.05f);
+}
+
 // A body whose centroid begins a step nearer a static surface than its own
 // extent (partly through a thin floor) keeps the step's motion along the
 // surface and its turn; only its centroid's approach is taken out. Put back
