@@ -21,7 +21,8 @@
 // which any other seed, a column built leaning, would still drive.)
 //
 // What. While the two bodies' relative pose stays within `reuseDistance`
-// (the largest distance any point of B has moved in A's frame) and neither
+// (the largest distance any point of B has moved in A's frame), B has slid
+// along the face by less than 2 cm (kMaxKeptSlide) and neither
 // A nor B relative to A has turned by more than about 11°, the manifold keeps its normal (fixed
 // in the world) and its points stay fixed in the bodies: each point is a
 // material point of A and one of B, which coincided when the manifold was

@@ -13,7 +13,22 @@
 
 namespace i2d::detail {
 
-/// The coupling scale of a two-point row (solvePointPair), from its anchors.
+/// K12, the coupling of a two-point row's points (the off-diagonal of its
+/// 2×2 effective-mass matrix K, whose diagonal is 1/normalMass): how fast
+/// point 2's gap closes per unit impulse at point 1.
+inline float pairCoupling(const ContactConstraint& cc) {
+    const ContactPointConstraint& c1 = cc.points[0];
+    const ContactPointConstraint& c2 = cc.points[1];
+    const Vec2 n = cc.normal;
+    const float rn1A = cross(c1.rA, n), rn1B = cross(c1.rB, n);
+    const float rn2A = cross(c2.rA, n), rn2B = cross(c2.rB, n);
+    const float mAB = cc.invMassA + cc.invMassB;
+    return mAB + cc.invIA * rn1A * rn2A + cc.invIB * rn1B * rn2B;
+}
+
+/// The scale of a turning row's two increments solved side by side
+/// (solveTurningRow): 1/(1 + ρ) for a positive coupling ρ = K12/√(K11·K22),
+/// else 1.
 inline float pairScale(const ContactConstraint& cc) {
     const ContactPointConstraint& c1 = cc.points[0];
     const ContactPointConstraint& c2 = cc.points[1];
@@ -23,10 +38,22 @@ inline float pairScale(const ContactConstraint& cc) {
     const float mAB = cc.invMassA + cc.invMassB;
     const float k11 = mAB + cc.invIA * rn1A * rn1A + cc.invIB * rn1B * rn1B;
     const float k22 = mAB + cc.invIA * rn2A * rn2A + cc.invIB * rn2B * rn2B;
-    const float k12 = mAB + cc.invIA * rn1A * rn2A + cc.invIB * rn1B * rn2B;
+    const float k12 = pairCoupling(cc);
     const float coupling = k11 > 0.0f && k22 > 0.0f ? k12 / std::sqrt(k11 * k22) : 0.0f;
     return coupling > 0.0f ? 1.0f / (1.0f + coupling) : 1.0f;
 }
+
+/// The block solve's denominator 1 − ρ², ρ² = K12²/(K11·K22), from the
+/// points' normal masses (1/K11, 1/K22) and K12, in the operations the
+/// solve repeats (solvePointPair, wide_contact_kernel.hpp).
+inline float blockDeterminant(float normalMass1, float normalMass2, float k12) {
+    return 1.0f - (normalMass1 * k12) * (normalMass2 * k12);
+}
+/// The block solve is used while 1 − ρ² stays above this (the points'
+/// rows are far from parallel: Box2D 2.4.1 asks the same of its block
+/// solver, with a condition number below 1000); nearer, the points are
+/// solved one after the other.
+inline constexpr float kLeastBlockDeterminant = 0.01f;
 
 /// Whether a row pushes against a side that cannot move (a zero inverse mass):
 /// such a row takes the stiffer softness (RowContext::staticSoft), in the
@@ -142,7 +169,7 @@ inline void setTurning(ContactConstraint& cc, std::uint8_t lookFlags) {
 }
 
 /// Whether the row's two points are solved together, from its deepest
-/// point's push against its cap, and their coupling scale.
+/// point's push against its cap and their coupling, and that coupling.
 inline void finishContactRow(const RowContext& x, float penetrationSlop, ContactConstraint& cc) {
     float deepest = 0.0f;
     for (int j = 0; j < cc.pointCount; ++j) {
@@ -151,7 +178,11 @@ inline void finishContactRow(const RowContext& x, float penetrationSlop, Contact
     }
     const float push = x.soft ? -cc.biasRate * deepest : -x.pushRate * std::min(deepest + penetrationSlop, 0.0f);
     cc.pointsTogether = cc.pointCount == 2 && push < cc.maxPush;
-    cc.pairScale = cc.pointsTogether ? pairScale(cc) : 1.0f;
+    const float k12 = cc.pointsTogether ? pairCoupling(cc) : 0.0f;
+    cc.pairCoupling = k12 > 0.0f ? k12 : 0.0f;
+    if (cc.pointsTogether &&
+        !(blockDeterminant(cc.points[0].normalMass, cc.points[1].normalMass, cc.pairCoupling) > kLeastBlockDeterminant))
+        cc.pointsTogether = false;
 }
 
 }  // namespace i2d::detail

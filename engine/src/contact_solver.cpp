@@ -304,40 +304,67 @@ float pointImpulse(ContactPointConstraint& cp, Vec2 n, const PointTarget& t, con
     return applied;
 }
 
-// The two points of a manifold are solved together, each against the
-// velocities the manifold had before either acted (a Jacobi step within the
-// manifold; Gauss-Seidel across manifolds). Solved one after the other, the
-// first point took an impulse the second then corrected: a torque whose sign
-// depends only on the points' order in the manifold. It tilted every box of a
-// column the same way in its first steps (a column of 20 swayed 1.25 cm, and
-// tall_stack20 0.27 m); solved together, a symmetric column gets symmetric
-// impulses and does not sway at all.
-//
-// Each point keeps its own target and softness. When the points are coupled
-// positively (ρ = K12/√(K11·K22) > 0: pushing at one also pushes the other
-// apart, as for a small box near the end of a long plank), two increments
-// each computed alone would together overshoot by up to 1 + ρ; both are
-// scaled by 1/(1 + ρ), which is exact for two equal targets. With ρ ≤ 0 (a
-// box on a box: pushing at one corner tips the other corner in) they are
-// applied as computed and converge over the substeps. The exact 2×2 block
-// solve (Box2D 2.4.1's) holds columns as well, but threw a pile of 100 boxes
-// created at one point at 26 m/s instead of 18.
+// The two points of a manifold are solved together. Each point's increment
+// alone, u_j = −m_j·ms_j·(v_n,j + bias_j) − is_j·λ_j (the soft step's row,
+// m_j = 1/K_jj), is the velocity change D·u (D = diag(K11, K22)) it asks
+// for; the two impulses that give both changes at once solve K·Δλ = D·u,
+// with K the rows' 2×2 effective-mass matrix. For rigid rows that is the
+// block solve of Box2D 2.4.1's contact solver (Catto, 2009, b2ContactSolver,
+// after Murty's direct enumeration); for soft rows a row at rest (u = 0)
+// holds the load each point's own softness gives it, as when solved alone.
+// Of the block solver's four cases only the first, both points pressing, is
+// taken; where it would give a point a negative impulse (one point lifting:
+// a box rocking onto a corner) the two are solved one after the other. Why
+// together:
+// - Solved one after the other, the first point took an impulse the second
+//   then corrected: a torque whose sign depends only on the points' order
+//   in the manifold. It tilted every box of a column the same way in its
+//   first steps (a column of 20 swayed 1.25 cm, and tall_stack20 0.27 m).
+//   Solved together, a symmetric column gets symmetric impulses.
+// - Solved side by side (each against the velocities before either acted,
+//   both scaled by 1/(1 + ρ) where ρ = K12/√(K11·K22) > 0), the difference
+//   of the rows, a box rocking on its two corners, converged by only
+//   (1 − ρ)/(1 + ρ) a pass. For a post four times as tall as wide (ρ = 0.7)
+//   that is 18 %: the rocking lagged behind its rows, and at 50 Hz contacts
+//   and 4 substeps two such posts on each other rocked for good, corner to
+//   corner, and walked (a column of 20 fell within 42 s).
+// The block solve of all four cases, on the rows of deep overlaps too, threw
+// a pile of 100 boxes created at one point at 26 m/s instead of 18; deep
+// overlaps are not solved together (pointsTogether), nor are rows so nearly
+// parallel that K is near singular (kLeastBlockDeterminant).
 inline void solvePointPair(ContactConstraint& cc, const RowMasses& m, const PointTarget* t, BodyVelocities& v) {
     ContactPointConstraint& c1 = cc.points[0];
     ContactPointConstraint& c2 = cc.points[1];
     const Vec2 n = cc.normal;
-    const float scale = cc.pairScale;
-    float increment[2];
-    for (int j = 0; j < 2; ++j) {
-        ContactPointConstraint& cp = cc.points[j];
-        const float vn = normalSpeed(cp, n, v);
-        const float alone = -cp.normalMass * t[j].massScale * (vn + t[j].bias) - t[j].impulseScale * cp.normalImpulse;
-        const float newImpulse = std::max(cp.normalImpulse + scale * alone, 0.0f);
-        increment[j] = newImpulse - cp.normalImpulse;
-        cp.normalImpulse = newImpulse;
+    // Δλ = K⁻¹·D·u: Δλ1 = u1 − c1·Δλ2 and Δλ2 = u2 − c2·Δλ1, c_j = K12/K_jj.
+    const float u1 = -c1.normalMass * t[0].massScale * (normalSpeed(c1, n, v) + t[0].bias) -
+                     t[0].impulseScale * c1.normalImpulse;
+    const float u2 = -c2.normalMass * t[1].massScale * (normalSpeed(c2, n, v) + t[1].bias) -
+                     t[1].impulseScale * c2.normalImpulse;
+    const float k1 = c1.normalMass * cc.pairCoupling, k2 = c2.normalMass * cc.pairCoupling;
+    const float det = 1.0f - k1 * k2;
+    const float next1 = c1.normalImpulse + (u1 - k1 * u2) / det;
+    const float next2 = c2.normalImpulse + (u2 - k2 * u1) / det;
+    if (!(next1 < 0.0f || next2 < 0.0f)) {
+        const float increment1 = next1 - c1.normalImpulse, increment2 = next2 - c2.normalImpulse;
+        c1.normalImpulse = next1;
+        c2.normalImpulse = next2;
+        applyNormalImpulse(c1, n, m, increment1, v);
+        applyNormalImpulse(c2, n, m, increment2, v);
+        return;
     }
-    applyNormalImpulse(c1, n, m, increment[0], v);
-    applyNormalImpulse(c2, n, m, increment[1], v);
+    if (!(cc.pairCoupling > 0.0f)) {
+        // Uncoupled (K12 ≤ 0 is taken as 0): each point clamped on its own.
+        const float clamped1 = std::max(c1.normalImpulse + u1, 0.0f), clamped2 = std::max(c2.normalImpulse + u2, 0.0f);
+        const float increment1 = clamped1 - c1.normalImpulse, increment2 = clamped2 - c2.normalImpulse;
+        c1.normalImpulse = clamped1;
+        c2.normalImpulse = clamped2;
+        applyNormalImpulse(c1, n, m, increment1, v);
+        applyNormalImpulse(c2, n, m, increment2, v);
+        return;
+    }
+    applyNormalImpulse(c1, n, m, pointImpulse(c1, n, t[0], v), v);
+    applyNormalImpulse(c2, n, m, pointImpulse(c2, n, t[1], v), v);
 }
 
 /// A point's target in a pass, from its separation s now: Δλ = −m·ms·(vn +
@@ -487,8 +514,9 @@ void warmStartTurningRow(const ContactConstraint& cc, BodyState& sA, BodyState& 
     sB.w = v.wB;
 }
 
-/// One pass of a turning row: its normal points (together when the row's
-/// points are, as solvePointPair), then friction, as solveContactsFor.
+/// One pass of a turning row: its normal points (side by side when the
+/// row's points go together, each increment scaled by pairScale), then
+/// friction, as solveContactsFor.
 template <SolvePass passKind>
 void solveTurningRow(ContactConstraint& cc, BodyState& sA, BodyState& sB, float spinA, float spinB, float invH,
                      float beta, float slop, bool leaveImpacts, float impactSpeed) {
@@ -515,6 +543,7 @@ void solveTurningRow(ContactConstraint& cc, BodyState& sA, BodyState& sB, float 
         }
     }
     const bool together = cc.pointsTogether && cc.pointCount == 2 && !skip[0] && !skip[1];
+    const float scale = together ? pairScale(cc) : 1.0f;
     float increment[2] = {0.0f, 0.0f};
     for (int j = 0; j < cc.pointCount; ++j) {
         if (skip[j]) continue;
@@ -522,7 +551,7 @@ void solveTurningRow(ContactConstraint& cc, BodyState& sA, BodyState& sB, float 
         const float vn = turningSpeed(g, j, g.n, v);
         const float alone = -g.normalMass[j] * target[j].massScale * (vn + target[j].bias) -
                             target[j].impulseScale * cp.normalImpulse;
-        const float newImpulse = std::max(cp.normalImpulse + (together ? cc.pairScale * alone : alone), 0.0f);
+        const float newImpulse = std::max(cp.normalImpulse + scale * alone, 0.0f);
         increment[j] = newImpulse - cp.normalImpulse;
         cp.normalImpulse = newImpulse;
         cp.maxNormalImpulse = std::max(cp.maxNormalImpulse, increment[j]);

@@ -50,7 +50,8 @@ struct ContactConstraint {
     float tangentSpeed;    ///< friction's target relative tangent speed (m/s): 0 but on conveyors
     bool deepOverlap : 1;  ///< a point overlaps by more than kDeepOverlap (contact_solver.cpp)
     /// Two points solved together (contact_solver.cpp), unless the overlap is
-    /// so deep that its push is at the cap: bodies being pushed apart, not resting.
+    /// so deep that its push is at the cap (bodies being pushed apart, not
+    /// resting) or their rows are nearly parallel (kLeastBlockDeterminant).
     bool pointsTogether : 1;
     /// A side whose contact point does not turn with it: a circle's closest
     /// point to anything stays under its centre however it spins.
@@ -63,9 +64,8 @@ struct ContactConstraint {
     bool turnA : 1;
     bool turnB : 1;
     std::uint8_t pointCount;
-    /// Both points' increments are scaled by this when solved together:
-    /// 1/(1 + ρ) for a positive coupling ρ = K12/√(K11·K22), else 1.
-    float pairScale;
+    /// K12 of the two points solved together (pairCoupling), else 0.
+    float pairCoupling;
     ContactPointConstraint points[2];  ///< the first pointCount are in use
 };
 static_assert(sizeof(ContactConstraint) == 176, "the layout documented above");

@@ -40,7 +40,7 @@ inline bool packLane(WideContactBlock& k, WideContactCold& cold, int lane, const
     k.tangentSpeed[lane] = used ? cc->tangentSpeed : 0.0f;
     k.mA[lane] = used ? cc->invMassA : 0.0f, k.iA[lane] = used ? cc->invIA : 0.0f;
     k.mB[lane] = used ? cc->invMassB : 0.0f, k.iB[lane] = used ? cc->invIB : 0.0f;
-    k.pairScale[lane] = used ? cc->pairScale : 1.0f;
+    k.pairCoupling[lane] = used ? cc->pairCoupling : 0.0f;
     std::uint32_t flags = 0;
     if (used) {
         if (cc->pointsTogether) flags |= kWideTogether;
@@ -215,32 +215,33 @@ bool prepareWideContactLanes(const WorldState& w, const RowContext& x, const Wid
         const std::uint32_t bit = j == 0 ? kWidePoint0 : kWidePoint1;
         deepest = select(hasBits(flags, bit), min4(deepest, adjusted[j] + arm), deepest);
     }
-    // pointsTogether and pairScale (finishContactRow, pairScale): K11 and K22
-    // are the two points' normal denominators.
-    Float4 pairScale = one, togetherLanes = zero;
+    // pointsTogether and pairCoupling (finishContactRow, pairCoupling).
+    Float4 pairCoupling = zero, togetherLanes = zero;
     if (points == 2) {
         const Float4 push = (-load4(biasRate)) * deepest;
-        const Mask4 together = hasBits(flags, kWidePoint1) & (push < splat(w.settings.maxPushSpeed));
         const Float4 k12 = mAB + invIA * rnA[0] * rnA[1] + invIB * rnB[0] * rnB[1];
-        const Mask4 positive = (kn[0] > zero) & (kn[1] > zero);
-        const Float4 coupling = select(positive, k12 / sqrt4(kn[0] * kn[1]), zero);
-        pairScale = select(together & (coupling > zero), one / (one + coupling), one);
+        const Mask4 pressing = hasBits(flags, kWidePoint1) & (push < splat(w.settings.maxPushSpeed));
+        // blockDeterminant, in its operations.
+        const Float4 positive = select(k12 > zero, k12, zero);
+        const Float4 det = one - (normalMass[0] * positive) * (normalMass[1] * positive);
+        const Mask4 together = pressing & (det > splat(kLeastBlockDeterminant));
+        pairCoupling = select(pressing, positive, zero);
         togetherLanes = select(together, one, zero);
     }
-    alignas(16) float outNormalMass[2][4], outTangentMass[2][4], outAdjusted[2][4], outPairScale[4];
+    alignas(16) float outNormalMass[2][4], outTangentMass[2][4], outAdjusted[2][4], outPairCoupling[4];
     alignas(16) float outTogether[4];
     for (int j = 0; j < points; ++j) {
         store4(outNormalMass[j], normalMass[j]);
         store4(outTangentMass[j], tangentMass[j]);
         store4(outAdjusted[j], adjusted[j]);
     }
-    store4(outPairScale, pairScale);
+    store4(outPairCoupling, pairCoupling);
     store4(outTogether, togetherLanes);
     // What the arithmetic made, each lane to its block (the points it has).
     for (int i = 0; i < count; ++i) {
         WideContactBlock& k = *targets[i].block;
         const int lane = targets[i].lane;
-        k.pairScale[lane] = outPairScale[i];
+        k.pairCoupling[lane] = outPairCoupling[i];
         k.flags[lane] = flags[i] | (outTogether[i] != 0.0f ? kWideTogether : 0u);
         for (int j = 0; j < pointCount[i]; ++j) {
             WideContactPoint& p = k.points[j];

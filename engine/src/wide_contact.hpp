@@ -38,7 +38,7 @@ struct WideContactPoint {
 
 /// A lane's flags (WideContactBlock::flags), the row's booleans.
 enum WideContactFlag : std::uint32_t {
-    kWideTogether = 1u << 0,       ///< the manifold's two points are solved together (pairScale)
+    kWideTogether = 1u << 0,       ///< the manifold's two points are solved together (solvePointPair)
     kWideRoundA = 1u << 1,         ///< A's shape is a circle: its contact point does not turn with it
     kWideRoundB = 1u << 2,         ///< the same for B
     kWideDeep = 1u << 3,           ///< overlaps deeper than kDeepOverlap (rigid in the soft_bias pass)
@@ -86,7 +86,7 @@ struct WideContactBlock {
     float nx[4], ny[4];
     float friction[4], tangentSpeed[4];
     float mA[4], iA[4], mB[4], iB[4];
-    float pairScale[4];      ///< the rows' pairScale (1 unless the points are solved together)
+    float pairCoupling[4];   ///< the rows' pairCoupling (K12 of two points solved together)
     std::uint32_t flags[4];  ///< WideContactFlag bits
     WideContactPoint points[2];
 };

@@ -11,8 +11,8 @@
 // (tests/unit/test_wide_contact.cpp runs them all). The order of operations
 // follows solveContactsFor, warmStartContacts and their helpers line by line:
 // normal rows with their regimes (speculative, soft push capped at maxPush,
-// relax), a manifold's two points together (pairScale) or one after the
-// other, then Coulomb friction per point. What the scalar row skips with a
+// relax), a manifold's two points together (the block solve) or one after
+// the other, then Coulomb friction per point. What the scalar row skips with a
 // branch, a lane keeps with a select.
 //
 // Points (1 or 2) is the most points a lane of the block has: a block of
@@ -168,42 +168,47 @@ I2D_KERNEL void solveBlock(const L& k, BodyState* states, const SweepParams& sp)
         }
     }
 
-    // Normal rows: both points against the same velocities where the
-    // manifold's points go together, one after the other elsewhere.
-    M pair{};  // a lane of one point goes alone, at scale 1
-    V scale = one;
+    // Normal rows: a manifold's two points together where they go together
+    // (solvePointPair: the block solve, taken where both points press), one
+    // after the other elsewhere.
+    M block{};  // lanes whose points take the block solve
+    V blockNext[Points];
     if constexpr (Points == 2) {
-        pair = andNot(andNot(k.flags(kWideTogether), skip[0]), skip[1]);
-        scale = select(pair, k.load(&WideContactBlock::pairScale), one);
+        const M pair = andNot(andNot(k.flags(kWideTogether), skip[0]), skip[1]);
+        const V nm0 = k.load(0, &WideContactPoint::normalMass), nm1 = k.load(1, &WideContactPoint::normalMass);
+        const V lambda0 = k.load(0, &WideContactPoint::normalImpulse);
+        const V lambda1 = k.load(1, &WideContactPoint::normalImpulse);
+        const V u0 = (-nm0) * ms[0] * (relativeSpeed(v, arms[0], nx, ny) + bias[0]) - is[0] * lambda0;
+        const V u1 = (-nm1) * ms[1] * (relativeSpeed(v, arms[1], nx, ny) + bias[1]) - is[1] * lambda1;
+        const V k12 = k.load(&WideContactBlock::pairCoupling);
+        const V k0 = nm0 * k12, k1 = nm1 * k12;
+        // 1 where the lane does not go together: no division by a vanishing determinant.
+        const V det = select(pair, one - k0 * k1, one);
+        blockNext[0] = lambda0 + (u0 - k0 * u1) / det;
+        blockNext[1] = lambda1 + (u1 - k1 * u0) / det;
+        block = andNot(andNot(pair, blockNext[0] < zero), blockNext[1] < zero);
+        // Uncoupled lanes where the block solve would pull: each point clamped on its own.
+        const M uncoupled = andNot(andNot(pair, k12 > zero), block);
+        blockNext[0] = select(uncoupled, maxv<V, M>(lambda0 + u0, zero), blockNext[0]);
+        blockNext[1] = select(uncoupled, maxv<V, M>(lambda1 + u1, zero), blockNext[1]);
+        block = block | uncoupled;
     }
     V increment[Points];
     M acts[Points];
-    auto raiseMax = [&](int j, M m) {
-        if (!sp.trackMax) return;
-        const V old = k.loadMax(j);
-        k.storeMax(j, select(m, maxv<V, M>(old, increment[j]), old));
-    };
     for (int j = 0; j < Points; ++j) {
         const V lambda = k.load(j, &WideContactPoint::normalImpulse);
         const V vn = relativeSpeed(v, arms[j], nx, ny);
         const V alone = (-k.load(j, &WideContactPoint::normalMass)) * ms[j] * (vn + bias[j]) - is[j] * lambda;
-        const V next = maxv<V, M>(lambda + scale * alone, zero);
+        V next = maxv<V, M>(lambda + alone, zero);
+        if constexpr (Points == 2) next = select(block, blockNext[j], next);
         increment[j] = next - lambda;
         acts[j] = andNot(present[j], skip[j]);
         k.store(j, &WideContactPoint::normalImpulse, select(acts[j], next, lambda));
-        if (j == 0) {
-            // One after the other: the first point acts before the second is solved.
-            const M now = Points == 2 ? andNot(acts[0], pair) : acts[0];
-            raiseMax(0, now);
-            applyMasked<V, M>(now, arms[0], increment[0] * nx, increment[0] * ny, mA, iA, mB, iB, v);
+        if (sp.trackMax) {
+            const V old = k.loadMax(j);
+            k.storeMax(j, select(acts[j], maxv<V, M>(old, increment[j]), old));
         }
-    }
-    if constexpr (Points == 2) {
-        const M later = acts[0] & pair;
-        raiseMax(0, later);
-        applyMasked<V, M>(later, arms[0], increment[0] * nx, increment[0] * ny, mA, iA, mB, iB, v);
-        raiseMax(1, acts[1]);
-        applyMasked<V, M>(acts[1], arms[1], increment[1] * nx, increment[1] * ny, mA, iA, mB, iB, v);
+        applyMasked<V, M>(acts[j], arms[j], increment[j] * nx, increment[j] * ny, mA, iA, mB, iB, v);
     }
 
     // Coulomb friction, bounded by μ times the point's own normal impulse.

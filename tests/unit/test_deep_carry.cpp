@@ -42,7 +42,7 @@ void oneDeepRow(WorldState& w, float depth, float impulse) {
     cc.roundA = cc.roundB = false;
     cc.turnA = cc.turnB = false;
     cc.pointCount = 1;
-    cc.pairScale = 1.0f;
+    cc.pairCoupling = 0.0f;
     ContactPointConstraint& cp = cc.points[0];
     cp.rA = cp.rB = {0.0f, 0.0f};
     cp.adjustedSeparation = -depth;

@@ -72,7 +72,6 @@ void fill(WorldState& w, unsigned seed, int n) {
         cc.deepOverlap = unit(rng) < 0.15f;  // rigid in the push pass (deep_overlap.cpp pushes it)
         cc.pointCount = static_cast<std::uint8_t>(unit(rng) < 0.3f ? 1 : 2);
         cc.pointsTogether = cc.pointCount == 2 && unit(rng) < 0.7f;
-        cc.pairScale = cc.pointsTogether ? 0.5f + 0.5f * unit(rng) : 1.0f;
         cc.roundA = unit(rng) < 0.3f;
         cc.roundB = unit(rng) < 0.3f;
         cc.turnA = cc.turnB = false;  // (turning rows are the scalar path's alone)
@@ -91,6 +90,10 @@ void fill(WorldState& w, unsigned seed, int n) {
             cp.restitutionBias = 0.0f;
             cp.biasImpulse = 0.0f;
         }
+        // K12 for a coupling ρ = K12/√(K11·K22) in (−0.9, 0.9): the block
+        // solve's determinant 1 − ρ² stays above kLeastBlockDeterminant.
+        const float rho = 1.8f * unit(rng) - 0.9f;
+        cc.pairCoupling = cc.pointsTogether ? rho / std::sqrt(cc.points[0].normalMass * cc.points[1].normalMass) : 0.0f;
     }
 }
 
