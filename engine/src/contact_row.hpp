@@ -13,33 +13,30 @@
 
 namespace i2d::detail {
 
-/// K12, the coupling of a two-point row's points (the off-diagonal of its
-/// 2×2 effective-mass matrix K, whose diagonal is 1/normalMass): how fast
-/// point 2's gap closes per unit impulse at point 1.
-inline float pairCoupling(const ContactConstraint& cc) {
+/// The 2×2 effective-mass matrix K of a two-point row: K11 and K22 (the
+/// points' own, 1/normalMass) and K12, the coupling: how fast point 2's gap
+/// closes per unit impulse at point 1.
+struct PairMatrix {
+    float k11, k22, k12;
+};
+inline PairMatrix pairMatrix(const ContactConstraint& cc) {
     const ContactPointConstraint& c1 = cc.points[0];
     const ContactPointConstraint& c2 = cc.points[1];
     const Vec2 n = cc.normal;
     const float rn1A = cross(c1.rA, n), rn1B = cross(c1.rB, n);
     const float rn2A = cross(c2.rA, n), rn2B = cross(c2.rB, n);
     const float mAB = cc.invMassA + cc.invMassB;
-    return mAB + cc.invIA * rn1A * rn2A + cc.invIB * rn1B * rn2B;
+    return {mAB + cc.invIA * rn1A * rn1A + cc.invIB * rn1B * rn1B,
+            mAB + cc.invIA * rn2A * rn2A + cc.invIB * rn2B * rn2B,
+            mAB + cc.invIA * rn1A * rn2A + cc.invIB * rn1B * rn2B};
 }
 
 /// The scale of a turning row's two increments solved side by side
 /// (solveTurningRow): 1/(1 + ρ) for a positive coupling ρ = K12/√(K11·K22),
 /// else 1.
 inline float pairScale(const ContactConstraint& cc) {
-    const ContactPointConstraint& c1 = cc.points[0];
-    const ContactPointConstraint& c2 = cc.points[1];
-    const Vec2 n = cc.normal;
-    const float rn1A = cross(c1.rA, n), rn1B = cross(c1.rB, n);
-    const float rn2A = cross(c2.rA, n), rn2B = cross(c2.rB, n);
-    const float mAB = cc.invMassA + cc.invMassB;
-    const float k11 = mAB + cc.invIA * rn1A * rn1A + cc.invIB * rn1B * rn1B;
-    const float k22 = mAB + cc.invIA * rn2A * rn2A + cc.invIB * rn2B * rn2B;
-    const float k12 = pairCoupling(cc);
-    const float coupling = k11 > 0.0f && k22 > 0.0f ? k12 / std::sqrt(k11 * k22) : 0.0f;
+    const PairMatrix k = pairMatrix(cc);
+    const float coupling = k.k11 > 0.0f && k.k22 > 0.0f ? k.k12 / std::sqrt(k.k11 * k.k22) : 0.0f;
     return coupling > 0.0f ? 1.0f / (1.0f + coupling) : 1.0f;
 }
 
@@ -178,7 +175,8 @@ inline void finishContactRow(const RowContext& x, float penetrationSlop, Contact
     }
     const float push = x.soft ? -cc.biasRate * deepest : -x.pushRate * std::min(deepest + penetrationSlop, 0.0f);
     cc.pointsTogether = cc.pointCount == 2 && push < cc.maxPush;
-    const float k12 = cc.pointsTogether ? pairCoupling(cc) : 0.0f;
+    // A negative coupling is taken as none (solvePointPair).
+    const float k12 = cc.pointsTogether ? pairMatrix(cc).k12 : 0.0f;
     cc.pairCoupling = k12 > 0.0f ? k12 : 0.0f;
     if (cc.pointsTogether &&
         !(blockDeterminant(cc.points[0].normalMass, cc.points[1].normalMass, cc.pairCoupling) > kLeastBlockDeterminant))

@@ -314,7 +314,10 @@ float pointImpulse(ContactPointConstraint& cp, Vec2 n, const PointTarget& t, con
 // holds the load each point's own softness gives it, as when solved alone.
 // Of the block solver's four cases only the first, both points pressing, is
 // taken; where it would give a point a negative impulse (one point lifting:
-// a box rocking onto a corner) the two are solved one after the other. Why
+// a box rocking onto a corner) the two are solved one after the other. A
+// negative K12 (a unit box on another: ρ = −0.2) is taken as 0, which makes
+// the solve side by side, each point clamped on its own: that converges by
+// |ρ| a pass, and the pair's solve is as it was before the block solve. Why
 // together:
 // - Solved one after the other, the first point took an impulse the second
 //   then corrected: a torque whose sign depends only on the points' order
@@ -345,26 +348,22 @@ inline void solvePointPair(ContactConstraint& cc, const RowMasses& m, const Poin
     const float det = 1.0f - k1 * k2;
     const float next1 = c1.normalImpulse + (u1 - k1 * u2) / det;
     const float next2 = c2.normalImpulse + (u2 - k2 * u1) / det;
+    auto take = [&](float total1, float total2) {
+        const float increment1 = total1 - c1.normalImpulse, increment2 = total2 - c2.normalImpulse;
+        c1.normalImpulse = total1;
+        c2.normalImpulse = total2;
+        applyNormalImpulse(c1, n, m, increment1, v);
+        applyNormalImpulse(c2, n, m, increment2, v);
+    };
     if (!(next1 < 0.0f || next2 < 0.0f)) {
-        const float increment1 = next1 - c1.normalImpulse, increment2 = next2 - c2.normalImpulse;
-        c1.normalImpulse = next1;
-        c2.normalImpulse = next2;
-        applyNormalImpulse(c1, n, m, increment1, v);
-        applyNormalImpulse(c2, n, m, increment2, v);
-        return;
+        take(next1, next2);
+    } else if (!(cc.pairCoupling > 0.0f)) {
+        // Uncoupled (a negative K12 is taken as 0): each point clamped on its own.
+        take(std::max(c1.normalImpulse + u1, 0.0f), std::max(c2.normalImpulse + u2, 0.0f));
+    } else {
+        applyNormalImpulse(c1, n, m, pointImpulse(c1, n, t[0], v), v);
+        applyNormalImpulse(c2, n, m, pointImpulse(c2, n, t[1], v), v);
     }
-    if (!(cc.pairCoupling > 0.0f)) {
-        // Uncoupled (K12 ≤ 0 is taken as 0): each point clamped on its own.
-        const float clamped1 = std::max(c1.normalImpulse + u1, 0.0f), clamped2 = std::max(c2.normalImpulse + u2, 0.0f);
-        const float increment1 = clamped1 - c1.normalImpulse, increment2 = clamped2 - c2.normalImpulse;
-        c1.normalImpulse = clamped1;
-        c2.normalImpulse = clamped2;
-        applyNormalImpulse(c1, n, m, increment1, v);
-        applyNormalImpulse(c2, n, m, increment2, v);
-        return;
-    }
-    applyNormalImpulse(c1, n, m, pointImpulse(c1, n, t[0], v), v);
-    applyNormalImpulse(c2, n, m, pointImpulse(c2, n, t[1], v), v);
 }
 
 /// A point's target in a pass, from its separation s now: Δλ = −m·ms·(vn +

@@ -64,7 +64,7 @@ struct ContactConstraint {
     bool turnA : 1;
     bool turnB : 1;
     std::uint8_t pointCount;
-    /// K12 of the two points solved together (pairCoupling), else 0.
+    /// K12 of two points solved together where positive (pairMatrix), else 0.
     float pairCoupling;
     ContactPointConstraint points[2];  ///< the first pointCount are in use
 };

@@ -215,7 +215,7 @@ bool prepareWideContactLanes(const WorldState& w, const RowContext& x, const Wid
         const std::uint32_t bit = j == 0 ? kWidePoint0 : kWidePoint1;
         deepest = select(hasBits(flags, bit), min4(deepest, adjusted[j] + arm), deepest);
     }
-    // pointsTogether and pairCoupling (finishContactRow, pairCoupling).
+    // pointsTogether and pairCoupling (finishContactRow, pairMatrix).
     Float4 pairCoupling = zero, togetherLanes = zero;
     if (points == 2) {
         const Float4 push = (-load4(biasRate)) * deepest;

@@ -86,7 +86,7 @@ struct WideContactBlock {
     float nx[4], ny[4];
     float friction[4], tangentSpeed[4];
     float mA[4], iA[4], mB[4], iB[4];
-    float pairCoupling[4];   ///< the rows' pairCoupling (K12 of two points solved together)
+    float pairCoupling[4];   ///< the rows' pairCoupling (K12 where positive, of two points solved together)
     std::uint32_t flags[4];  ///< WideContactFlag bits
     WideContactPoint points[2];
 };
