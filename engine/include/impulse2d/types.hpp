@@ -127,9 +127,10 @@ struct WorldSettings {
     /// manifold, with its points fixed in the two bodies and its normal fixed,
     /// while no point of one body has moved further than this (m) relative
     /// to the other since the manifold was computed; beyond it, after a
-    /// turn of one body against the other of about 11°, or after the first
-    /// body has turned 2° (its normal is fixed in the world), the manifold
-    /// is recomputed. This is what keeps tall stacks standing with soft
+    /// turn of one body against the other of about 11°, after the first
+    /// body has turned 2° (its normal is fixed in the world), or once one
+    /// body has slid 2 cm along the other's face, the manifold is
+    /// recomputed. This is what keeps tall stacks standing with soft
     /// contacts (docs/validation.md, "Columns").
     /// 0 recomputes every manifold every step.
     float manifoldReuseDistance = 0.05f;
