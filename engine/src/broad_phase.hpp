@@ -12,6 +12,7 @@
 // moved, not how much exists.
 #pragma once
 
+#include <array>
 #include <cstdint>
 #include <vector>
 
@@ -42,16 +43,17 @@ struct BroadPhase {
         return type == BodyType::static_body ? staticTree
                                              : (type == BodyType::kinematic_body ? kinematicTree : dynamicTree);
     }
+    /// The three trees in the order every query visits them: static,
+    /// kinematic, dynamic.
+    std::array<const DynamicTree*, 3> trees() const { return {&staticTree, &kinematicTree, &dynamicTree}; }
     /// Calls visit(shape) for the proxies of all three trees whose boxes
-    /// overlap `box`, static, kinematic, then dynamic; stops where visit
-    /// returns false.
+    /// overlap `box`, in trees() order; stops where visit returns false.
     template <class Visit>
     void queryAll(const AABB& box, Visit&& visit) const {
         bool more = true;
         auto until = [&](int s) { return more = visit(s); };
-        staticTree.query(box, until);
-        if (more) kinematicTree.query(box, until);
-        if (more) dynamicTree.query(box, until);
+        for (const DynamicTree* tree : trees())
+            if (more) tree->query(box, until);
     }
 
     const AABB& fatBox(int shape) const { return fatBoxes[static_cast<std::size_t>(shape)]; }

@@ -74,8 +74,7 @@ std::optional<RayResult> World::rayCastClosest(Vec2 origin, Vec2 translation, co
         best = RayResult{w.shapeHandle(s), hit->point, hit->normal, hit->fraction};
         return hit->fraction;
     };
-    for (const detail::DynamicTree* tree :
-         {&w.broadPhase.staticTree, &w.broadPhase.kinematicTree, &w.broadPhase.dynamicTree})
+    for (const detail::DynamicTree* tree : w.broadPhase.trees())
         tree->rayCast(origin, translation, best ? best->fraction : 1.0f, visit);
     return best;
 }
@@ -94,8 +93,7 @@ std::optional<RayResult> World::rayCastAny(Vec2 origin, Vec2 translation, const 
         found = RayResult{w.shapeHandle(s), hit->point, hit->normal, hit->fraction};
         return -1.0f;
     };
-    for (const detail::DynamicTree* tree :
-         {&w.broadPhase.staticTree, &w.broadPhase.kinematicTree, &w.broadPhase.dynamicTree})
+    for (const detail::DynamicTree* tree : w.broadPhase.trees())
         if (!found) tree->rayCast(origin, translation, 1.0f, visit);
     return found;
 }
@@ -112,9 +110,7 @@ std::vector<RayResult> World::rayCastAll(Vec2 origin, Vec2 translation, const Qu
         if (hit && passes(w, s, filter)) out.push_back({w.shapeHandle(s), hit->point, hit->normal, hit->fraction});
         return maxFraction;
     };
-    for (const detail::DynamicTree* tree :
-         {&w.broadPhase.staticTree, &w.broadPhase.kinematicTree, &w.broadPhase.dynamicTree})
-        tree->rayCast(origin, translation, 1.0f, visit);
+    for (const detail::DynamicTree* tree : w.broadPhase.trees()) tree->rayCast(origin, translation, 1.0f, visit);
     std::sort(out.begin(), out.end(), [](const RayResult& a, const RayResult& b) {
         return a.fraction != b.fraction ? a.fraction < b.fraction : a.shape.index1 < b.shape.index1;
     });
