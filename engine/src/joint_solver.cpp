@@ -150,7 +150,7 @@ bool wideCandidate(const WorldState& w, const Joint& joint, const Body& bA, cons
 /// solved exactly, the colouring and order, and the wide blocks' lanes
 /// (their anchors are the step's: refreshWideRevolutes). The order's scalar
 /// places name rows, which prepareJoints makes in slot order.
-void planJoints(WorldState& w) {
+void planJoints(WorldState& w, float h) {
     SolverArrays& s = w.solver;
     std::vector<JointSlot>& slots = s.jointSlots;
     slots.clear();
@@ -182,7 +182,7 @@ void planJoints(WorldState& w) {
         slot.wide = wideCandidate(w, joint, bA, bB, slot) && !joint.stretched;
         if (slot.wide && joint.deepHinge) slot.wide = false, slot.deepHinge = true;
     }
-    selectTreeJoints(w, slots);
+    selectTreeJoints(w, slots, h);
     colourJoints(s);
     // The scalar places of the order name rows: the slots the wide path does
     // not take, counted in slot order.
@@ -209,11 +209,18 @@ void prepareJoints(WorldState& w, float dt, float h) {
     // 1,742-joint grid's step. A world without joints keeps no plan (and no
     // copy of the awake list).
     const bool jointed = w.joints.count > 0;
-    if (!jointed || s.jointPlanStale || s.jointPlanBodies != s.stateBodies) {
-        planJoints(w);
+    // The exact trees depend on the joints' stiffness over the substep
+    // (selectTreeJoints): a plan is kept while it is within a quarter of what
+    // it was planned for, so that a step length that jitters does not make
+    // it again every step.
+    const float omega = jointOmega(w.settings, h);
+    const bool sameStiffness = omega <= 1.25f * s.jointPlanOmega && s.jointPlanOmega <= 1.25f * omega;
+    if (!jointed || s.jointPlanStale || !sameStiffness || s.jointPlanBodies != s.stateBodies) {
+        planJoints(w, h);
         if (jointed) {
             s.jointPlanBodies = s.stateBodies;
             s.jointPlanStale = false;
+            s.jointPlanOmega = omega;
         } else {
             std::vector<int>().swap(s.jointPlanBodies);
         }

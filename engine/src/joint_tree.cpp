@@ -287,6 +287,13 @@ int findRoot(std::vector<int>& parent, int i) {
 /// hinge, the joints that carry their load at a point (holdsLoadAtPoint).
 bool isRigidWeld(const JointSlot& jc) { return jc.pointLoad && jc.equalityRows == 3; }
 
+/// The reach of the body of state `index` (Body::reach); a body without a
+/// solid shape has none to tear from (infinity).
+float reachOf(const WorldState& w, int index) {
+    const float reach = w.bodies[w.solver.stateBodies[static_cast<std::size_t>(index)]].reach;
+    return reach > 0.0f ? reach : INFINITY;
+}
+
 /// The state index of a joint side that moves, or `ground` for one that does not.
 int movingSide(int index, float invMass, float invI, int ground) {
     return index >= 0 && (invMass != 0.0f || invI != 0.0f) ? index : ground;
@@ -294,7 +301,11 @@ int movingSide(int index, float invMass, float invI, int ground) {
 
 }  // namespace
 
-void selectTreeJoints(WorldState& w, std::vector<JointSlot>& slots) {
+float jointOmega(const WorldSettings& settings, float h) {
+    return 2.0f * 3.14159265f * std::min(settings.jointHertz, 0.25f / h);
+}
+
+void selectTreeJoints(WorldState& w, std::vector<JointSlot>& slots, float h) {
     SolverArrays& s = w.solver;
     JointTrees& t = s.trees;
     const int ground = static_cast<int>(s.stateBodies.size());
@@ -311,6 +322,28 @@ void selectTreeJoints(WorldState& w, std::vector<JointSlot>& slots) {
     // others or more (below).
     float leastInverseMass = INFINITY, mostInverseMass = 0.0f;
     float leastAnchor = INFINITY, mostAnchor = 0.0f;
+    // The load a tree's soft rows hold: the weight of the bodies beyond a
+    // joint, at most the whole tree's. Under a load of L times its own
+    // body's weight a soft row (stiffness m·ω², ω = jointOmega) stretches
+    // L·g/ω². Swept one pass a substep, a chain of many light alike links
+    // whose joints so stretch by a sizeable part of a link tears and gains
+    // energy without bound: 30 capsules 0.1 m long (reach 0.06 m) released
+    // level at one substep, ω = 94 rad/s, stretch at the top 30·g/ω² = 3.4
+    // cm, had its joints 0.24 m open after a second and 150 times its
+    // releasable energy after 20 s (docs/joints.md, "Chains of many light
+    // links"). Solved exactly such a tree holds its length. The criterion:
+    // L·g/ω² at least kLoadStretch times the least reach of the tree's
+    // bodies, L its mass over its lightest body's. Over chains of 20 to 100
+    // alike links 0.05 to 0.25 m long at 1, 2 and 4 substeps, those that
+    // tore lay at 0.24 of the reach and above, those that held at 0.28 and
+    // below; at a tenth, every torn chain is solved exactly, and a chain of
+    // 0.5 m links at 4 substeps only from 400 links. The load must also be
+    // massRatio times the lightest body's mass, as the other ratios must. The sum of the jointed
+    // bodies' masses, joint by joint, bounds every tree's (a body counts
+    // once per joint it holds), and their least reach every tree's.
+    const float omega = jointOmega(w.settings, h);
+    const float loadStretch = length(w.settings.gravity) / (omega * omega);  // per body weight carried (m)
+    float jointedMass = 0.0f, leastReach = INFINITY;
     bool anyWeldCluster = false;
     t.welds.assign(bodySlots, 0);
     for (const JointSlot& jc : slots) {
@@ -318,7 +351,10 @@ void selectTreeJoints(WorldState& w, std::vector<JointSlot>& slots) {
             if (inverse > 0.0f) {
                 leastInverseMass = std::min(leastInverseMass, inverse);
                 mostInverseMass = std::max(mostInverseMass, inverse);
+                jointedMass += 1.0f / inverse;
             }
+        for (int index : {jc.a, jc.b})
+            if (index >= 0) leastReach = std::min(leastReach, reachOf(w, index));
         for (float inverse : {jc.anchorInvMassA, jc.anchorInvMassB})
             if (inverse > 0.0f) {
                 leastAnchor = std::min(leastAnchor, inverse);
@@ -330,8 +366,13 @@ void selectTreeJoints(WorldState& w, std::vector<JointSlot>& slots) {
                 ++t.welds[static_cast<std::size_t>(index)] == 2)
                 anyWeldCluster = true;
     }
+    // The load is a ratio of masses as the others are, held to massRatio too
+    // (1e30: no tree is solved exactly for its load either).
+    auto tornByLoad = [&](float load, float reach) {
+        return load >= massRatio && load * loadStretch >= kLoadStretch * reach;
+    };
     if (!(mostInverseMass >= massRatio * leastInverseMass) && !(mostAnchor >= massRatio * leastAnchor) &&
-        !anyStretched && !anyWeldCluster)
+        !tornByLoad(jointedMass * leastInverseMass, leastReach) && !anyStretched && !anyWeldCluster)
         return;
 
     // The spanning forest, all immovable bodies one node, in row order.
@@ -371,6 +412,8 @@ void selectTreeJoints(WorldState& w, std::vector<JointSlot>& slots) {
     }
     t.lightest.assign(bodySlots, INFINITY);
     t.heaviest.assign(bodySlots, 0.0f);
+    t.treeMass.assign(bodySlots, 0.0f);
+    t.leastReach.assign(bodySlots, INFINITY);
     t.lightestAnchor.assign(bodySlots, INFINITY);
     t.heaviestAnchor.assign(bodySlots, 0.0f);
     t.stretched.assign(bodySlots, 0);
@@ -380,6 +423,8 @@ void selectTreeJoints(WorldState& w, std::vector<JointSlot>& slots) {
         const std::size_t root = static_cast<std::size_t>(findRoot(t.unionParent, body));
         t.lightest[root] = std::min(t.lightest[root], mass);
         t.heaviest[root] = std::max(t.heaviest[root], mass);
+        t.treeMass[root] += mass;
+        t.leastReach[root] = std::min(t.leastReach[root], reachOf(w, body));
     }
     // A tree in which a body is rigidly welded to two others or more: welds
     // leave no motion between their bodies, so the structure is rigid, and
@@ -443,7 +488,9 @@ void selectTreeJoints(WorldState& w, std::vector<JointSlot>& slots) {
             if (jc.inTree && jc.stretched && !t.closed[rootOf(jc)]) t.stretched[rootOf(jc)] = 1;
     auto exact = [&](std::size_t root) {
         return t.heaviest[root] >= massRatio * t.lightest[root] ||
-               t.heaviestAnchor[root] >= massRatio * t.lightestAnchor[root] || t.stretched[root] || t.weldCluster[root];
+               t.heaviestAnchor[root] >= massRatio * t.lightestAnchor[root] ||
+               (!t.closed[root] && tornByLoad(t.treeMass[root] / t.lightest[root], t.leastReach[root])) ||
+               t.stretched[root] || t.weldCluster[root];
     };
     auto pushable = [&](std::size_t root) { return !t.closed[root] && (t.stretched[root] || t.pointsOnly[root]); };
     for (JointSlot& jc : slots) {

@@ -75,6 +75,8 @@ struct JointTrees {
     std::vector<int> unionParent;  ///< scratch of the spanning-forest search
     std::vector<int> adjacency, adjacencyStart, nodeOfBody;
     std::vector<float> lightest, heaviest;  ///< per union-find root (kg)
+    std::vector<float> treeMass;            ///< per union-find root: its bodies' summed mass (kg)
+    std::vector<float> leastReach;          ///< per union-find root: its bodies' least Body::reach (m)
     std::vector<std::uint8_t> welds;        ///< per solver state: rigid welds it holds (counted to 2; scratch)
     std::vector<std::uint8_t> weldCluster;  ///< per union-find root: a body welded to two others or more
     std::vector<float> lightestAnchor, heaviestAnchor;  ///< the masses at the tree joints' anchors, per root (kg)
@@ -102,14 +104,25 @@ struct JointTrees {
 /// bridge's or a grid's keeps one or more joints in the Gauss-Seidel sweep;
 /// only trees of unlike masses, WorldSettings::exactJointMassRatio, each
 /// judged by its own bodies: the trees hung from the same static bodies are
-/// judged apart; and trees holding a stretched joint, JointSlot::stretched,
+/// judged apart; trees no loop closes whose soft rows, jointOmega over
+/// substeps of h, would stretch under their weight by kLoadStretch of their
+/// smallest body's reach; and trees holding a stretched joint, JointSlot::stretched,
 /// that no loop closes) and marks them (JointSlot::inTree, false when
 /// called). A world whose jointed bodies are alike (in mass and at their
 /// anchors), without a stretched joint or a welded cluster, skips the search. A
 /// tree no joint outside it closes into a loop, whose joints all hold their
 /// load at a point or that holds a stretched joint, may be pushed
 /// (JointSlot::treePushed; buildJointTrees decides).
-void selectTreeJoints(WorldState& w, std::vector<JointSlot>& slots);
+void selectTreeJoints(WorldState& w, std::vector<JointSlot>& slots, float h);
+
+/// The stiffness (rad/s) of the joints' soft rows over substeps of h: jointHertz,
+/// capped at a quarter of the substep rate (solver.cpp).
+float jointOmega(const WorldSettings& settings, float h);
+
+/// What a tree's soft rows stretch under its load, as a fraction of its
+/// smallest body's reach, from which the tree is solved exactly
+/// (selectTreeJoints): see kLoadStretch in joint_tree.cpp.
+inline constexpr float kLoadStretch = 0.1f;
 /// A hinge or a rigid weld: its rows hold a point (and an angle), whose load
 /// turns its bodies as the tension's geometric stiffness (buildJointTrees).
 bool holdsLoadAtPoint(const Joint& joint);

@@ -88,6 +88,7 @@ struct SolverArrays {
     /// types or enabled flags, or the settings sets jointPlanStale
     /// (joint_solver.cpp).
     bool jointPlanStale = true;
+    float jointPlanOmega = 0.0f;        ///< jointOmega when the plan was made (joint_tree.hpp)
     std::vector<int> jointPlanBodies;   ///< stateBodies when the plan was made (empty without joints)
     std::vector<int> jointOrder;        ///< by colour: rows, then each colour's wide slots
     JointTrees trees;                   ///< joints solved exactly (joint_tree.cpp)

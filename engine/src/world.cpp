@@ -114,6 +114,11 @@ void World::setGravity(Vec2 g) {
     detail::WorldState& w = state();
     w.checkUnlocked();
     requireBounded(g, "gravity");
+    // The exact trees depend on the load gravity puts on them
+    // (selectTreeJoints): the joint plan is made again when its strength
+    // changes by more than a quarter, not for a turn of it.
+    const float was = length(w.settings.gravity), now = length(g);
+    if (now > 1.25f * was || was > 1.25f * now) w.solver.jointPlanStale = true;
     w.settings.gravity = g;
 }
 

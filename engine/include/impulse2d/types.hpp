@@ -96,7 +96,10 @@ struct WorldSettings {
     /// angle, a rigid distance joint) solved exactly, not swept, when the tree's heaviest
     /// body is at least this many times its lightest, or the masses its rows
     /// see at the joints' anchors (1/(1/m + |r|²/I)) are, or one of its bodies
-    /// is rigidly welded to two others: Gauss-Seidel leaves a chain carrying a
+    /// is rigidly welded to two others, or when no loop closes through it, its
+    /// bodies together are this many times its lightest and its soft rows
+    /// would stretch under their weight by a tenth of its smallest body's
+    /// reach (a long chain of light links at long substeps, docs/joints.md): Gauss-Seidel leaves a chain carrying a
     /// heavy body stretched, and the soft step's sweep over such trees can
     /// gain energy (docs/joints.md). A joint closing a loop through such
     /// trees has its equality rows solved with them (up to 12 rows a step;
