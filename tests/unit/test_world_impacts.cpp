@@ -78,10 +78,23 @@ TEST(WorldImpacts, ReboundHeightIsESquaredH) {
 
 namespace {
 
+/// The apexes of a height sampled once a step (`y`, with the vertical
+/// velocity `vy` at the same steps): each where the velocity turns down,
+/// refined with the parabola through the highest sample and its neighbours.
+std::vector<double> apexesOf(const std::vector<double>& y, const std::vector<double>& vy) {
+    std::vector<double> apexes;
+    for (std::size_t k = 1; k + 1 < y.size(); ++k) {
+        if (!(vy[k - 1] > 0.0 && vy[k] <= 0.0)) continue;
+        const std::size_t m = y[k] >= y[k - 1] ? k : k - 1;
+        const double a = y[m - 1], b = y[m], c = y[m + 1], den = a - 2.0 * b + c;
+        apexes.push_back(den < 0.0 ? b - 0.125 * (a - c) * (a - c) / den : b);
+    }
+    return apexes;
+}
+
 /// Apexes (bottom height) of the successive rebounds of a body dropped from
 /// h0 onto the ground, both with restitution e; a circle of radius 0.5 or a
-/// unit box landing flat. Each apex is refined with the parabola through the
-/// highest sample and its neighbours.
+/// unit box landing flat (apexesOf).
 std::vector<double> reboundApexes(bool circle, float e, float h0, float dt) {
     World world({.enableSleep = false});
     BodyId ground = world.createBody({});
@@ -97,14 +110,7 @@ std::vector<double> reboundApexes(bool circle, float e, float h0, float dt) {
         y.push_back(world.position(body).y - 0.5);
         vy.push_back(world.linearVelocity(body).y);
     }
-    std::vector<double> apexes;
-    for (std::size_t k = 1; k + 1 < y.size(); ++k) {
-        if (!(vy[k - 1] > 0.0 && vy[k] <= 0.0)) continue;
-        const std::size_t m = y[k] >= y[k - 1] ? k : k - 1;
-        const double a = y[m - 1], b = y[m], c = y[m + 1], den = a - 2.0 * b + c;
-        apexes.push_back(den < 0.0 ? b - 0.125 * (a - c) * (a - c) / den : b);
-    }
-    return apexes;
+    return apexesOf(y, vy);
 }
 
 }  // namespace
@@ -163,13 +169,7 @@ TEST(WorldImpacts, FlatBoxesBounceFlatOnAWideGround) {
                 vy.push_back(world.linearVelocity(box).y);
                 tilt = std::max(tilt, std::abs(double(world.angle(box))));
             }
-            std::vector<double> apexes;
-            for (std::size_t k = 1; k + 1 < y.size(); ++k) {
-                if (!(vy[k - 1] > 0.0 && vy[k] <= 0.0)) continue;
-                const std::size_t m = y[k] >= y[k - 1] ? k : k - 1;
-                const double a = y[m - 1], b = y[m], c = y[m + 1], den = a - 2.0 * b + c;
-                apexes.push_back(den < 0.0 ? b - 0.125 * (a - c) * (a - c) / den : b);
-            }
+            const std::vector<double> apexes = apexesOf(y, vy);
             const char* kind = rounded ? "rounded box" : "box";
             ASSERT_GE(apexes.size(), 4u) << kind << " of half-size " << half;
             for (int n = 1; n <= 4; ++n) {
