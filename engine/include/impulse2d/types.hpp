@@ -126,8 +126,8 @@ struct WorldSettings {
 
     /// Contacts are created when shapes are closer than this (m).
     float speculativeDistance = 0.02f;
-    /// A touching contact between flat shapes (polygons, segments) keeps its
-    /// manifold, with its points fixed in the two bodies and its normal fixed,
+    /// A touching contact between flat shapes (polygons, segments) with two
+    /// points keeps its manifold, with its points fixed in the two bodies and its normal fixed,
     /// while no point of one body has moved further than this (m) relative
     /// to the other since the manifold was computed; beyond it, after a
     /// turn of one body against the other of about 11°, after the first
