@@ -338,9 +338,10 @@ void selectTreeJoints(WorldState& w, std::vector<JointSlot>& slots, float h) {
     // tore lay at 0.24 of the reach and above, those that held at 0.28 and
     // below; at a tenth, every torn chain is solved exactly, and a chain of
     // 0.5 m links at 4 substeps only from 400 links. The load must also be
-    // massRatio times the lightest body's mass, as the other ratios must. The sum of the jointed
-    // bodies' masses, joint by joint, bounds every tree's (a body counts
-    // once per joint it holds), and their least reach every tree's.
+    // massRatio times the lightest body's mass, as the other ratios must.
+    // The sum of the jointed bodies' masses, joint by joint, bounds every
+    // tree's (a body counts once per joint it holds), and their least reach
+    // every tree's.
     const float omega = jointOmega(w.settings, h);
     const float loadStretch = length(w.settings.gravity) / (omega * omega);  // per body weight carried (m)
     float jointedMass = 0.0f, leastReach = INFINITY;

@@ -93,13 +93,14 @@ struct WorldSettings {
     float jointDampingRatio = 2.0f;
     /// Joints whose bodies form a tree (a chain, a ragdoll) have their
     /// equality rows (the revolute joint's point, a weld's rigid point and
-    /// angle, a rigid distance joint) solved exactly, not swept, when the tree's heaviest
-    /// body is at least this many times its lightest, or the masses its rows
-    /// see at the joints' anchors (1/(1/m + |r|²/I)) are, or one of its bodies
-    /// is rigidly welded to two others, or when no loop closes through it, its
-    /// bodies together are this many times its lightest and its soft rows
-    /// would stretch under their weight by a tenth of its smallest body's
-    /// reach (a long chain of light links at long substeps, docs/joints.md): Gauss-Seidel leaves a chain carrying a
+    /// angle, a rigid distance joint) solved exactly, not swept, when the
+    /// tree's heaviest body is at least this many times its lightest, or the
+    /// masses its rows see at the joints' anchors (1/(1/m + |r|²/I)) are, or
+    /// one of its bodies is rigidly welded to two others, or when no loop
+    /// closes through it, its bodies together are this many times its
+    /// lightest and its soft rows would stretch under their weight by a tenth
+    /// of its smallest body's reach (a long chain of light links at long
+    /// substeps, docs/joints.md): Gauss-Seidel leaves a chain carrying a
     /// heavy body stretched, and the soft step's sweep over such trees can
     /// gain energy (docs/joints.md). A joint closing a loop through such
     /// trees has its equality rows solved with them (up to 12 rows a step;
@@ -127,9 +128,10 @@ struct WorldSettings {
     /// Contacts are created when shapes are closer than this (m).
     float speculativeDistance = 0.02f;
     /// A touching contact between flat shapes (polygons, segments) with two
-    /// points keeps its manifold, with its points fixed in the two bodies and its normal fixed,
-    /// while no point of one body has moved further than this (m) relative
-    /// to the other since the manifold was computed; beyond it, after a
+    /// points keeps its manifold, with its points fixed in the two bodies
+    /// and its normal fixed, while no point of one body has moved further
+    /// than this (m) relative to the other since the manifold was computed;
+    /// beyond it, after a
     /// turn of one body against the other of about 11°, after the first
     /// body has turned 2° (its normal is fixed in the world), or once one
     /// body has slid 2 cm along the other's face, the manifold is
