@@ -14,6 +14,7 @@ const char* settingsOptionsHelp() {
            "  --sleep on|off            enable or disable sleeping\n"
            "  --manifold-reuse D        manifold reuse distance (m); 0 recomputes every manifold every step\n"
            "  --exact-joint-mass-ratio R  joint trees whose heaviest body is at least R times the lightest\n"
+           "                            (or whose load would stretch their soft joints, docs/joints.md)\n"
            "                            are solved exactly (1: every tree; 1e30: none)\n"
            "  --contact-hertz F         contact stiffness (Hz, soft_step; capped at a quarter of the substep rate)\n"
            "  --contact-damping-ratio Z contact damping ratio (soft_step); an overlap is pushed out at about\n"
