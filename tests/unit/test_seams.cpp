@@ -296,8 +296,9 @@ TEST(Seams, ColumnsAcrossAChainVertexStand) {
 // the floor (the box leant forward more often than back). A pair of like
 // shapes now takes the immovable body's shape as the reference
 // (contact.cpp), whose face does not turn. Nothing but the normals acts, so
-// the energy stays within what the box's sag in its soft contacts (0.07 mm,
-// m·g·7e-5 against ½·m·25) changes it: 1e-4 of the start is ten times that.
+// the energy stays within what the box's sag in its soft contacts could
+// change it (0.07 mm: m·g·7e-5 against ½·m·5², 5.6e-5 of the start); 1e-4 is
+// about twice that.
 TEST(Seams, AFrictionlessBoxSlidingOverPiecesKeepsItsEnergy) {
     for (const int substeps : {4, 1}) {
         WorldSettings s;
