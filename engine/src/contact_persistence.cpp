@@ -65,7 +65,7 @@ void recordManifoldFrame(Contact& c, const Body& a, const Body& b) {
     // can touch (the incident face's ends), and moving them is all a kept
     // manifold does. One point (a corner on a face) leaves out the corner a
     // turn brings down: a box rocking down from one corner onto a static
-    // floor kept its pivot's manifold while its far corner, 2 cm above at
+    // floor kept its pivot's manifold while its far corner, 2.4 cm above at
     // first, went 3.6 cm into the floor before the turn passed the reuse
     // distance (a 1.2 × 0.7 m box from 0.02 rad; 4.3 cm for a 2 × 1 m box),
     // and the soft row pushed it out over a quarter of a second.

@@ -138,14 +138,14 @@ TEST(KeptManifolds, AFasterChainDrumKeepsTheThinBodiesItPressesIntoItsSides) {
 // A box released on one corner rocks down flat onto a static floor. Its
 // contact had one point, the pivot, and that manifold was kept while the turn
 // moved the box's points by less than the reuse distance: the far corner,
-// 1 to 2.3 cm above the floor at first, got no point until it was already
-// 1.7 to 4.3 cm in (a box as shape B of its contact: on a segment floor
+// 2 to 12 cm above the floor at first, got no point until it was already
+// 0.7 to 4.3 cm in (a box as shape B of its contact: on a segment floor
 // always, on a box floor since the floor is shape A), and the soft row pushed
 // it out over a quarter of a second. Only two-point manifolds are kept now
-// (contact_persistence.cpp). The corner lands at about ω·r = 0.3 m/s onto a
-// point the speculative margin already holds, as with every manifold
-// recomputed (0.0 to 1.4 mm); 5 mm is well above that and well below the
-// centimetres the kept point let it sink.
+// (contact_persistence.cpp). The corner then lands on a point the
+// speculative margin already holds, as with every manifold recomputed (0.0
+// to 1.4 mm deep); 5 mm is well above that and well below the 0.7 to 4.3 cm
+// the kept point let it sink.
 TEST(KeptManifolds, ABoxRockingDownOntoAFloorDoesNotSinkItsOtherCorner) {
     struct Box {
         float hx, hy, tilt;

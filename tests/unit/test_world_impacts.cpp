@@ -145,8 +145,8 @@ TEST(WorldImpacts, ReboundApexesFollowESquaredNAtEveryStepRate) {
 // its points. The box left its first impact turning at 1e-4 to 3e-3 rad/s,
 // which every later impact grew until it landed on a corner: e = 0.75 from
 // 5 m, a box of half-size 0.25 m reached its fourth apex 28 % low, one of
-// 0.1 m 46 %, a rounded box 67 %, on a ground of half-width 100 m (not on
-// one of 50). A pair of like shapes now takes the immovable body's shape as
+// 0.1 m 46 %, a rounded box 67 %, on a ground of half-width 100 m (on one
+// of 50 m the 0.1 m box as well, the 0.25 m one not). A pair of like shapes now takes the immovable body's shape as
 // the reference (contact.cpp). The bar is the hard-cases issue's (apexes 1 to
 // 4 within 3 % of e^(2n)·h0), the box's tilt within 0.01 rad (a flat landing
 // gives it none).
