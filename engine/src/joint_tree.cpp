@@ -333,11 +333,12 @@ void selectTreeJoints(WorldState& w, std::vector<JointSlot>& slots, float h) {
     // releasable energy after 20 s (docs/joints.md, "Chains of many light
     // links"). Solved exactly such a tree holds its length. The criterion:
     // L·g/ω² at least kLoadStretch times the least reach of the tree's
-    // bodies, L its mass over its lightest body's. Over chains of 20 to 100
+    // bodies, L its mass over its lightest body's. Over chains of 20 to 60
     // alike links 0.05 to 0.25 m long at 1, 2 and 4 substeps, those that
-    // tore lay at 0.24 of the reach and above, those that held at 0.28 and
-    // below; at a tenth, every torn chain is solved exactly, and a chain of
-    // 0.5 m links at 4 substeps only from 400 links. The load must also be
+    // tore lay at 0.30 of the reach and above, those that held at 0.28 and
+    // below, and 100 links of 0.05 m at 4 substeps tore at 0.235: at a
+    // tenth, every torn chain is solved exactly, and a chain of 0.5 m links
+    // at 4 substeps only from 400 links. The load must also be
     // massRatio times the lightest body's mass, as the other ratios must.
     // The sum of the jointed bodies' masses, joint by joint, bounds every
     // tree's (a body counts once per joint it holds), and their least reach
