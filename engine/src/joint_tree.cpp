@@ -301,9 +301,7 @@ int movingSide(int index, float invMass, float invI, int ground) {
 
 }  // namespace
 
-float jointOmega(const WorldSettings& settings, float h) {
-    return 2.0f * 3.14159265f * std::min(settings.jointHertz, 0.25f / h);
-}
+float jointOmega(const WorldSettings& settings, float h) { return 2.0f * 3.14159265f * jointHertzOver(settings, h); }
 
 void selectTreeJoints(WorldState& w, std::vector<JointSlot>& slots, float h) {
     SolverArrays& s = w.solver;

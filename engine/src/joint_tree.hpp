@@ -115,8 +115,8 @@ struct JointTrees {
 /// (JointSlot::treePushed; buildJointTrees decides).
 void selectTreeJoints(WorldState& w, std::vector<JointSlot>& slots, float h);
 
-/// The stiffness (rad/s) of the joints' soft rows over substeps of h: jointHertz,
-/// capped at a quarter of the substep rate (solver.cpp).
+/// The stiffness (rad/s) of the joints' soft rows over substeps of h
+/// (jointHertzOver, solver.hpp).
 float jointOmega(const WorldSettings& settings, float h);
 
 /// What a tree's soft rows stretch under its load, as a fraction of its

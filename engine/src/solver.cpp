@@ -548,7 +548,7 @@ void solve(WorldState& w, float dt) {
     JointContext jointCtx;
     jointCtx.h = h;
     jointCtx.invH = 1.0f / h;
-    jointCtx.jointSoft = makeSoft(std::min(set.jointHertz, 0.25f * jointCtx.invH), set.jointDampingRatio, h);
+    jointCtx.jointSoft = makeSoft(jointHertzOver(set, h), set.jointDampingRatio, h);
     jointCtx.pushFactor = set.pushFactor;
     jointCtx.maxLinearSpeed = maxSpeed;
     // Where a sweep left a velocity non-finite (stopNonFiniteBodies). The

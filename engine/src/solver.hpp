@@ -1,6 +1,7 @@
 // The step: the order of the stages, and the solver's per-step arrays.
 #pragma once
 
+#include <algorithm>
 #include <cstdint>
 #include <vector>
 
@@ -23,6 +24,10 @@ struct WorldState;
 inline int solverSubsteps(const WorldSettings& s) {
     return s.positionCorrection == PositionCorrection::soft_step ? s.substeps : 1;
 }
+
+/// The joints' soft-row stiffness (Hz) over substeps of h: jointHertz, capped
+/// at a quarter of the substep rate (solver.cpp; joint_tree.cpp's jointOmega).
+inline float jointHertzOver(const WorldSettings& s, float h) { return std::min(s.jointHertz, 0.25f * (1.0f / h)); }
 
 inline constexpr std::uint8_t kBodyMoves = 1, kBodyTurns = 2;  ///< SolverArrays::bodyMoves
 
