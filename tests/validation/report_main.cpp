@@ -257,7 +257,7 @@ int main(int argc, char** argv) {
           "the tangential velocity, not the position). A lean the same way all up the column does worse\n"
           "(a program written from the issue's text, 1 m boxes, friction 0.6, 60 s): built leaning\n"
           "0.1 mm per box, 50 boxes swing about a lean of 7.7 cm with a period of about 45 s, up to 14.9 cm\n"
-          "at 22 s, damped only slowly (14.2 cm at 66 s, 13.7 cm at 111 s); at 1 mm per box they fall between\n"
+          "at 22 s, damped only slowly (run on: 14.2 cm at 66 s, 13.7 cm at 111 s); at 1 mm per box they fall between\n"
           "20 and 30 s; 20 boxes leaning 0.5 mm per box\n"
           "sway 1.6 cm (bound 1 cm) about a lean of 9.1 mm from where they started, a swing the contacts'\n"
           "damping ratio damps (largest 1.77 cm at ζ 5, 1.18 cm at ζ 100, which settles within 15 s). The\n"
