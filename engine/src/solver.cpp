@@ -88,6 +88,8 @@ constexpr int kColourCount = 24;  ///< colours tried before the overflow group
 /// movable body, so their order within it changes no result.
 constexpr int kRowGroupCount = kWideGroupsPerColour * kColourCount;  ///< the overflow group's index
 constexpr std::uint32_t kAllColours = (std::uint32_t{1} << kColourCount) - 1u;
+/// Set in a body's colour mask when it has a row in the overflow group (not a colour).
+constexpr std::uint32_t kOverflowRowBit = std::uint32_t{1} << 31;
 static_assert(kColourCount < 32, "a body's colours are the bits of a 32-bit mask");
 
 /// The bodies per chunk of an integration stage, and the contact blocks per
@@ -193,6 +195,12 @@ void colourContacts(WorldState& w) {
             if (maskA) *maskA |= bit;
             if (maskB) *maskB |= bit;
             group = kWideGroupsPerColour * c + ((key.flags & kKeyOnePoint) ? 1 : 0);
+        }
+        if (group == kRowGroupCount) {
+            // A row in the overflow group: marked above the colours, so that
+            // the tilt chains see every row of a body (kOverflowRowBit).
+            if (maskA) *maskA |= kOverflowRowBit;
+            if (maskB) *maskB |= kOverflowRowBit;
         }
         s.contactColours[i] = static_cast<std::uint8_t>(group);
         s.rowContacts[i] = s.colourOffsets[static_cast<std::size_t>(group)]++;  // its place in its group
@@ -347,6 +355,9 @@ void prepareContactRows(WorldState& w, float h, bool soft) {
     s.wideContactsOnly = s.wideContactsActive && !s.anyDeepOverlap &&
                          w.settings.impactModel == ImpactModel::closed_form;
     s.contactOverflowStart = 0;
+    s.tilt.rows.clear();
+    s.tilt.chainStart.clear();
+    s.tilt.candidate.clear();
     s.coldBlocks.clear();
     s.deepBlocks.clear();
     // Whether a lane is cold (kWideCold), set by the workers that find one.
@@ -371,6 +382,19 @@ void prepareContactRows(WorldState& w, float h, bool soft) {
         w.runner.run(blocks, kPackGrain, pack);
         if (anyCold.load(std::memory_order_relaxed)) listBlocks(s, kWideCold, s.coldBlocks, s.coldBlockStart);
         listRelaxedAgainBlocks(w, x);
+        // The tilt rows' candidates (contact_tilt.cpp): lanes of two points
+        // that both carry load from the warm start (none cold), not an
+        // overlap since the bodies were created or moved (pushed apart, not
+        // resting).
+        for (int k = 0; k < (w.settings.exactColumnTilt ? blocks : 0); ++k) {
+            const WideContactBlock& blk = s.wideContacts[static_cast<std::size_t>(k)];
+            for (int lane = 0; lane < 4; ++lane)
+                if ((blk.flags[lane] & kWidePoint1) != 0 && blk.points[0].normalImpulse[lane] > 0.0f &&
+                    blk.points[1].normalImpulse[lane] > 0.0f &&
+                    !w.contacts[s.wideContactCold[static_cast<std::size_t>(k)].contact[lane]].overlapFromStart)
+                    s.tilt.candidate.push_back(4 * k + lane);
+        }
+        buildTiltChains(w);
         return;
     }
     // colourOffsets holds each colour's first row, so the next colour's is its end.
@@ -384,6 +408,8 @@ void prepareContactRows(WorldState& w, float h, bool soft) {
     // by colour).
     const std::size_t activeCount = w.activeContacts.size();
     s.constraints.resizeForOverwrite(static_cast<std::size_t>(s.rowCount - overflow));
+    const bool tilt = w.settings.exactColumnTilt;
+    s.tiltCandidate.assign(tilt ? activeCount : 0, 0);
     // Contact by contact in slot order, which reads the contacts and bodies
     // in the order they lie in memory; each row goes to its lane (or the
     // overflow group's scalar row), so the contacts may be shared among the
@@ -414,6 +440,12 @@ void prepareContactRows(WorldState& w, float h, bool soft) {
             }
             const WideLane at = wideLaneOf(s, group, inGroup);
             targets[pending++] = {contact, &s.wideContacts[at.block], &s.wideContactCold[at.block], at.lane};
+            // A tilt row's candidate: two points that both carried load when the step began.
+            if (tilt) {
+                const Contact& ct = w.contacts[contact];
+                s.tiltCandidate[static_cast<std::size_t>(k)] = ct.manifold.pointCount == 2 &&
+                                                               ct.normalImpulse[0] > 0.0f && ct.normalImpulse[1] > 0.0f;
+            }
             if (pending == 4) {
                 cold |= prepareWideContactLanes(w, x, targets, pending);
                 pending = 0;
@@ -434,6 +466,14 @@ void prepareContactRows(WorldState& w, float h, bool soft) {
     }
     if (anyCold.load(std::memory_order_relaxed)) listBlocks(s, kWideCold, s.coldBlocks, s.coldBlockStart);
     listRelaxedAgainBlocks(w, x);
+    // The candidates of the columns' tilt rows (contact_tilt.cpp), marked
+    // by the workers that prepared them, in the order of the active contacts.
+    for (std::size_t k = 0; k < (tilt ? activeCount : 0); ++k) {
+        if (!s.tiltCandidate[k]) continue;
+        const WideLane at = wideLaneOf(s, s.contactColours[k], s.rowContacts[k]);
+        s.tilt.candidate.push_back(static_cast<int>(at.block) * 4 + at.lane);
+    }
+    buildTiltChains(w);
 }
 
 /// Joint sweeps in each substep's solve stage (soft_step). A chain carrying a
@@ -615,7 +655,8 @@ void solve(WorldState& w, float dt) {
             for (int pass = 0; pass < kJointSolvePasses; ++pass) joints(SolvePass::soft_bias);
             contacts(SolvePass::soft_bias, h);
             if (!s.coldBlocks.empty()) settleColdContacts(w, h);
-            if (s.anyDeepOverlap || s.anyDeepJoint || s.pushTrees) {
+            solveTiltChains(w, h);
+            if (s.anyDeepOverlap || s.anyDeepJoint || s.pushTrees || !s.tilt.rows.empty()) {
                 stopNonFiniteBodies(s);  // (integratePositionsPushed does not look)
                 if (s.anyDeepOverlap) {
                     // The push reads the load its rows carry (deep_overlap.cpp).
@@ -625,6 +666,8 @@ void solve(WorldState& w, float dt) {
                     s.biasV.assign(s.states.size(), Vec2{});
                     s.biasW.assign(s.states.size(), 0.0f);
                 }
+                // The columns' tilt, closed on the same pseudo-velocities (contact_tilt.cpp).
+                pushTiltChains(w, h);
                 // The deep joints' error (isDeepJoint, world_state.hpp), one
                 // sweep at the soft rows' own rate: biasRate·C = β·C/h.
                 if (s.anyDeepJoint) {
@@ -648,6 +691,7 @@ void solve(WorldState& w, float dt) {
             const SolvePass relax = i + 1 == substeps ? SolvePass::soft_relax_last : SolvePass::soft_relax;
             contacts(relax, h);
             if (!s.deepBlocks.empty()) relaxDeepContacts(w, h, relax);
+            solveTiltChains(w, h);
         }
         stopNonFiniteBodies(s);    // the last sweep's, before the impulses are stored
         if (s.wideContactsOnly) {  // blocks without rows store into their contacts
@@ -797,6 +841,19 @@ void forEachStepArray(WorldState& w, F&& f) {
     f(s.supportStart);
     f(s.supportAbove);
     f(s.supportQueue);
+    f(s.tiltCandidate);
+    f(s.tilt.rows);
+    f(s.tilt.chainStart);
+    f(s.tilt.candidate);
+    f(s.tilt.found);
+    f(s.tilt.degree);
+    f(s.tilt.link);
+    f(s.tilt.visited);
+    f(s.tilt.diag);
+    f(s.tilt.upper);
+    f(s.tilt.rhs);
+    f(s.tilt.x);
+    f(s.tilt.active);
     f(w.activeContacts);
     f(w.gatherScratch);
     f(w.gatherMarks);

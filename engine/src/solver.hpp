@@ -7,6 +7,7 @@
 
 #include "body.hpp"
 #include "contact_solver.hpp"
+#include "contact_tilt.hpp"
 #include "deep_overlap.hpp"
 #include "joint.hpp"
 #include "joint_tree.hpp"
@@ -146,8 +147,10 @@ struct SolverArrays {
     /// in a step without either, or whose rows are not in wide blocks
     /// (relaxDeepContacts, contact_solver.cpp; listRelaxedAgainBlocks, solver.cpp).
     std::vector<int> deepBlocks, deepBlockStart;
-    std::vector<float> listedImpulses;  ///< a listed lane's normal impulses after a sweep (contact_solver.cpp)
-    int contactOverflowStart = 0;       ///< the first row of the scalar rest (the overflow group)
+    std::vector<std::uint8_t> tiltCandidate;  ///< per active contact: a tilt row's candidate (contact_tilt.cpp)
+    TiltChains tilt;                          ///< the columns' tilt rows, solved exactly (contact_tilt.cpp)
+    std::vector<float> listedImpulses;        ///< a listed lane's normal impulses after a sweep (contact_solver.cpp)
+    int contactOverflowStart = 0;             ///< the first row of the scalar rest (the overflow group)
     /// This step sweeps the contact rows last to first (colour by colour,
     /// the overflow group's rows in reverse too): every other step, so the
     /// order of a Gauss-Seidel sweep leans no stack the same way each step

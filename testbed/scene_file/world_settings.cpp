@@ -51,6 +51,7 @@ i2d::WorldSettings parseWorld(const json& j, const Loc& loc) {
     s.jointHertz = o.f("joint_hertz", s.jointHertz, {0, kMaxRate});
     s.jointDampingRatio = o.f("joint_damping_ratio", s.jointDampingRatio, {0, kMaxRate});
     s.exactJointMassRatio = o.f("exact_joint_mass_ratio", s.exactJointMassRatio, {1, 1.0e30});
+    s.exactColumnTilt = o.boolean("exact_column_tilt", s.exactColumnTilt);
     s.restitutionThreshold = o.f("restitution_threshold", s.restitutionThreshold, {0, kMaxSpeed});
     s.impactThreshold = o.f("impact_threshold", s.impactThreshold, {0, kMaxSpeed});
     s.hitEventThreshold = o.f("hit_event_threshold", s.hitEventThreshold, {0, kMaxSpeed});

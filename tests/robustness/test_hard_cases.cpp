@@ -6,6 +6,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstdint>
 #include <cstdio>
 #include <string>
 #include <vector>
@@ -262,6 +263,74 @@ TEST(HardCases, StackOfTwentyWithHeavyTopStandsWithSleepingOff) {
     EXPECT_LT(drop, 0.523f + 0.01f);  // plus 1 cm for the float sums of 20 contacts' sags
     EXPECT_LT(sway, 0.01f);
     EXPECT_LT(peak, 3.2f);
+}
+
+// Light stacks under tops 200 to 400 times their boxes' mass (issue: the
+// largest ratio that stands). Stacks of 3, 5 and 8 boxes 0.5 to 1.5 m
+// across and high (three layouts each) under a 0.5 × 1 m top 200 and 300
+// times their mean mass, and four unit boxes under a 2 × 2 m top of density
+// 100 (400 times), 30 s, sleeping off. With the contacts' tilt left to their
+// soft rows, whose stiffness follows the light boxes' effective mass, each
+// contact bent under the top's load and the lean grew about four times a
+// second: 9 of these 19 fell (docs/validation.md, "Columns solved as one").
+// Bounds: the issue's for a heavy top, within 5 cm sideways and a drop
+// under 0.5 m (the contacts' sag, load over m_eff·ω² summed down the stack:
+// measured up to 0.45 m for 8 boxes under 300 times); the energy never above
+// its start (a passive system, the audit's 1 %).
+TEST(HardCases, LightStacksUnderTopsTwoToFourHundredTimesHeavierStand) {
+    struct Layout {
+        int boxes, seed;
+        float ratio;
+    };
+    std::vector<Layout> layouts;
+    for (int boxes : {3, 5, 8})
+        for (int seed = 1; seed <= 3; ++seed)
+            for (float ratio : {200.0f, 300.0f}) layouts.push_back({boxes, seed, ratio});
+    layouts.push_back({4, 0, 400.0f});  // the unit boxes under a 2 × 2 m top
+    for (const Layout& l : layouts) {
+        World world(WorldSettings{.enableSleep = false});
+        test::makeGround(world, 100.0f);
+        std::vector<BodyId> bodies;
+        std::uint32_t state = static_cast<std::uint32_t>(l.seed) * 2654435761u;
+        auto uniform = [&] {  // a small LCG: the same layouts on every platform
+            state = state * 1664525u + 1013904223u;
+            return static_cast<float>(state >> 8) / 16777216.0f;
+        };
+        float y = 0.0f, mass = 0.0f;
+        for (int i = 0; i < l.boxes; ++i) {
+            const float hx = l.seed == 0 ? 0.5f : 0.25f + 0.5f * uniform();
+            const float hy = l.seed == 0 ? 0.5f : 0.25f + 0.5f * uniform();
+            BodyId b = world.createBody({.type = BodyType::dynamic_body, .position = {0.0f, y + hy}});
+            world.createPolygonShape(b, {.density = 1.0f, .friction = 0.6f}, makeBox(hx, hy));
+            y += 2.0f * hy;
+            mass += 4.0f * hx * hy;
+            bodies.push_back(b);
+        }
+        const Vec2 topHalf = l.seed == 0 ? Vec2{1.0f, 1.0f} : Vec2{0.25f, 0.5f};
+        const float topDensity = l.ratio * (mass / static_cast<float>(l.boxes)) / (4.0f * topHalf.x * topHalf.y);
+        BodyId top = world.createBody({.type = BodyType::dynamic_body, .position = {0.0f, y + topHalf.y}});
+        world.createPolygonShape(top, {.density = topDensity, .friction = 0.6f}, makeBox(topHalf.x, topHalf.y));
+        bodies.push_back(top);
+        const Vec2 start = world.position(top);
+        const double e0 = test::totalEnergy(world, bodies);
+        float sway = 0.0f;
+        double energy = 0.0;
+        for (int step = 0; step < 30 * 60; ++step) {
+            world.step(kDt);
+            sway = std::max(sway, std::abs(world.position(top).x - start.x));
+            energy = std::max(energy, test::totalEnergy(world, bodies) / e0);
+        }
+        const float drop = start.y - world.position(top).y;
+        SCOPED_TRACE(std::to_string(l.boxes) + " boxes, layout " + std::to_string(l.seed) + ", top " +
+                     std::to_string(l.ratio) + " times");
+        std::printf("[figure] %d boxes (layout %d) under a top %.0f times their mass: sway %.4f m, drop %.3f m, "
+                    "energy at most %.5f of its start\n",
+                    l.boxes, l.seed, l.ratio, sway, drop, energy);
+        ASSERT_TRUE(allFinite(world));
+        EXPECT_LT(sway, 0.05f);
+        EXPECT_LT(drop, 0.5f);
+        EXPECT_LT(energy, 1.01);
+    }
 }
 
 // Box2D v3's HighMassRatio2: a 20 × 20 m box (400 kg) dropped from 26 m

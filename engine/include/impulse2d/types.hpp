@@ -111,6 +111,15 @@ struct WorldSettings {
     /// geometric stiffness"). 1 solves every tree exactly; infinity none.
     /// Dimensionless, ≥ 1.
     float exactJointMassRatio = 10.0f;
+    /// soft_step: the tilt of two-point contacts stacked in columns (the
+    /// difference of a manifold's two normal impulses, a couple) solved
+    /// exactly along each column after every contact sweep, so a column's
+    /// joints do not bend under their contacts' softness: a column built
+    /// leaning, or a light stack under a heavy top, stands where the soft
+    /// rows let it buckle (docs/validation.md, "Columns solved as one").
+    /// Only bodies whose every contact row is such a manifold, pressed from
+    /// opposite sides, without joints, take part (contact_tilt.cpp).
+    bool exactColumnTilt = true;
 
     /// Approach speed (m/s) below which a contact gets no restitution
     /// (velocity_bias; with closed_form, impactThreshold decides which
