@@ -15,6 +15,7 @@ namespace i2d::detail {
 namespace {
 /// How nearly opposite (the cosine) the pushes of a chain body's two rows must be.
 constexpr float kOpposite = 0.9f;
+void factorChains(TiltChains& t);
 }  // namespace
 
 void buildTiltChains(WorldState& w) {
@@ -157,9 +158,12 @@ void buildTiltChains(WorldState& w) {
     for (int i = 0; i < kept; ++i) {
         if (t.visited[static_cast<std::size_t>(i)]) continue;
         int side;
-        if (onward(i, 0) < 0) side = 1;
-        else if (onward(i, 1) < 0) side = 0;
-        else continue;  // inside a chain: reached from an end
+        if (onward(i, 0) < 0)
+            side = 1;
+        else if (onward(i, 1) < 0)
+            side = 0;
+        else
+            continue;  // inside a chain: reached from an end
         t.chainStart.push_back(static_cast<int>(t.rows.size()));
         const int startSide = side;
         int row = i;
@@ -185,6 +189,7 @@ void buildTiltChains(WorldState& w) {
         if (heldAtStart && heldAtEnd && static_cast<int>(t.rows.size()) - t.chainStart.back() > 1) t.rows.pop_back();
     }
     t.chainStart.push_back(static_cast<int>(t.rows.size()));
+    if (!t.rows.empty()) factorChains(t);
 }
 
 namespace {
@@ -217,10 +222,11 @@ SideRows sideRows(const TiltRow& r, bool sideB) {
 void addCoupling(const SideRows& g1, const SideRows& g2, double out[4]) {
     for (int p = 0; p < 2; ++p)
         for (int q = 0; q < 2; ++q)
-            out[2 * p + q] += g1.m * (g1.j[p][0] * g2.j[q][0] + g1.j[p][1] * g2.j[q][1]) + g1.i * g1.j[p][2] * g2.j[q][2];
+            out[2 * p + q] += g1.m * (g1.j[p][0] * g2.j[q][0] + g1.j[p][1] * g2.j[q][1]) +
+                              g1.i * g1.j[p][2] * g2.j[q][2];
 }
 
-/// Whether a side of row r is body `state` (a side that moves).
+/// Whether side B (else A) of row r is body `state`, a body that moves.
 bool onBody(const TiltRow& r, bool sideB, int state) {
     return sideB ? (r.b == state && (r.mB > 0.0f || r.iB > 0.0f)) : (r.a == state && (r.mA > 0.0f || r.iA > 0.0f));
 }
@@ -236,14 +242,130 @@ bool invert2(const double m[4], double out[4], double scale) {
     return true;
 }
 
-}  // namespace
+/// A = J·M⁻¹·Jᵀ of chain [first, last) in 2×2 blocks: each row pair's
+/// diagonal block D_i (TiltChains::diag) and its block with the next pair
+/// U_i (upper; the block below is U_iᵀ), the rows left out (`active` clear)
+/// with a unit diagonal and no coupling.
+void assemble(TiltChains& t, int first, int last) {
+    for (int i = first; i < last; ++i) {
+        const auto u = static_cast<std::size_t>(i);
+        const TiltRow& r = t.rows[u];
+        double* d = &t.diag[4 * u];
+        double* e = &t.upper[4 * u];
+        std::fill_n(d, 4, 0.0);
+        std::fill_n(e, 4, 0.0);
+        const SideRows gA = sideRows(r, false), gB = sideRows(r, true);
+        addCoupling(gA, gA, d);
+        addCoupling(gB, gB, d);
+        if (i + 1 < last) {
+            const TiltRow& q = t.rows[u + 1];
+            for (int side = 0; side < 2; ++side) {
+                const int state = side == 0 ? r.a : r.b;
+                if (!onBody(r, side == 1, state)) continue;
+                if (onBody(q, false, state)) addCoupling(side == 0 ? gA : gB, sideRows(q, false), e);
+                if (onBody(q, true, state)) addCoupling(side == 0 ? gA : gB, sideRows(q, true), e);
+            }
+        }
+    }
+    for (int i = first; i < last; ++i) {
+        const auto u = static_cast<std::size_t>(i);
+        for (int p = 0; p < 2; ++p) {
+            if (t.active[u] & (1u << p)) continue;
+            double* d = &t.diag[4 * u];
+            d[2 * p] = d[2 * p + 1] = d[p] = d[2 + p] = 0.0;
+            d[3 * p] = 1.0;
+            for (int q = 0; q < 2; ++q) {
+                t.upper[4 * u + static_cast<std::size_t>(2 * p + q)] = 0.0;                       // row p of U_i
+                if (i > first) t.upper[4 * (u - 1) + static_cast<std::size_t>(2 * q + p)] = 0.0;  // column p of U_{i−1}
+            }
+        }
+    }
+}
 
-namespace {
+/// The block LDLᵀ of the assembled chain, in place: diag becomes D'_i⁻¹
+/// (D'_i = D_i − U_{i−1}ᵀ D'_{i−1}⁻¹ U_{i−1}) and lower the multipliers
+/// L_i = U_{i−1}ᵀ D'_{i−1}⁻¹. Returns the first row pair whose pivot
+/// vanishes (it depends on the pairs before it), or −1.
+int factor(TiltChains& t, int first, int last) {
+    for (int i = first; i < last; ++i) {
+        const auto u = static_cast<std::size_t>(i);
+        double* d = &t.diag[4 * u];
+        double* m = &t.lower[4 * u];
+        if (i > first) {
+            const double* dp = &t.diag[4 * (u - 1)];
+            const double* e = &t.upper[4 * (u - 1)];
+            for (int p = 0; p < 2; ++p)
+                for (int q = 0; q < 2; ++q) m[2 * p + q] = e[p] * dp[q] + e[2 + p] * dp[2 + q];
+            for (int p = 0; p < 2; ++p)
+                for (int q = 0; q < 2; ++q) d[2 * p + q] -= m[2 * p] * e[q] + m[2 * p + 1] * e[2 + q];
+        }
+        double inv[4];
+        if (!invert2(d, inv, std::max(std::abs(d[0]) + std::abs(d[3]), 1e-30))) return i;
+        std::copy_n(inv, 4, d);
+    }
+    return -1;
+}
+
+/// Assembles and factors the chain, leaving out the row pairs the
+/// elimination finds dependent on the ones before them.
+void assembleAndFactor(TiltChains& t, int first, int last) {
+    for (;;) {
+        assemble(t, first, last);
+        const int singular = factor(t, first, last);
+        if (singular < 0) return;
+        t.active[static_cast<std::size_t>(singular)] = 0;
+    }
+}
+
+/// x = A⁻¹·rhs by the factors: forward b'_i = b_i − L_i b'_{i−1}, back
+/// x_i = D'⁻¹_i (b'_i − U_i x_{i+1}).
+void substitute(TiltChains& t, int first, int last) {
+    for (int i = first; i < last; ++i) {
+        const auto u = static_cast<std::size_t>(i);
+        double b0 = (t.active[u] & 1u) ? t.rhs[2 * u] : 0.0, b1 = (t.active[u] & 2u) ? t.rhs[2 * u + 1] : 0.0;
+        if (i > first) {
+            const double* m = &t.lower[4 * u];
+            b0 -= m[0] * t.x[2 * u - 2] + m[1] * t.x[2 * u - 1];
+            b1 -= m[2] * t.x[2 * u - 2] + m[3] * t.x[2 * u - 1];
+        }
+        t.x[2 * u] = b0;
+        t.x[2 * u + 1] = b1;
+    }
+    for (int i = last - 1; i >= first; --i) {
+        const auto u = static_cast<std::size_t>(i);
+        double b0 = t.x[2 * u], b1 = t.x[2 * u + 1];
+        if (i + 1 < last) {
+            const double* e = &t.upper[4 * u];
+            b0 -= e[0] * t.x[2 * u + 2] + e[1] * t.x[2 * u + 3];
+            b1 -= e[2] * t.x[2 * u + 2] + e[3] * t.x[2 * u + 3];
+        }
+        const double* d = &t.diag[4 * u];
+        t.x[2 * u] = d[0] * b0 + d[1] * b1;
+        t.x[2 * u + 1] = d[2] * b0 + d[3] * b1;
+    }
+}
+
+/// Each chain's factors with all its rows (but the dependent ones): what
+/// every pass solves with while no row must be left out. Once per step: the
+/// rows' arms and masses do not change within it.
+void factorChains(TiltChains& t) {
+    const std::size_t n = t.rows.size();
+    t.diag.resize(4 * n);
+    t.upper.resize(4 * n);
+    t.lower.resize(4 * n);
+    t.rhs.resize(2 * n);
+    t.x.resize(2 * n);
+    t.active.assign(n, 3);
+    t.refactor.assign(t.chainStart.size() - 1, 0);
+    for (std::size_t c = 0; c + 1 < t.chainStart.size(); ++c)
+        assembleAndFactor(t, t.chainStart[c], t.chainStart[c + 1]);
+    t.allActive = t.active;
+}
 
 /// The chains' solve on the velocities (push false: the passes' own, with
-/// their targets, impulses and cones) or on the deep push's pseudo-velocities
+/// their impulses and cones) or on the deep push's pseudo-velocities
 /// (push true: SolverArrays::biasV and biasW, which must neither tilt nor
-/// shear a chain's manifolds; no impulse is kept).
+/// shear a chain's manifolds but close their tilt; no impulse is kept).
 void solveChains(WorldState& w, float h, bool push) {
     SolverArrays& s = w.solver;
     TiltChains& t = s.tilt;
@@ -256,21 +378,19 @@ void solveChains(WorldState& w, float h, bool push) {
     };
     const float maxPush = w.settings.maxPushSpeed;
     BodyState* states = s.states.data();
-    const std::size_t n = t.rows.size();
-    t.diag.resize(4 * n);
-    t.upper.resize(4 * n);
-    t.rhs.resize(2 * n);
-    t.x.resize(2 * n);
-    t.active.assign(n, 3);
     for (std::size_t c = 0; c + 1 < t.chainStart.size(); ++c) {
         const int first = t.chainStart[c], last = t.chainStart[c + 1];
+        // A pass that left rows out refactored the chain: back to all rows.
+        if (t.refactor[c]) {
+            std::copy(t.allActive.begin() + first, t.allActive.begin() + last, t.active.begin() + first);
+            assembleAndFactor(t, first, last);
+            t.refactor[c] = 0;
+        }
         // Each row pair's right-hand side: its targets less its speeds now.
         for (int i = first; i < last; ++i) {
             const auto u = static_cast<std::size_t>(i);
             const TiltRow& r = t.rows[u];
             const WideContactBlock& k = s.wideContacts[static_cast<std::size_t>(r.block)];
-            const BodyState& sA = states[r.a];
-            const BodyState& sB = states[r.b];
             const auto [vA, wA] = velocity(r.a);
             const auto [vB, wB] = velocity(r.b);
             const float tx = r.ny, ty = -r.nx;
@@ -282,6 +402,8 @@ void solveChains(WorldState& w, float h, bool push) {
             // bent straightens as its contacts would close their overlaps).
             float target = 0.0f;
             if (push) {
+                const BodyState& sA = states[r.a];
+                const BodyState& sB = states[r.b];
                 const Vec2 nrm{r.nx, r.ny};
                 const Softness& soft = (k.flags[r.lane] & kWideImmovableSide) != 0 ? x.staticSoft : x.dynamicSoft;
                 const Rot qA = (k.flags[r.lane] & kWideRoundA) != 0 ? Rot{} : sA.dq;
@@ -301,88 +423,11 @@ void solveChains(WorldState& w, float h, bool push) {
             t.rhs[2 * u] = static_cast<double>(target) - tilt;
             t.rhs[2 * u + 1] = static_cast<double>(push ? 0.0f : k.tangentSpeed[r.lane]) - shear;
         }
-        // Solve A·x = rhs (block tridiagonal, 2×2 blocks: the block Thomas
-        // algorithm), leaving out the rows that would make a point pull or
-        // slip past its friction cone, until none would.
-        for (int attempt = 0; attempt <= 2 * (last - first); ++attempt) {
-            for (int i = first; i < last; ++i) {
-                const auto u = static_cast<std::size_t>(i);
-                const TiltRow& r = t.rows[u];
-                double* d = &t.diag[4 * u];
-                double* e = &t.upper[4 * u];
-                std::fill_n(d, 4, 0.0);
-                std::fill_n(e, 4, 0.0);
-                const SideRows gA = sideRows(r, false), gB = sideRows(r, true);
-                addCoupling(gA, gA, d);
-                addCoupling(gB, gB, d);
-                if (i + 1 < last) {
-                    const TiltRow& q = t.rows[u + 1];
-                    for (int side = 0; side < 2; ++side) {
-                        const int state = side == 0 ? r.a : r.b;
-                        if (!onBody(r, side == 1, state)) continue;
-                        if (onBody(q, false, state)) addCoupling(side == 0 ? gA : gB, sideRows(q, false), e);
-                        if (onBody(q, true, state)) addCoupling(side == 0 ? gA : gB, sideRows(q, true), e);
-                    }
-                }
-                t.x[2 * u] = t.rhs[2 * u];
-                t.x[2 * u + 1] = t.rhs[2 * u + 1];
-            }
-            // Rows left out: a unit diagonal, no coupling, no right-hand side.
-            for (int i = first; i < last; ++i) {
-                const auto u = static_cast<std::size_t>(i);
-                for (int p = 0; p < 2; ++p) {
-                    if (t.active[u] & (1u << p)) continue;
-                    double* d = &t.diag[4 * u];
-                    d[2 * p] = d[2 * p + 1] = d[p] = d[2 + p] = 0.0;
-                    d[3 * p] = 1.0;
-                    t.x[2 * u + static_cast<std::size_t>(p)] = 0.0;
-                    for (int q = 0; q < 2; ++q) {
-                        t.upper[4 * u + static_cast<std::size_t>(2 * p + q)] = 0.0;  // row p of U_i
-                        if (i > first) t.upper[4 * (u - 1) + static_cast<std::size_t>(2 * q + p)] = 0.0;  // column p of U_{i−1}
-                    }
-                }
-            }
-            // Forward elimination: D'_i = D_i − U_{i−1}ᵀ D'_{i−1}⁻¹ U_{i−1}.
-            bool singular = false;
-            double inv[4];
-            for (int i = first; i < last && !singular; ++i) {
-                const auto u = static_cast<std::size_t>(i);
-                double* d = &t.diag[4 * u];
-                if (i > first) {
-                    const double* dp = &t.diag[4 * (u - 1)];  // already D'⁻¹
-                    const double* e = &t.upper[4 * (u - 1)];
-                    // M = U_{i−1}ᵀ·D'⁻¹_{i−1}
-                    double m[4];
-                    for (int p = 0; p < 2; ++p)
-                        for (int q = 0; q < 2; ++q) m[2 * p + q] = e[p] * dp[q] + e[2 + p] * dp[2 + q];
-                    for (int p = 0; p < 2; ++p) {
-                        for (int q = 0; q < 2; ++q) d[2 * p + q] -= m[2 * p] * e[q] + m[2 * p + 1] * e[2 + q];
-                        t.x[2 * u + static_cast<std::size_t>(p)] -= m[2 * p] * t.x[2 * u - 2] + m[2 * p + 1] * t.x[2 * u - 1];
-                    }
-                }
-                const double scale = std::max(std::abs(d[0]) + std::abs(d[3]), 1e-30);
-                if (!invert2(d, inv, scale)) {
-                    // Dependent on the rows before it: its rows are left out.
-                    t.active[u] = 0;
-                    singular = true;
-                    break;
-                }
-                std::copy_n(inv, 4, d);
-            }
-            if (singular) continue;
-            // Back substitution: x_i = D'⁻¹_i (b'_i − U_i x_{i+1}).
-            for (int i = last - 1; i >= first; --i) {
-                const auto u = static_cast<std::size_t>(i);
-                double b0 = t.x[2 * u], b1 = t.x[2 * u + 1];
-                if (i + 1 < last) {
-                    const double* e = &t.upper[4 * u];
-                    b0 -= e[0] * t.x[2 * u + 2] + e[1] * t.x[2 * u + 3];
-                    b1 -= e[2] * t.x[2 * u + 2] + e[3] * t.x[2 * u + 3];
-                }
-                const double* d = &t.diag[4 * u];
-                t.x[2 * u] = d[0] * b0 + d[1] * b1;
-                t.x[2 * u + 1] = d[2] * b0 + d[3] * b1;
-            }
+        // Solve A·x = rhs, leaving out the rows that would make a point pull
+        // or slip past its friction cone, until none would (each time one
+        // more row at least: a chain of m pairs is solved 2m + 1 times at most).
+        for (int attempt = 0;; ++attempt) {
+            substitute(t, first, last);
             bool dropped = false;
             for (int i = first; i < last && !push; ++i) {
                 const auto u = static_cast<std::size_t>(i);
@@ -399,7 +444,9 @@ void solveChains(WorldState& w, float h, bool push) {
                     dropped = true;
                 }
             }
-            if (!dropped) break;
+            if (!dropped || attempt > 2 * (last - first)) break;
+            assembleAndFactor(t, first, last);
+            t.refactor[c] = 1;
         }
         for (int i = first; i < last; ++i) {
             const auto u = static_cast<std::size_t>(i);

@@ -25,7 +25,7 @@ struct TiltRow {
     float sA = 0, sB = 0;     ///< r_m × t on each side, r_m the arm to the points' midpoint
     float mA = 0, iA = 0;     ///< A's inverse mass and inertia (0 for a side that does not move or turn)
     float mB = 0, iB = 0;
-    float nx = 0, ny = 0;     ///< the manifold's normal (from A to B)
+    float nx = 0, ny = 0;  ///< the manifold's normal (from A to B)
 };
 
 /// The tilt rows of one step in chains: each chain is a path of bodies that
@@ -40,8 +40,13 @@ struct TiltChains {
     std::vector<TiltRow> found;
     std::vector<int> degree, link;
     std::vector<char> visited;
-    std::vector<double> diag, upper, rhs, x;  ///< 2×2 blocks and pairs, per row
-    std::vector<std::uint8_t> active;         ///< per row: bit 0 its tilt row solved, bit 1 its shear row
+    /// Per row pair, 2×2 blocks: A's diagonal block, then D'⁻¹ once factored;
+    /// its block with the next pair; the factor's multiplier (contact_tilt.cpp).
+    std::vector<double> diag, upper, lower;
+    std::vector<double> rhs, x;           ///< per row pair: tilt, shear
+    std::vector<std::uint8_t> active;     ///< per row: bit 0 its tilt row solved, bit 1 its shear row
+    std::vector<std::uint8_t> allActive;  ///< `active` of the step's factors (all rows but dependent ones)
+    std::vector<std::uint8_t> refactor;   ///< per chain: a pass left rows out, its factors are not the step's
 };
 
 /// Picks this step's tilt rows (after prepareContactRows): the wide rows of

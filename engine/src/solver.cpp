@@ -32,6 +32,7 @@
 // contiguous arrays.
 #include <algorithm>
 #include <atomic>
+#include <bit>
 #include <chrono>
 #include <cmath>
 #include <cstddef>
@@ -88,7 +89,8 @@ constexpr int kColourCount = 24;  ///< colours tried before the overflow group
 /// movable body, so their order within it changes no result.
 constexpr int kRowGroupCount = kWideGroupsPerColour * kColourCount;  ///< the overflow group's index
 constexpr std::uint32_t kAllColours = (std::uint32_t{1} << kColourCount) - 1u;
-/// Set in a body's colour mask when it has a row in the overflow group (not a colour).
+/// Set in a body's colour mask when it has a row in the overflow group (not a
+/// colour): the tilt chains count a body's rows by its mask's bits.
 constexpr std::uint32_t kOverflowRowBit = std::uint32_t{1} << 31;
 static_assert(kColourCount < 32, "a body's colours are the bits of a 32-bit mask");
 
@@ -340,6 +342,19 @@ void storeWideImpulses(WorldState& w, int first, int last) {
     }
 }
 
+/// Whether a contact's row may be a tilt row of a column (contact_tilt.cpp):
+/// two points that both carried load when the step began, not an overlap
+/// since its bodies were created or moved (pushed apart, not resting), and
+/// no body of it with more than two rows (a box inside a pyramid, which
+/// most such rows are, has four or more; kOverflowRowBit counts as many).
+inline bool tiltCandidate(const SolverArrays& s, const Contact& ct) {
+    if (ct.manifold.pointCount != 2 || !(ct.normalImpulse[0] > 0.0f) || !(ct.normalImpulse[1] > 0.0f) ||
+        ct.overlapFromStart)
+        return false;
+    const std::uint32_t* masks = s.contactColourMasks.data();
+    return std::popcount(masks[ct.bodyA]) <= 2 && std::popcount(masks[ct.bodyB]) <= 2;
+}
+
 /// The contact rows of this step (after colourContacts). soft_step without
 /// rolling resistance solves the coloured rows four at a time: with
 /// closed-form impacts and no deep overlap each row is prepared straight
@@ -382,16 +397,13 @@ void prepareContactRows(WorldState& w, float h, bool soft) {
         w.runner.run(blocks, kPackGrain, pack);
         if (anyCold.load(std::memory_order_relaxed)) listBlocks(s, kWideCold, s.coldBlocks, s.coldBlockStart);
         listRelaxedAgainBlocks(w, x);
-        // The tilt rows' candidates (contact_tilt.cpp): lanes of two points
-        // that both carry load from the warm start (none cold), not an
-        // overlap since the bodies were created or moved (pushed apart, not
-        // resting).
+        // The tilt rows' candidates (contact_tilt.cpp), from their lanes.
         for (int k = 0; k < (w.settings.exactColumnTilt ? blocks : 0); ++k) {
             const WideContactBlock& blk = s.wideContacts[static_cast<std::size_t>(k)];
             for (int lane = 0; lane < 4; ++lane)
                 if ((blk.flags[lane] & kWidePoint1) != 0 && blk.points[0].normalImpulse[lane] > 0.0f &&
                     blk.points[1].normalImpulse[lane] > 0.0f &&
-                    !w.contacts[s.wideContactCold[static_cast<std::size_t>(k)].contact[lane]].overlapFromStart)
+                    tiltCandidate(s, w.contacts[s.wideContactCold[static_cast<std::size_t>(k)].contact[lane]]))
                     s.tilt.candidate.push_back(4 * k + lane);
         }
         buildTiltChains(w);
@@ -440,12 +452,7 @@ void prepareContactRows(WorldState& w, float h, bool soft) {
             }
             const WideLane at = wideLaneOf(s, group, inGroup);
             targets[pending++] = {contact, &s.wideContacts[at.block], &s.wideContactCold[at.block], at.lane};
-            // A tilt row's candidate: two points that both carried load when the step began.
-            if (tilt) {
-                const Contact& ct = w.contacts[contact];
-                s.tiltCandidate[static_cast<std::size_t>(k)] = ct.manifold.pointCount == 2 &&
-                                                               ct.normalImpulse[0] > 0.0f && ct.normalImpulse[1] > 0.0f;
-            }
+            if (tilt) s.tiltCandidate[static_cast<std::size_t>(k)] = tiltCandidate(s, w.contacts[contact]);
             if (pending == 4) {
                 cold |= prepareWideContactLanes(w, x, targets, pending);
                 pending = 0;
@@ -854,6 +861,9 @@ void forEachStepArray(WorldState& w, F&& f) {
     f(s.tilt.rhs);
     f(s.tilt.x);
     f(s.tilt.active);
+    f(s.tilt.lower);
+    f(s.tilt.allActive);
+    f(s.tilt.refactor);
     f(w.activeContacts);
     f(w.gatherScratch);
     f(w.gatherMarks);
