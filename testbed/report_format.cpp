@@ -57,6 +57,7 @@ std::string reportToJson(const RunReport& r) {
                          {"substeps", s.substeps},
                          {"contact_hertz", s.contactHertz},
                          {"contact_damping_ratio", s.contactDampingRatio},
+                         {"exact_column_tilt", s.exactColumnTilt},
                          {"sleep", s.enableSleep}};
     }
     j["notes"] = r.notes;

@@ -16,6 +16,8 @@ const char* settingsOptionsHelp() {
            "  --exact-joint-mass-ratio R  joint trees whose heaviest body is at least R times the lightest\n"
            "                            (or whose load would stretch their soft joints, docs/joints.md)\n"
            "                            are solved exactly (1: every tree; 1e30: none)\n"
+           "  --exact-column-tilt on|off  solve the tilt and shear of columns' two-point contacts exactly\n"
+           "                            (default on; docs/validation.md, \"Columns solved as one\")\n"
            "  --contact-hertz F         contact stiffness (Hz, soft_step; capped at a quarter of the substep rate)\n"
            "  --contact-damping-ratio Z contact damping ratio (soft_step); an overlap is pushed out at about\n"
            "                            2π·F/(2·Z) per second, so raising both keeps that push and stiffens the rest\n"
@@ -32,6 +34,7 @@ void SettingsOverrides::applyTo(i2d::WorldSettings& s) const {
     if (sleep) s.enableSleep = *sleep;
     if (manifoldReuse) s.manifoldReuseDistance = *manifoldReuse;
     if (exactJointMassRatio) s.exactJointMassRatio = *exactJointMassRatio;
+    if (exactColumnTilt) s.exactColumnTilt = *exactColumnTilt;
     if (contactHertz) s.contactHertz = *contactHertz;
     if (contactDampingRatio) s.contactDampingRatio = *contactDampingRatio;
 }
@@ -63,6 +66,8 @@ bool parseSettingsOption(ArgReader& r, SettingsOverrides& o) {
         o.manifoldReuse = static_cast<float>(r.number(0.0, 10.0));
     } else if (r.is("--exact-joint-mass-ratio")) {
         o.exactJointMassRatio = static_cast<float>(r.number(1.0, 1.0e30));
+    } else if (r.is("--exact-column-tilt")) {
+        o.exactColumnTilt = r.onOff();
     } else if (r.is("--contact-hertz")) {
         o.contactHertz = static_cast<float>(r.number(0.0, 1.0e6));
     } else if (r.is("--contact-damping-ratio")) {

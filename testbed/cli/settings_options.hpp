@@ -18,6 +18,7 @@ struct SettingsOverrides {
     std::optional<int> substeps;
     std::optional<float> manifoldReuse;
     std::optional<float> exactJointMassRatio;
+    std::optional<bool> exactColumnTilt;
     std::optional<float> contactHertz;
     std::optional<float> contactDampingRatio;
     std::optional<int> threads;
@@ -37,7 +38,8 @@ struct SettingsOverrides {
 /// Consume the reader's current option (and its value) if it is one of
 /// --velocity-iterations N, --position-iterations N, --substeps N,
 /// --correction soft_step|baumgarte|split, --impact closed_form|velocity_bias,
-/// --sleep on|off, --manifold-reuse D, --exact-joint-mass-ratio R, --contact-hertz F,
+/// --sleep on|off, --manifold-reuse D, --exact-joint-mass-ratio R,
+/// --exact-column-tilt on|off, --contact-hertz F,
 /// --contact-damping-ratio Z, --threads N.
 /// Returns false when it is none of them; throws UsageError
 /// on a missing or bad value.

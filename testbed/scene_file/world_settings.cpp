@@ -21,6 +21,7 @@ i2d::WorldSettings parseWorld(const json& j, const Loc& loc) {
            "joint_hertz",
            "joint_damping_ratio",
            "exact_joint_mass_ratio",
+           "exact_column_tilt",
            "restitution_threshold",
            "impact_threshold",
            "hit_event_threshold",

@@ -193,7 +193,8 @@ TEST(SceneLoader, GeneratorsExpand) {
 TEST(SceneLoader, WorldSettingsAndJointOptions) {
     std::string text = scene(kBall + R"(, {"name": "anchor", "type": "static", "position": [0, 3]})",
                              R"("dt": 0.01, "world": {"gravity": [0, -9.81], "position_correction": "split",
-                                "impact_model": "velocity_bias", "substeps": 8, "enable_sleep": false},
+                                "impact_model": "velocity_bias", "substeps": 8, "enable_sleep": false,
+                                "exact_column_tilt": false},
                                 "camera": {"center": [1, 2], "height": 5},
                                 "joints": [{"body_a": "anchor", "body_b": "ball", "spring": {"hertz": 2, "damping_ratio": 0.1},
                                             "limit": {"min": 1, "max": 3}}], )");
@@ -204,6 +205,8 @@ TEST(SceneLoader, WorldSettingsAndJointOptions) {
     EXPECT_EQ(d.settings.impactModel, i2d::ImpactModel::velocity_bias);
     EXPECT_EQ(d.settings.substeps, 8);
     EXPECT_FALSE(d.settings.enableSleep);
+    EXPECT_FALSE(d.settings.exactColumnTilt);
+    EXPECT_TRUE(tb::parseSceneDesc(scene(kBall), "ok.json", "ok").settings.exactColumnTilt);  // the default
     ASSERT_TRUE(d.camera);
     EXPECT_FLOAT_EQ(d.camera->height, 5.0f);
     ASSERT_EQ(d.joints.size(), 1u);

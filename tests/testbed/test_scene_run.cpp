@@ -90,6 +90,19 @@ TEST(RunCommand, ContactStiffnessOptionsAreAppliedAndReported) {
     const nlohmann::json j = nlohmann::json::parse(out.str());
     EXPECT_FLOAT_EQ(j.at("settings").at("contact_hertz").get<float>(), 50.0f);
     EXPECT_FLOAT_EQ(j.at("settings").at("contact_damping_ratio").get<float>(), 16.7f);
+    EXPECT_TRUE(j.at("settings").at("exact_column_tilt").get<bool>());  // on by default
+}
+
+// `--exact-column-tilt off` reaches the world (the columns' tilt left to the
+// soft rows) and the report names it.
+TEST(RunCommand, ExactColumnTiltOptionIsAppliedAndReported) {
+    std::ostringstream out, err;
+    const int rc = tb::runRunCommand(
+        {"stack5", "--steps", "2", "--json", "--exact-column-tilt", "off", "--assets", kAssets}, out, err);
+    ASSERT_EQ(rc, 0) << err.str();
+    const nlohmann::json j = nlohmann::json::parse(out.str());
+    EXPECT_FALSE(j.at("settings").at("exact_column_tilt").get<bool>());
+    EXPECT_FALSE(tb::parseRunOptions({"x", "--exact-column-tilt", "off"}).overrides.exactColumnTilt.value_or(true));
 }
 
 // `--engine box2d` prints the same report: the same keys at every level, the
