@@ -43,10 +43,8 @@ struct TiltChains {
     /// Per row pair, 2×2 blocks: A's diagonal block, then D'⁻¹ once factored;
     /// its block with the next pair; the factor's multiplier (contact_tilt.cpp).
     std::vector<double> diag, upper, lower;
-    std::vector<double> rhs, x;           ///< per row pair: tilt, shear
-    std::vector<std::uint8_t> active;     ///< per row: bit 0 its tilt row solved, bit 1 its shear row
-    std::vector<std::uint8_t> allActive;  ///< `active` of the step's factors (all rows but dependent ones)
-    std::vector<std::uint8_t> refactor;   ///< per chain: a pass left rows out, its factors are not the step's
+    std::vector<double> rhs, x;        ///< per row pair: tilt, shear
+    std::vector<std::uint8_t> active;  ///< per row: bit 0 its tilt row solved, bit 1 its shear row (0: dependent)
 };
 
 /// Picks this step's tilt rows (after prepareContactRows): the wide rows of
@@ -55,7 +53,8 @@ void buildTiltChains(WorldState& w);
 
 /// Solves every chain's rows exactly for the velocities now (after a contact
 /// sweep of a soft_step pass, bias or relax): no manifold of a column is left
-/// tilting or shearing, unless that would make a point pull or slip.
+/// tilting or shearing, the solution scaled down where it would make a
+/// point pull or slip.
 void solveTiltChains(WorldState& w, float h);
 
 /// Takes out of the deep push's pseudo-velocities (SolverArrays::biasV,

@@ -862,8 +862,6 @@ void forEachStepArray(WorldState& w, F&& f) {
     f(s.tilt.x);
     f(s.tilt.active);
     f(s.tilt.lower);
-    f(s.tilt.allActive);
-    f(s.tilt.refactor);
     f(w.activeContacts);
     f(w.gatherScratch);
     f(w.gatherMarks);

@@ -126,7 +126,7 @@ TEST(Dominoes, AllFifteenToppleInOrderWithoutBeingKicked) {
 // 5 mm penetration slop and the soft contact's compression under the k boxes
 // above it, k·g/ω² (ω = 2π·contactHertz), as the validation cases'
 // top-height tolerance derives it: a box that fell out of the stack would
-// take a metre off the top. Measured: 1.3 mm and 2.2 cm sideways (2.7 mm
+// take a metre off the top. Measured: 3.6 mm and 4.2 cm sideways (2.7 mm
 // and 7.9 cm before the columns' tilt was solved exactly: the boxes landed
 // bent and the soft rows held the bend), the tops 4.8 cm and 30 cm below
 // resting exactly (bounds 12 cm and 38 cm).
