@@ -63,6 +63,7 @@ void buildTiltChains(WorldState& w) {
         const float nx = k.nx[lane], ny = k.ny[lane];
         r.nx = nx;
         r.ny = ny;
+        r.friction = k.friction[lane];
         const WideContactPoint& p1 = k.points[0];
         const WideContactPoint& p2 = k.points[1];
         r.cA = (p1.rAx[lane] - p2.rAx[lane]) * ny - (p1.rAy[lane] - p2.rAy[lane]) * nx;  // (r_1 − r_2) × n
@@ -179,14 +180,21 @@ void buildTiltChains(WorldState& w) {
             side = (q.a == shared && q.iA > 0.0f) ? 1 : 0;
             row = next;
         }
-        // A chain held by immovable bodies at both ends closes a loop
-        // through them: its m rows act on m − 1 turning bodies, and A is
-        // singular. Its last row stays with the sweep.
+        // A chain held by immovable bodies at both ends (a column wedged
+        // under a ceiling, a row wedged between walls) closes a loop through
+        // them: its m row pairs act on m − 1 bodies, and A is singular. It
+        // stays with the sweep. (Its last row left to the sweep instead, a
+        // row of five boxes held by friction between two walls slid down at
+        // 2 mm/s: the chain's solve, last in each pass, undid the friction
+        // the sweep had found at the row it left out.)
         const TiltRow& head = t.rows[static_cast<std::size_t>(t.chainStart.back())];
         const TiltRow& tail = t.rows.back();
         const bool heldAtStart = (startSide == 1 ? head.iA : head.iB) <= 0.0f;
         const bool heldAtEnd = (side == 0 ? tail.iA : tail.iB) <= 0.0f;
-        if (heldAtStart && heldAtEnd && static_cast<int>(t.rows.size()) - t.chainStart.back() > 1) t.rows.pop_back();
+        if (heldAtStart && heldAtEnd) {
+            t.rows.resize(static_cast<std::size_t>(t.chainStart.back()));
+            t.chainStart.pop_back();
+        }
     }
     t.chainStart.push_back(static_cast<int>(t.rows.size()));
     if (!t.rows.empty()) factorChains(t);
@@ -246,12 +254,12 @@ bool invert2(const double m[4], double out[4], double scale) {
 /// diagonal block D_i (TiltChains::diag) and its block with the next pair
 /// U_i (upper; the block below is U_iᵀ), the rows left out (`active` clear)
 /// with a unit diagonal and no coupling.
-void assemble(TiltChains& t, int first, int last) {
+void assemble(const TiltChains& t, ChainFactors& f, int first, int last) {
     for (int i = first; i < last; ++i) {
         const auto u = static_cast<std::size_t>(i);
         const TiltRow& r = t.rows[u];
-        double* d = &t.diag[4 * u];
-        double* e = &t.upper[4 * u];
+        double* d = &f.diag[4 * u];
+        double* e = &f.upper[4 * u];
         std::fill_n(d, 4, 0.0);
         std::fill_n(e, 4, 0.0);
         const SideRows gA = sideRows(r, false), gB = sideRows(r, true);
@@ -270,13 +278,13 @@ void assemble(TiltChains& t, int first, int last) {
     for (int i = first; i < last; ++i) {
         const auto u = static_cast<std::size_t>(i);
         for (int p = 0; p < 2; ++p) {
-            if (t.active[u] & (1u << p)) continue;
-            double* d = &t.diag[4 * u];
+            if (f.active[u] & (1u << p)) continue;
+            double* d = &f.diag[4 * u];
             d[2 * p] = d[2 * p + 1] = d[p] = d[2 + p] = 0.0;
             d[3 * p] = 1.0;
             for (int q = 0; q < 2; ++q) {
-                t.upper[4 * u + static_cast<std::size_t>(2 * p + q)] = 0.0;                       // row p of U_i
-                if (i > first) t.upper[4 * (u - 1) + static_cast<std::size_t>(2 * q + p)] = 0.0;  // column p of U_{i−1}
+                f.upper[4 * u + static_cast<std::size_t>(2 * p + q)] = 0.0;                       // row p of U_i
+                if (i > first) f.upper[4 * (u - 1) + static_cast<std::size_t>(2 * q + p)] = 0.0;  // column p of U_{i−1}
             }
         }
     }
@@ -286,14 +294,14 @@ void assemble(TiltChains& t, int first, int last) {
 /// (D'_i = D_i − U_{i−1}ᵀ D'_{i−1}⁻¹ U_{i−1}) and lower the multipliers
 /// L_i = U_{i−1}ᵀ D'_{i−1}⁻¹. Returns the first row pair whose pivot
 /// vanishes (it depends on the pairs before it), or −1.
-int factor(TiltChains& t, int first, int last) {
+int factor(ChainFactors& f, int first, int last) {
     for (int i = first; i < last; ++i) {
         const auto u = static_cast<std::size_t>(i);
-        double* d = &t.diag[4 * u];
-        double* m = &t.lower[4 * u];
+        double* d = &f.diag[4 * u];
+        double* m = &f.lower[4 * u];
         if (i > first) {
-            const double* dp = &t.diag[4 * (u - 1)];
-            const double* e = &t.upper[4 * (u - 1)];
+            const double* dp = &f.diag[4 * (u - 1)];
+            const double* e = &f.upper[4 * (u - 1)];
             for (int p = 0; p < 2; ++p)
                 for (int q = 0; q < 2; ++q) m[2 * p + q] = e[p] * dp[q] + e[2 + p] * dp[2 + q];
             for (int p = 0; p < 2; ++p)
@@ -308,23 +316,23 @@ int factor(TiltChains& t, int first, int last) {
 
 /// Assembles and factors the chain, leaving out the row pairs the
 /// elimination finds dependent on the ones before them.
-void assembleAndFactor(TiltChains& t, int first, int last) {
+void assembleAndFactor(const TiltChains& t, ChainFactors& f, int first, int last) {
     for (;;) {
-        assemble(t, first, last);
-        const int singular = factor(t, first, last);
+        assemble(t, f, first, last);
+        const int singular = factor(f, first, last);
         if (singular < 0) return;
-        t.active[static_cast<std::size_t>(singular)] = 0;
+        f.active[static_cast<std::size_t>(singular)] = 0;
     }
 }
 
 /// x = A⁻¹·rhs by the factors: forward b'_i = b_i − L_i b'_{i−1}, back
 /// x_i = D'⁻¹_i (b'_i − U_i x_{i+1}).
-void substitute(TiltChains& t, int first, int last) {
+void substitute(TiltChains& t, const ChainFactors& f, int first, int last) {
     for (int i = first; i < last; ++i) {
         const auto u = static_cast<std::size_t>(i);
-        double b0 = (t.active[u] & 1u) ? t.rhs[2 * u] : 0.0, b1 = (t.active[u] & 2u) ? t.rhs[2 * u + 1] : 0.0;
+        double b0 = (f.active[u] & 1u) ? t.rhs[2 * u] : 0.0, b1 = (f.active[u] & 2u) ? t.rhs[2 * u + 1] : 0.0;
         if (i > first) {
-            const double* m = &t.lower[4 * u];
+            const double* m = &f.lower[4 * u];
             b0 -= m[0] * t.x[2 * u - 2] + m[1] * t.x[2 * u - 1];
             b1 -= m[2] * t.x[2 * u - 2] + m[3] * t.x[2 * u - 1];
         }
@@ -335,11 +343,11 @@ void substitute(TiltChains& t, int first, int last) {
         const auto u = static_cast<std::size_t>(i);
         double b0 = t.x[2 * u], b1 = t.x[2 * u + 1];
         if (i + 1 < last) {
-            const double* e = &t.upper[4 * u];
+            const double* e = &f.upper[4 * u];
             b0 -= e[0] * t.x[2 * u + 2] + e[1] * t.x[2 * u + 3];
             b1 -= e[2] * t.x[2 * u + 2] + e[3] * t.x[2 * u + 3];
         }
-        const double* d = &t.diag[4 * u];
+        const double* d = &f.diag[4 * u];
         t.x[2 * u] = d[0] * b0 + d[1] * b1;
         t.x[2 * u + 1] = d[2] * b0 + d[3] * b1;
     }
@@ -350,14 +358,26 @@ void substitute(TiltChains& t, int first, int last) {
 /// rows' arms and masses do not change within it.
 void factorChains(TiltChains& t) {
     const std::size_t n = t.rows.size();
-    t.diag.resize(4 * n);
-    t.upper.resize(4 * n);
-    t.lower.resize(4 * n);
     t.rhs.resize(2 * n);
     t.x.resize(2 * n);
-    t.active.assign(n, 3);
-    for (std::size_t c = 0; c + 1 < t.chainStart.size(); ++c)
-        assembleAndFactor(t, t.chainStart[c], t.chainStart[c + 1]);
+    for (ChainFactors* f : {&t.velocity, &t.push}) {
+        f->diag.resize(4 * n);
+        f->upper.resize(4 * n);
+        f->lower.resize(4 * n);
+        f->active.resize(n);
+    }
+    // The velocities: a tilt and a shear row per manifold, the shear only
+    // where there is friction. The push: tilt rows only (the push closes a
+    // tilt; it does not hold bodies to each other along their faces, which
+    // slid a row wedged between two walls down by the push's corrections).
+    for (std::size_t i = 0; i < n; ++i) {
+        t.velocity.active[i] = t.rows[i].friction > 0.0f ? 3 : 1;
+        t.push.active[i] = 1;
+    }
+    for (std::size_t c = 0; c + 1 < t.chainStart.size(); ++c) {
+        assembleAndFactor(t, t.velocity, t.chainStart[c], t.chainStart[c + 1]);
+        assembleAndFactor(t, t.push, t.chainStart[c], t.chainStart[c + 1]);
+    }
 }
 
 /// The chains' solve on the velocities (push false: the passes' own, with
@@ -375,6 +395,7 @@ void solveChains(WorldState& w, float h, bool push) {
         return {st.v, st.w};
     };
     const float maxPush = w.settings.maxPushSpeed;
+    const ChainFactors& f = push ? t.push : t.velocity;
     BodyState* states = s.states.data();
     for (std::size_t c = 0; c + 1 < t.chainStart.size(); ++c) {
         const int first = t.chainStart[c], last = t.chainStart[c + 1];
@@ -424,7 +445,7 @@ void solveChains(WorldState& w, float h, bool push) {
         // out and solving again left tall_stack50's top two rows out in
         // every pass: its top box kept 0.06 m/s that its position did not
         // follow, and the factors were made again twice a pass.
-        substitute(t, first, last);
+        substitute(t, f, first, last);
         double scale = 1.0;
         for (int i = first; i < last && !push; ++i) {
             const auto u = static_cast<std::size_t>(i);
@@ -443,11 +464,11 @@ void solveChains(WorldState& w, float h, bool push) {
             for (int i = 2 * first; i < 2 * last; ++i) t.x[static_cast<std::size_t>(i)] *= scale;
         for (int i = first; i < last; ++i) {
             const auto u = static_cast<std::size_t>(i);
-            if (t.active[u] == 0) continue;
+            if (f.active[u] == 0) continue;
             const TiltRow& r = t.rows[u];
             WideContactBlock& k = s.wideContacts[static_cast<std::size_t>(r.block)];
-            const float tiltImpulse = (t.active[u] & 1u) ? static_cast<float>(t.x[2 * u]) : 0.0f;
-            const float shearImpulse = (t.active[u] & 2u) ? static_cast<float>(t.x[2 * u + 1]) : 0.0f;
+            const float tiltImpulse = (f.active[u] & 1u) ? static_cast<float>(t.x[2 * u]) : 0.0f;
+            const float shearImpulse = (f.active[u] & 2u) ? static_cast<float>(t.x[2 * u + 1]) : 0.0f;
             if (!push) {
                 WideContactPoint& p1 = k.points[0];
                 WideContactPoint& p2 = k.points[1];

@@ -26,6 +26,15 @@ struct TiltRow {
     float mA = 0, iA = 0;     ///< A's inverse mass and inertia (0 for a side that does not move or turn)
     float mB = 0, iB = 0;
     float nx = 0, ny = 0;  ///< the manifold's normal (from A to B)
+    float friction = 0;    ///< the manifold's friction coefficient (no shear row without)
+};
+
+/// The factors of a step's chains for one kind of solve (contact_tilt.cpp).
+struct ChainFactors {
+    /// Per row pair, 2×2 blocks: A's diagonal block, then D'⁻¹ once factored;
+    /// its block with the next pair; the factor's multiplier.
+    std::vector<double> diag, upper, lower;
+    std::vector<std::uint8_t> active;  ///< per row: bit 0 its tilt row solved, bit 1 its shear row (0: dependent)
 };
 
 /// The tilt rows of one step in chains: each chain is a path of bodies that
@@ -40,11 +49,9 @@ struct TiltChains {
     std::vector<TiltRow> found;
     std::vector<int> degree, link;
     std::vector<char> visited;
-    /// Per row pair, 2×2 blocks: A's diagonal block, then D'⁻¹ once factored;
-    /// its block with the next pair; the factor's multiplier (contact_tilt.cpp).
-    std::vector<double> diag, upper, lower;
-    std::vector<double> rhs, x;        ///< per row pair: tilt, shear
-    std::vector<std::uint8_t> active;  ///< per row: bit 0 its tilt row solved, bit 1 its shear row (0: dependent)
+    ChainFactors velocity;       ///< the passes' solve: tilt rows, and shear rows where there is friction
+    ChainFactors push;           ///< the pseudo-velocities' solve: tilt rows only
+    std::vector<double> rhs, x;  ///< per row pair: tilt, shear
 };
 
 /// Picks this step's tilt rows (after prepareContactRows): the wide rows of

@@ -856,12 +856,14 @@ void forEachStepArray(WorldState& w, F&& f) {
     f(s.tilt.degree);
     f(s.tilt.link);
     f(s.tilt.visited);
-    f(s.tilt.diag);
-    f(s.tilt.upper);
     f(s.tilt.rhs);
     f(s.tilt.x);
-    f(s.tilt.active);
-    f(s.tilt.lower);
+    for (ChainFactors* c : {&s.tilt.velocity, &s.tilt.push}) {
+        f(c->diag);
+        f(c->upper);
+        f(c->lower);
+        f(c->active);
+    }
     f(w.activeContacts);
     f(w.gatherScratch);
     f(w.gatherMarks);
