@@ -353,9 +353,9 @@ void substitute(TiltChains& t, const ChainFactors& f, int first, int last) {
     }
 }
 
-/// Each chain's factors with all its rows (but the dependent ones): what
-/// every pass solves with while no row must be left out. Once per step: the
-/// rows' arms and masses do not change within it.
+/// Each chain's factors for the passes and for the push (the row pairs the
+/// elimination finds dependent left out), once per step: the rows' arms and
+/// masses do not change within it.
 void factorChains(TiltChains& t) {
     const std::size_t n = t.rows.size();
     t.rhs.resize(2 * n);
@@ -381,9 +381,10 @@ void factorChains(TiltChains& t) {
 }
 
 /// The chains' solve on the velocities (push false: the passes' own, with
-/// their impulses and cones) or on the deep push's pseudo-velocities
-/// (push true: SolverArrays::biasV and biasW, which must neither tilt nor
-/// shear a chain's manifolds but close their tilt; no impulse is kept).
+/// their impulses and cones) or on the pseudo-velocities (push true:
+/// SolverArrays::biasV and biasW, the deep push's if any, which must not tilt
+/// a chain's manifolds but close their tilt error; tilt rows only, no
+/// impulse kept).
 void solveChains(WorldState& w, float h, bool push) {
     SolverArrays& s = w.solver;
     TiltChains& t = s.tilt;

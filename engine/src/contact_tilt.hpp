@@ -64,9 +64,10 @@ void buildTiltChains(WorldState& w);
 /// point pull or slip.
 void solveTiltChains(WorldState& w, float h);
 
-/// Takes out of the deep push's pseudo-velocities (SolverArrays::biasV,
-/// biasW) what would tilt or shear a chain's manifolds: a push that moves a
-/// column's boxes apart moves them along their normals only.
+/// Solves the chains' tilt rows on the pseudo-velocities (SolverArrays::biasV,
+/// biasW; the deep push's, or zero): they close each manifold's tilt error
+/// (the difference of its points' separations) at the soft rows' rate, and
+/// a deep push does not tilt a column apart.
 void pushTiltChains(WorldState& w, float h);
 
 }  // namespace i2d::detail
