@@ -367,9 +367,10 @@ void factorChains(TiltChains& t) {
         f->active.resize(n);
     }
     // The velocities: a tilt and a shear row per manifold, the shear only
-    // where there is friction. The push: tilt rows only (the push closes a
-    // tilt; it does not hold bodies to each other along their faces, which
-    // slid a row wedged between two walls down by the push's corrections).
+    // where there is friction (frictionless columns crept sideways and fell
+    // while shear rows and the push held their bodies along their faces).
+    // The push: tilt rows only; it closes a tilt error, and holds nothing
+    // along the faces.
     for (std::size_t i = 0; i < n; ++i) {
         t.velocity.active[i] = t.rows[i].friction > 0.0f ? 3 : 1;
         t.push.active[i] = 1;
