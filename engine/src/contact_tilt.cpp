@@ -390,7 +390,6 @@ void solveChains(WorldState& w, float h, bool push) {
     SolverArrays& s = w.solver;
     TiltChains& t = s.tilt;
     if (t.rows.empty()) return;
-    const RowContext x = makeRowContext(w, h, true);
     auto velocity = [&](int state) -> std::pair<Vec2, float> {
         if (push) return {s.biasV[static_cast<std::size_t>(state)], s.biasW[static_cast<std::size_t>(state)]};
         const BodyState& st = s.states[static_cast<std::size_t>(state)];
@@ -398,6 +397,8 @@ void solveChains(WorldState& w, float h, bool push) {
     };
     const float maxPush = w.settings.maxPushSpeed;
     const ChainFactors& f = push ? t.push : t.velocity;
+    // The soft rows' rates, which only the push's targets read.
+    const RowContext x = push ? makeRowContext(w, h, true) : RowContext{};
     BodyState* states = s.states.data();
     for (std::size_t c = 0; c + 1 < t.chainStart.size(); ++c) {
         const int first = t.chainStart[c], last = t.chainStart[c + 1];
