@@ -35,9 +35,17 @@ struct Body {
     bool awake = true;
     bool enabled = true;  ///< false: out of the simulation and the broadphase (World::disableBody)
     bool fixedRotation = false;
-    bool isBullet = false;  ///< also swept against non-bullet dynamic bodies (continuous.cpp)
-    Vec2 v{};               ///< velocity of the centre of mass (m/s)
-    float w = 0.0f;         ///< angular velocity (rad/s)
+    bool isBullet : 1 = false;  ///< also swept against non-bullet dynamic bodies (continuous.cpp)
+    /// Its forces were split around its drift in the last step it was
+    /// solved (split_kick.hpp): v is its true velocity, not the lagging
+    /// one of semi-implicit Euler.
+    bool splitKick : 1 = false;
+    /// It has been through a step's choice of kick (split_kick.hpp). Until
+    /// then its velocity (the game's) is taken as it is by whichever kick
+    /// its first step chooses.
+    bool splitChosen : 1 = false;
+    Vec2 v{};        ///< velocity of the centre of mass (m/s)
+    float w = 0.0f;  ///< angular velocity (rad/s)
     /// Farthest core point of a solid shape from the centre of mass (m); −1
     /// when the body has no solid shape. Bounds how far a turn moves its
     /// surface (continuous.cpp, a kept manifold's reuse, the speculative
@@ -81,6 +89,14 @@ struct Body {
 };
 static_assert(sizeof(Body) <= 192, "three cache lines: memory per body is held below Box2D 2.4.1's");
 
+/// The velocity of body b as the impact stage and its look read it, the
+/// lagging one of semi-implicit Euler (impact_stage.cpp): its stored velocity
+/// less a·h/2 when its forces were split around its drift (Body::splitKick,
+/// split_kick.hpp), `a` its free acceleration and `halfSubstep` h/2.
+inline Vec2 laggingVelocity(const Body& b, Vec2 a, float halfSubstep) {
+    return b.splitKick ? b.v - halfSubstep * a : b.v;
+}
+
 /// A bound on |Δθ| for a rotation dq: |Δθ| ≤ (π/2)·|sin Δθ| while the turn
 /// is under a quarter, π beyond; without atan2, for the many bodies that
 /// hardly turn (continuous collision, the broadphase's fat boxes).
@@ -105,6 +121,9 @@ struct BodyState {
 };
 static_assert(sizeof(BodyState) == 32, "BodyState is streamed by every solver pass: keep it at 32 bytes");
 
+/// BodyIntegration::splitBefore of a body no step has chosen a kick for yet.
+inline constexpr std::uint8_t kSplitNotChosen = 2;
+
 /// What the velocity integration of each substep needs besides BodyState,
 /// gathered once per step (forces, gravity and damping do not change within it).
 struct BodyIntegration {
@@ -113,7 +132,10 @@ struct BodyIntegration {
     float invInertia = 0.0f;           ///< 1/(kg·m²)
     float linearDampingFactor = 1.0f;  ///< 1/(1 + h·c), h the substep
     float angularDampingFactor = 1.0f;
-    bool movedByForces = false;  ///< dynamic; kinematic bodies keep their velocity
+    bool movedByForces = false;    ///< dynamic; kinematic bodies keep their velocity
+    std::uint8_t splitBefore = 0;  ///< as the step began: 1 split, 0 not, kSplitNotChosen (split_kick.hpp)
+    bool jointed = false;          ///< the body has a joint (split_kick.hpp)
+    bool split = false;            ///< its forces are split this step (split_kick.hpp)
 };
 static_assert(sizeof(BodyIntegration) == 28, "the size docs/architecture.md gives");
 

@@ -62,10 +62,22 @@ inline ImpactLook lookAtImpacts(const WorldState& w, const Contact& ct, bool tou
         const float halfSubstep = 0.5f * w.stepDt / static_cast<float>(solverSubsteps(w.settings));
         return an * halfSubstep + std::min(an, 0.0f) * w.stepDt;
     };
+    // The lagging velocities the impact stage reads (laggingVelocity).
+    Vec2 va = a.v, vb = b.v;
+    float wa = a.w, wb = b.w;
+    if (a.splitKick || b.splitKick) {
+        auto moves = [](const Body& x) { return x.type == BodyType::dynamic_body && x.awake; };
+        const Vec2 g = w.settings.gravity;
+        const float halfSubstep = 0.5f * w.stepDt / static_cast<float>(solverSubsteps(w.settings));
+        va = laggingVelocity(a, freeAcceleration(a, moves(a), g), halfSubstep);
+        vb = laggingVelocity(b, freeAcceleration(b, moves(b), g), halfSubstep);
+        if (a.splitKick && moves(a)) wa -= halfSubstep * a.invInertia * a.torque;
+        if (b.splitKick && moves(b)) wb -= halfSubstep * b.invInertia * b.torque;
+    }
     ImpactLook look{true, false};
     for (int j = 0; j < ct.manifold.pointCount; ++j) {
         const ManifoldPoint& mp = ct.manifold.points[j];
-        const Vec2 dv = (b.v + cross(b.w, mp.point - b.center)) - (a.v + cross(a.w, mp.point - a.center));
+        const Vec2 dv = (vb + cross(wb, mp.point - b.center)) - (va + cross(wa, mp.point - a.center));
         const float vn = dot(dv, ct.manifold.normal);
         if (vn < -closing) look.heavyOnLight = heavy;
         if (vn < -threshold) {

@@ -32,6 +32,7 @@
 #include "impact_stage.hpp"
 #include "impulse2d/impact.hpp"
 #include "integration.hpp"
+#include "split_kick.hpp"
 #include "world_state.hpp"
 
 namespace i2d::detail {
@@ -427,8 +428,12 @@ void resolveImpacts(WorldState& w, float dt) {
         StruckSide side;
         const int k = body < static_cast<int>(w.weldCluster.size()) ? w.weldCluster[static_cast<std::size_t>(body)]
                                                                     : -1;
+        // A body whose forces were split holds its true velocity: made the
+        // lagging one the timing above reads (split_kick.hpp). Struck, it
+        // has a contact row this step and keeps that meaning.
         if (k < 0) {
-            const Body& b = w.bodies[body];
+            Body& b = w.bodies[body];
+            if (moves) makeVelocityLag(b, settings.gravity, halfSubstep);
             return StruckSide{b.invMass, b.invInertia, b.center, b.v, freeAcceleration(b, moves, settings.gravity), b.w,
                               -1};
         }
@@ -438,7 +443,8 @@ void resolveImpacts(WorldState& w, float dt) {
         double mass = 0.0, cx = 0.0, cy = 0.0, px = 0.0, py = 0.0, fx = 0.0, fy = 0.0;
         bool turns = true;
         for (int i = first; i < last; ++i) {
-            const Body& b = w.bodies[w.weldClusterBodies[static_cast<std::size_t>(i)]];
+            Body& b = w.bodies[w.weldClusterBodies[static_cast<std::size_t>(i)]];
+            makeVelocityLag(b, settings.gravity, halfSubstep);
             const Vec2 a = freeAcceleration(b, true, settings.gravity);
             mass += b.mass;
             cx += double(b.mass) * b.center.x, cy += double(b.mass) * b.center.y;

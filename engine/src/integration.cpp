@@ -112,14 +112,7 @@ void integrateVelocities(SolverArrays& s, float h, float maxSpeed, std::size_t b
         }
         if (!in.movedByForces) return;
         if (payLift) payPushLift(s, i, st, in.linearAcceleration, up, h);
-        // Eq. 3.2.1-3.2.2 in velocities: v += Δt·(g·scale + F/m), ω += Δt·τ/I.
-        Vec2 v = st.v + h * in.linearAcceleration;
-        float av = st.w + h * in.invInertia * in.torque;
-        // Damping as the exact-for-linear-drag factor's Padé form: v /= 1 + h·c.
-        v *= in.linearDampingFactor;
-        av *= in.angularDampingFactor;
-        st.v = limitSpeed(v, maxSpeed);
-        st.w = av;
+        kickVelocity(st, in, h, maxSpeed);
     };
     auto four = [&](std::size_t i) {
         if (integrateFourVelocities(&s.states[i], &s.integration[i], h, maxSpeed * maxSpeed)) return;

@@ -72,6 +72,18 @@ inline void clampVelocity(BodyState& s, float maxSpeed, float maxAngularSpeed) {
     if (std::abs(s.w) > maxAngularSpeed) s.w = s.w > 0.0f ? maxAngularSpeed : -maxAngularSpeed;
 }
 
+/// One body's velocity over a (sub)step h (Eq. 3.2.1-3.2.2 in velocities):
+/// v += h·(g·scale + F/m), ω += h·τ/I, damping as the exact-for-linear-drag
+/// factor's Padé form (v /= 1 + h·c), then the speed limit.
+inline void kickVelocity(BodyState& st, const BodyIntegration& in, float h, float maxSpeed) {
+    Vec2 v = st.v + h * in.linearAcceleration;
+    float av = st.w + h * in.invInertia * in.torque;
+    v *= in.linearDampingFactor;
+    av *= in.angularDampingFactor;
+    st.v = limitSpeed(v, maxSpeed);
+    st.w = av;
+}
+
 /// Velocities of bodies [begin, end) over a (sub)step h: forces, gravity and
 /// damping (Eq. 3.2.1-3.2.2), then the speed limit. `payLift`: pay the last
 /// substep's push lift first (payPushLift), up being against gravity. A body

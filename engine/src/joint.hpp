@@ -205,6 +205,9 @@ struct JointSlot {
     /// solved with them as an auxiliary row with its own compliance
     /// (joint_tree.cpp), not swept beside them.
     bool treeSpring = false;
+    /// No spring, motor or drive: its rows only hold (a rigid row, a limit),
+    /// and its bodies may have their forces split (split_kick.hpp).
+    bool onlyHolds = false;
 };
 
 /// What a joint's solve needs besides its row and its bodies' states.

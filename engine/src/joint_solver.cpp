@@ -13,6 +13,7 @@
 #include "distance_joint.hpp"
 #include "joint_solver.hpp"
 #include "joint_tree.hpp"
+#include "split_kick.hpp"
 #include "wide_revolute.hpp"
 #include "world_state.hpp"
 
@@ -179,6 +180,7 @@ void planJoints(WorldState& w, float h) {
         slot.stretched = joint.stretched;
         slot.pointLoad = holdsLoadAtPoint(joint);
         slot.spring = hasSpringRow(joint);
+        slot.onlyHolds = jointOnlyHolds(joint);
         slot.wide = wideCandidate(w, joint, bA, bB, slot) && !joint.stretched;
         if (slot.wide && joint.deepHinge) slot.wide = false, slot.deepHinge = true;
     }
@@ -197,6 +199,7 @@ void planJoints(WorldState& w, float h) {
             place = rowOfSlot[static_cast<std::size_t>(place)];
         }
     packWideRows(w, s);
+    groupJointedStates(s);
 }
 
 }  // namespace

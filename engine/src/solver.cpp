@@ -44,6 +44,7 @@
 #include "impact_stage.hpp"
 #include "integration.hpp"
 #include "joint_solver.hpp"
+#include "split_kick.hpp"
 #include "warm_start.hpp"
 #include "world_state.hpp"
 
@@ -515,6 +516,9 @@ void gatherBodyRange(WorldState& w, float h, Vec2 g, int first, int last) {
         st.dq = {};
         BodyIntegration& in = s.integration[i];
         in.movedByForces = body.type == BodyType::dynamic_body;
+        in.splitBefore = body.splitChosen ? static_cast<std::uint8_t>(body.splitKick) : kSplitNotChosen;
+        in.jointed = body.jointCount > 0;
+        in.split = false;
         in.linearAcceleration = body.gravityScale * g + body.invMass * body.force;
         in.torque = body.torque;
         in.invInertia = body.invInertia;
@@ -568,6 +572,10 @@ void solve(WorldState& w, float dt) {
     gatherBodies(w, h);
     const std::size_t n = s.stateBodies.size();
     colourContacts(w);
+    // Which bodies take their forces in two halves around the drift (they
+    // touch nothing: split_kick.hpp), from the colouring's marks; the
+    // jointed ones once the joint plan is made.
+    splitFreeBodies(w, h, soft);
     // The solve is shared with the task system's workers when it is large
     // enough to gain from it (kParallelWork); the result is the same.
     w.runner.share(s.rowCount + w.joints.count + static_cast<int>(n) >= kParallelWork);
@@ -587,6 +595,7 @@ void solve(WorldState& w, float dt) {
         beginDeepCarry(s);
     }
     prepareJoints(w, dt, h);
+    splitJointedBodies(w, h, soft);
     w.profile.prepare = msSince(prepareStart);
     // Joint stiffness capped at 1/4 of the substep rate, so jointHertz 60 holds
     // at 4 substeps as in Box2D v3 (twice its contact hertz). Swept by one
@@ -694,6 +703,14 @@ void solve(WorldState& w, float dt) {
                 positions(h);
             }
             ++s.positionUpdates;  // the joint trees and wide hinges keep what they made until then
+            // The second half kick of the bodies whose forces are split
+            // (split_kick.hpp): the integration's own pass (four or eight
+            // bodies at a time) when every moving body is split, as in a
+            // jointed scene in the air.
+            if (s.splitKickCount > 0 && s.splitKickCount == s.movingStates)
+                velocities(h, false);
+            else if (s.splitKickCount > 0)
+                kickAfterDrift(s, h, maxSpeed);
             joints(SolvePass::soft_relax);
             const SolvePass relax = i + 1 == substeps ? SolvePass::soft_relax_last : SolvePass::soft_relax;
             contacts(relax, h);

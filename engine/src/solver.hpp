@@ -67,6 +67,14 @@ struct SolverArrays {
     ScratchArray<BodyState> states;             ///< awake bodies, then one zero state for immovable sides
     ScratchArray<BodyIntegration> integration;  ///< per awake body
     std::vector<int> stateBodies;               ///< body slot of each state (awake bodies only)
+    /// How many states have their forces split around the drift this step
+    /// (BodyIntegration::split; split_kick.hpp), and the joint plan's groups
+    /// of jointed states.
+    int splitKickCount = 0;
+    int movingStates = 0;                       ///< states moved by forces (dynamic) this step
+    std::vector<int> splitKickGroup;            ///< per state: its joint group's root, −1 without joints
+    std::vector<std::uint8_t> splitKickDrives;  ///< per root: the group has a joint that does more than hold
+    std::vector<std::uint8_t> splitKickHeld;    ///< per root, this step: that, or a contact row
     std::vector<Vec2> biasV;                    ///< split mode pseudo-velocities (zero entry last)
     std::vector<float> biasW;
     ScratchArray<ContactConstraint> constraints;  ///< in colour order (solver.cpp)

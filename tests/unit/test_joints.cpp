@@ -61,24 +61,23 @@ TEST(Joints, RevolutePendulumPeriod) {
     EXPECT_NEAR(meanPeriod(t), expected, 1.0e-3f * expected);
 }
 
-// A pendulum's energy as the integrator keeps it. Semi-implicit Euler (the
-// velocity kicked by gravity, then the position moved with the new velocity)
-// keeps H̃ = E + (h/2)·m·(g · v), h the substep, to second order, exactly in
-// free fall (E falls by ½·m·g²·h² a substep there): the velocity it holds is
-// the one over the substep, half a substep of gravity behind the position. So
-// E itself rises above its start by (h/2)·m·g·v_y while the bob rises, first
-// order in h, however passive the solver: 1.3 % of the swing's energy for a 1
-// m pendulum on a hinge at one substep (1.0 % at two, 0.6 % at four), and as
-// much for a pendulum 4 or 16 times shorter at 2 or 4 times as many substeps
-// (the same ωh). What a solver that added energy would raise is H̃. Its next
-// term, (h²/12)·(m·g²·sin²θ + m·g·L·cos θ·θ̇²), which H̃ leaves out, changes
-// by at most (h²/12)·2·m·g² over a swing from 60° (θ̇² ≤ g/L there): the
-// bound, h²·g/(3L) of the swing's energy m·g·L/2, 0.09 % for a 1 m pendulum at
-// 60 Hz and 0.12 % for a 5 cm one at 240 Hz, far below the hard-cases issue's
-// 1 % (1.9 % for the 5 cm one at 60 Hz, where ωh = 0.23 and the soft joint's
-// yield takes a tenth of the energy in 10 s). Measured: H̃ never above its
-// start in any of these; the soft joint's yield only takes energy out.
-TEST(Joints, APendulumNeverRaisesTheEnergySemiImplicitEulerKeeps) {
+// A pendulum's energy as the integrator keeps it. A body that touches
+// nothing has its forces split around its drift (split_kick.hpp): the
+// substep is RATTLE, the velocity Verlet method for constrained motion, whose
+// velocity is the bob's true one. Störmer–Verlet keeps
+// H̃ = E + h²·((1/12)·V'²/I − (1/24)·V''·θ̇²) to fourth order (its modified
+// Hamiltonian; Hairer, Lubich and Wanner (2006), Geometric Numerical
+// Integration, chapter IX), here in the swing's angle θ, I = m·L² and
+// V = −m·g·L·cos θ: (1/12)·m·g²·sin²θ − (1/24)·m·g·L·cos θ·θ̇². From a release
+// at 60° (θ̇² ≤ 2·g/L) that term spans at most h²·m·g²/6, so E never rises
+// more than that above its start: 0.09 % of the swing's energy for a 1 m
+// pendulum at one substep, 1.9 % for a 5 cm one there (ωh = 0.23), 0.12 % at
+// four. Semi-implicit Euler, which gave the velocity the whole kick before
+// the drift, let E itself rise by (h/2)·m·g·v_y while the bob rose, first
+// order in h however passive the solver: 1.3 % of the swing's energy for a 1
+// m pendulum on a hinge at one substep, 0.6 % at four, and the hard-cases
+// issue's bar is 1 %. Measured now: E never above its start.
+TEST(Joints, APendulumNeverRaisesItsEnergy) {
     for (bool hinge : {true, false})
         for (float length : {0.05f, 0.2f, 1.0f})
             for (int substeps : {1, 2, 4}) {
@@ -98,24 +97,60 @@ TEST(Joints, APendulumNeverRaisesTheEnergySemiImplicitEulerKeeps) {
                 const double m = w.mass(bob), g = kG;
                 const double h = 1.0 / 60.0 / substeps;
                 auto energy = [&] { return test::totalEnergy(w, {bob}); };
-                auto kept = [&] { return energy() - 0.5 * h * m * g * w.linearVelocity(bob).y; };
                 const double swing = m * g * length * (1.0 - std::sin(below));
-                const double start = energy(), keptStart = kept();
-                double peak = start, keptPeak = keptStart;
+                const double start = energy();
+                double peak = start;
                 for (int i = 0; i < 600; ++i) {
                     w.step(1.0f / 60.0f);
                     peak = std::max(peak, energy());
-                    keptPeak = std::max(keptPeak, kept());
                 }
                 const char* kind = hinge ? "hinge" : "distance";
-                std::printf("[figure] %s pendulum %.2f m, %d substeps: E at most %+.3f %%, H~ at most %+.4f %% of the "
-                            "swing's energy\n",
-                            kind, double(length), substeps, 100.0 * (peak - start) / swing,
-                            100.0 * (keptPeak - keptStart) / swing);
-                const double bound = h * h / 12.0 * 2.0 * m * g * g;
-                EXPECT_LE(keptPeak - keptStart, bound)
-                    << kind << " pendulum " << length << " m, " << substeps << " substeps";
+                std::printf("[figure] %s pendulum %.2f m, %d substeps: E at most %+.4f %% of the swing's energy\n",
+                            kind, double(length), substeps, 100.0 * (peak - start) / swing);
+                const double bound = h * h * m * g * g / 6.0;
+                EXPECT_LE(peak - start, bound) << kind << " pendulum " << length << " m, " << substeps << " substeps";
             }
+}
+
+// A bob that swings past a floor within its contact's speculative margin,
+// without touching it: near the bottom of each swing it has a contact row
+// and takes the whole kick before the solve, away from the floor its forces
+// are split (split_kick.hpp). Its velocity must change meaning at each
+// switch: taken as it was, the switch added m·g·h·|v_y| at the entry and at
+// the exit, and a 1 m pendulum 1 cm above the floor, released at 10°, gained
+// 166 % of its swing's energy in 20 s at one substep (semi-implicit Euler
+// alone: −8 %). Bound: the hard-cases issue's 1 % of the swing's energy,
+// against which the whole kick's own swing of (h/2)·m·g·v_y (up to 1.2 % at
+// one substep, 0.6 % at four) counts only while the bob is near the floor.
+TEST(Joints, APendulumGrazingAFloorNeverGainsEnergy) {
+    for (bool hinge : {true, false})
+        for (float gap : {0.001f, 0.005f, 0.01f, 0.02f})
+            for (float degrees : {10.0f, 30.0f, 60.0f})
+                for (int substeps : {1, 4}) {
+                    WorldSettings s;
+                    s.enableSleep = false;
+                    s.substeps = substeps;
+                    World w(s);
+                    test::makeGround(w);
+                    const float length = 1.0f, radius = 0.1f, release = degrees * kPi / 180.0f;
+                    const Vec2 pivot{0.0f, length + radius + gap};
+                    const BodyId frame = w.createBody({.position = pivot});
+                    const Vec2 p{length * std::sin(release), pivot.y - length * std::cos(release)};
+                    const BodyId bob = dynamicDisc(w, p, radius);
+                    if (hinge)
+                        w.createRevoluteJoint({.bodyA = frame, .bodyB = bob, .localAnchorB = pivot - p});
+                    else
+                        w.createDistanceJoint({.bodyA = frame, .bodyB = bob, .length = length});
+                    const double swing = w.mass(bob) * kG * length * (1.0 - std::cos(release));
+                    const double start = test::totalEnergy(w, {bob});
+                    double peak = start;
+                    for (int i = 0; i < 1200; ++i) {
+                        w.step(1.0f / 60.0f);
+                        peak = std::max(peak, test::totalEnergy(w, {bob}));
+                    }
+                    EXPECT_LE(peak - start, 0.01 * swing) << (hinge ? "hinge" : "distance") << ", gap " << gap << " m, "
+                                                          << degrees << "°, " << substeps << " substeps";
+                }
 }
 
 // A disc on a motorised hinge against a constant load torque. Within its cap

@@ -188,10 +188,16 @@ TEST(WorldImpacts, FlatBoxesBounceFlatOnAWideGround) {
 // heights from 0.3 to 8 m gave a bounce count other than the number of
 // impacts faster than 1 m/s, 52 of 154 with e = 0.75). Each impact's speed
 // here comes from the height it falls from (the drop, then each measured
-// apex): u = √(2·g·h). Within 3 % of the threshold either outcome is right:
-// semi-implicit Euler's velocity lags the fall by half a substep of gravity,
-// so the body lands with its energy off by h·g/u of ½u², 4 % at 1 m/s and
-// 240 Hz substeps, 2 % in speed.
+// apex): u = √(2·g·h). The flight is exact (the ball's forces are split
+// around its drift while it touches nothing, and the impact stage moves its
+// velocity to the lagging one it times by: split_kick.hpp), so what is
+// uncertain is the apex, sampled at the steps' ends: at most g·(Δt/2)²/2 =
+// 0.35 mm below the true one, 0.35 % of the speed of a 1 m/s impact (a 5 cm
+// fall). Within 0.5 % of the threshold either outcome is right. (It was 3 %
+// while the ball flew by semi-implicit Euler, whose velocity lags the fall
+// by half a substep of gravity; and the last relax of a step then judged a
+// gap's approach by its speed a step before the impact, up to g·Δt slower:
+// contact_solver.cpp, leftApproachSpeed.)
 TEST(WorldImpacts, ABallBouncesExactlyWhenItLandsFasterThanTheThreshold) {
     const double threshold = WorldSettings{}.impactThreshold, g = 10.0;
     int judged = 0;
@@ -205,10 +211,10 @@ TEST(WorldImpacts, ABallBouncesExactlyWhenItLandsFasterThanTheThreshold) {
             for (std::size_t n = 0;; ++n) {
                 const double u = std::sqrt(2.0 * g * height);
                 const bool bounced = n < apexes.size();
-                if (u > 1.03 * threshold) {
+                if (u > 1.005 * threshold) {
                     EXPECT_TRUE(bounced) << "e " << e << ", h0 " << h0 << ": impact " << n + 1 << " at " << u << " m/s";
                     ++judged;
-                } else if (u < 0.97 * threshold) {
+                } else if (u < 0.995 * threshold) {
                     EXPECT_FALSE(bounced)
                         << "e " << e << ", h0 " << h0 << ": impact " << n + 1 << " at " << u << " m/s";
                     ++judged;
