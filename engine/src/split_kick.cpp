@@ -88,8 +88,8 @@ void splitFreeBodies(WorldState& w, float h, bool soft) {
         s.movingStates += in.movedByForces ? 1 : 0;
         if (in.jointed) continue;  // (splitJointedBodies)
         // A contact row: any colour bit or the overflow bit.
-        const bool split =
-            soft && in.movedByForces && s.contactColourMasks[static_cast<std::size_t>(s.stateBodies[i])] == 0;
+        const bool split = soft && in.movedByForces &&
+                           s.contactColourMasks[static_cast<std::size_t>(s.stateBodies[i])] == 0;
         recordChoice(w, i, split, h, soft);
         if (split) halveKick(w, static_cast<int>(i), h);
     }
@@ -148,7 +148,8 @@ void splitJointedBodies(WorldState& w, float h, bool soft) {
     for (std::size_t i = 0; i < n; ++i) {
         const BodyIntegration& in = s.integration[i];
         if (!in.jointed) continue;
-        const bool split = soft && in.movedByForces && (group[i] >= 0 ? !held[static_cast<std::size_t>(group[i])] : !hasRow(i));
+        const bool split = soft && in.movedByForces &&
+                           (group[i] >= 0 ? !held[static_cast<std::size_t>(group[i])] : !hasRow(i));
         recordChoice(w, i, split, h, soft);
         if (split) halveKick(w, static_cast<int>(i), h);
     }
