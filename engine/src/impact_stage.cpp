@@ -433,7 +433,7 @@ void resolveImpacts(WorldState& w, float dt) {
         // has a contact row this step and keeps that meaning.
         if (k < 0) {
             Body& b = w.bodies[body];
-            if (moves) makeVelocityLag(b, settings.gravity, halfSubstep);
+            if (moves) makeVelocityLag(b, settings.gravity, halfSubstep, maxSpeed, maxAngularSpeed);
             return StruckSide{b.invMass, b.invInertia, b.center, b.v, freeAcceleration(b, moves, settings.gravity), b.w,
                               -1};
         }
@@ -444,7 +444,7 @@ void resolveImpacts(WorldState& w, float dt) {
         bool turns = true;
         for (int i = first; i < last; ++i) {
             Body& b = w.bodies[w.weldClusterBodies[static_cast<std::size_t>(i)]];
-            makeVelocityLag(b, settings.gravity, halfSubstep);
+            makeVelocityLag(b, settings.gravity, halfSubstep, maxSpeed, maxAngularSpeed);
             const Vec2 a = freeAcceleration(b, true, settings.gravity);
             mass += b.mass;
             cx += double(b.mass) * b.center.x, cy += double(b.mass) * b.center.y;

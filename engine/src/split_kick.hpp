@@ -28,10 +28,10 @@
 // spring, a motor or a drive (a soft spring solved in the biased pass took
 // the load of the first half only: a slider on a 3.6 Hz spring gained 6.5 %
 // of the energy it exchanges at one substep). The choice is made each
-// step; a body whose choice changes has its velocity moved by ±a·h/2 (a its
-// free acceleration) from one meaning to the other, which keeps a free
-// body's flight exact (recordChoice, split_kick.cpp, says why a jointed
-// body's is moved too).
+// step; a body whose choice changes has its velocity moved by ±g·h/2 (half
+// a substep of its gravity) from one meaning to the other, which keeps a
+// free body's flight exact (recordChoice, split_kick.cpp, says why gravity
+// alone, and why a jointed body's is moved too).
 #pragma once
 
 #include "body.hpp"
@@ -43,10 +43,10 @@ struct SolverArrays;
 struct Joint;
 
 /// Body b's velocity made the lagging one in place (as laggingVelocity, the
-/// spin by its torque's angular acceleration the same way) before the impact
-/// stage strikes it: a struck body has a contact and takes the whole kick
-/// this step.
-void makeVelocityLag(Body& b, Vec2 gravity, float halfSubstep);
+/// spin by its torque's angular acceleration the same way, within the speed
+/// limits maxSpeed and maxSpin) before the impact stage strikes it: a struck
+/// body has a contact and takes the whole kick this step.
+void makeVelocityLag(Body& b, Vec2 gravity, float halfSubstep, float maxSpeed, float maxSpin);
 
 /// Whether a joint only holds (a rigid row, a limit): no spring, motor or
 /// drive, whose load the relax pass could not carry.
