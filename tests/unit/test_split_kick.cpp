@@ -31,8 +31,8 @@ TEST(SplitKick, AProjectileFliesItsParabolaAtEverySubstepCount) {
         s.substeps = substeps;
         World w(s);
         const Vec2 v0{3.0f, 12.0f};
-        const BodyId ball =
-            w.createBody({.type = BodyType::dynamic_body, .position = {0.0f, 1.0f}, .linearVelocity = v0});
+        const BodyId ball = w.createBody(
+            {.type = BodyType::dynamic_body, .position = {0.0f, 1.0f}, .linearVelocity = v0});
         w.createCircleShape(ball, {}, {{0.0f, 0.0f}, 0.25f});
         const double n = 60.0 * substeps;
         const double eps = 1.1920928955078125e-07;
