@@ -121,9 +121,14 @@ void splitFreeBodies(WorldState& w, float h, bool soft) {
 }
 
 void groupJointedStates(SolverArrays& s) {
-    const int n = static_cast<int>(s.stateBodies.size());
     std::vector<int>& group = s.splitKickGroup;
     std::vector<std::uint8_t>& drives = s.splitKickDrives;
+    if (s.jointSlots.empty()) {  // (a world without joints plans every step, and keeps nothing here)
+        std::vector<int>().swap(group);
+        std::vector<std::uint8_t>().swap(drives);
+        return;
+    }
+    const int n = static_cast<int>(s.stateBodies.size());
     group.assign(static_cast<std::size_t>(n), -1);
     drives.assign(static_cast<std::size_t>(n), 0);
     auto moving = [&](int i) { return i >= 0 && i < n && s.integration[static_cast<std::size_t>(i)].movedByForces; };
@@ -162,19 +167,22 @@ void splitJointedBodies(WorldState& w, float h, bool soft) {
     if (w.joints.count == 0) return;
     SolverArrays& s = w.solver;
     const std::size_t n = s.stateBodies.size();
-    const std::vector<int>& group = s.splitKickGroup;
+    // A state's group root, −1 without one (no joint of the plan's: the
+    // plan has no slot when every jointed body is asleep or disabled).
+    const bool grouped = s.splitKickGroup.size() == n;
+    auto groupOf = [&](std::size_t i) { return grouped ? s.splitKickGroup[i] : -1; };
     // A group is held (not split) when one of its bodies has a contact row
     // or a joint that does more than hold (groupJointedStates).
     std::vector<std::uint8_t>& held = s.splitKickHeld;
     held = s.splitKickDrives;
     auto hasRow = [&](std::size_t i) { return s.contactColourMasks[static_cast<std::size_t>(s.stateBodies[i])] != 0; };
     for (std::size_t i = 0; i < n; ++i)
-        if (group[i] >= 0 && hasRow(i)) held[static_cast<std::size_t>(group[i])] = 1;
+        if (groupOf(i) >= 0 && hasRow(i)) held[static_cast<std::size_t>(groupOf(i))] = 1;
     for (std::size_t i = 0; i < n; ++i) {
         const BodyIntegration& in = s.integration[i];
         if (!in.jointed) continue;
-        const bool split = soft && in.movedByForces &&
-                           (group[i] >= 0 ? !held[static_cast<std::size_t>(group[i])] : !hasRow(i));
+        const int root = groupOf(i);
+        const bool split = soft && in.movedByForces && (root >= 0 ? !held[static_cast<std::size_t>(root)] : !hasRow(i));
         recordChoice(w, i, split, h, soft);
         if (split) halveKick(w, static_cast<int>(i), h);
     }
