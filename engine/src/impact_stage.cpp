@@ -33,6 +33,7 @@
 #include "impulse2d/impact.hpp"
 #include "integration.hpp"
 #include "split_kick.hpp"
+#include "union_find.hpp"
 #include "world_state.hpp"
 
 namespace i2d::detail {
@@ -103,13 +104,7 @@ void findWeldClusters(WorldState& w) {
     // Union-find over the welded bodies' places in `bodies` (parents in the scratch).
     std::vector<int>& parent = w.weldClusterScratch;
     parent.clear();
-    auto find = [&](int i) {
-        while (parent[static_cast<std::size_t>(i)] != i) {
-            parent[static_cast<std::size_t>(i)] = parent[static_cast<std::size_t>(parent[static_cast<std::size_t>(i)])];
-            i = parent[static_cast<std::size_t>(i)];
-        }
-        return i;
-    };
+    auto find = [&](int i) { return unionFindRoot(parent, i); };
     auto place = [&](int b) {
         int& c = cluster[static_cast<std::size_t>(b)];
         if (c < 0) {

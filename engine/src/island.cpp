@@ -2,6 +2,7 @@
 // stage of a step (island.hpp says how islands are found).
 #include <algorithm>
 
+#include "union_find.hpp"
 #include "world_state.hpp"
 
 namespace i2d::detail {
@@ -118,14 +119,7 @@ void updateSleep(WorldState& w, float dt) {
     std::vector<int>& parent = w.islands.unionParent;
     parent.resize(n);
     for (std::size_t i = 0; i < n; ++i) parent[i] = static_cast<int>(i);
-    auto find = [&](int i) {
-        while (parent[static_cast<std::size_t>(i)] != i) {
-            int& p = parent[static_cast<std::size_t>(i)];
-            p = parent[static_cast<std::size_t>(p)];
-            i = p;
-        }
-        return i;
-    };
+    auto find = [&](int i) { return unionFindRoot(parent, i); };
     auto unite = [&](int a, int b) {
         a = find(a);
         b = find(b);

@@ -8,6 +8,7 @@
 
 #include "integration.hpp"
 #include "joint.hpp"
+#include "union_find.hpp"
 #include "world_state.hpp"
 
 namespace i2d::detail {
@@ -132,14 +133,7 @@ void groupJointedStates(SolverArrays& s) {
     group.assign(static_cast<std::size_t>(n), -1);
     drives.assign(static_cast<std::size_t>(n), 0);
     auto moving = [&](int i) { return i >= 0 && i < n && s.integration[static_cast<std::size_t>(i)].movedByForces; };
-    auto find = [&](int i) {
-        while (group[static_cast<std::size_t>(i)] != i) {
-            int& p = group[static_cast<std::size_t>(i)];
-            p = group[static_cast<std::size_t>(p)];
-            i = p;
-        }
-        return i;
-    };
+    auto find = [&](int i) { return unionFindRoot(group, i); };
     for (const JointSlot& slot : s.jointSlots) {
         const int sides[4] = {slot.a, slot.b, slot.c, slot.d};
         for (int side : sides) {
