@@ -39,7 +39,7 @@ void moveMeaning(Vec2& v, float& w, float by, Vec2 a, float alpha, float maxSpee
 /// and exit, 166 % of its swing in 20 s at one substep. Only gravity, which
 /// acts for good: moved by a force the game applies for a few steps (a
 /// jump), the move outlives the force as momentum no force gave (a box
-/// pushed off the ground at 59·g for two steps rose 56 % too high at one
+/// pushed off the ground at 60·g for two steps rose 56 % too high at one
 /// substep). The joints' pull is left out too; the joint rows take that part
 /// back along the directions they hold. What is left is semi-implicit
 /// Euler's own error, which it keeps in the position ((h/2)·(v − v₀) over
