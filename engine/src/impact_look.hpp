@@ -54,25 +54,23 @@ inline ImpactLook lookAtImpacts(const WorldState& w, const Contact& ct, bool tou
     // (semi-implicit Euler's lag, impact_stage.cpp) and the whole step faster
     // than the step's start; found only for such a point that approaches but
     // not yet faster than the threshold.
+    auto moves = [](const Body& x) { return x.type == BodyType::dynamic_body && x.awake; };
+    const Vec2 g = w.settings.gravity;
+    auto halfSubstep = [&] { return 0.5f * w.stepDt / static_cast<float>(solverSubsteps(w.settings)); };
     float flight = NAN;
     auto flightGain = [&] {
-        auto moves = [](const Body& x) { return x.type == BodyType::dynamic_body && x.awake; };
-        const Vec2 g = w.settings.gravity;
         const float an = dot(freeAcceleration(b, moves(b), g) - freeAcceleration(a, moves(a), g), ct.manifold.normal);
-        const float halfSubstep = 0.5f * w.stepDt / static_cast<float>(solverSubsteps(w.settings));
-        return an * halfSubstep + std::min(an, 0.0f) * w.stepDt;
+        return an * halfSubstep() + std::min(an, 0.0f) * w.stepDt;
     };
     // The lagging velocities the impact stage reads (laggingVelocity).
     Vec2 va = a.v, vb = b.v;
     float wa = a.w, wb = b.w;
     if (a.splitKick || b.splitKick) {
-        auto moves = [](const Body& x) { return x.type == BodyType::dynamic_body && x.awake; };
-        const Vec2 g = w.settings.gravity;
-        const float halfSubstep = 0.5f * w.stepDt / static_cast<float>(solverSubsteps(w.settings));
-        va = laggingVelocity(a, freeAcceleration(a, moves(a), g), halfSubstep);
-        vb = laggingVelocity(b, freeAcceleration(b, moves(b), g), halfSubstep);
-        if (a.splitKick && moves(a)) wa -= halfSubstep * a.invInertia * a.torque;
-        if (b.splitKick && moves(b)) wb -= halfSubstep * b.invInertia * b.torque;
+        const float hs = halfSubstep();
+        va = laggingVelocity(a, freeAcceleration(a, moves(a), g), hs);
+        vb = laggingVelocity(b, freeAcceleration(b, moves(b), g), hs);
+        if (a.splitKick && moves(a)) wa -= hs * a.invInertia * a.torque;
+        if (b.splitKick && moves(b)) wb -= hs * b.invInertia * b.torque;
     }
     ImpactLook look{true, false};
     for (int j = 0; j < ct.manifold.pointCount; ++j) {
