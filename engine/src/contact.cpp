@@ -256,16 +256,24 @@ inline void markDepth(const WorldState& w, Contact& ct, const Body& a, const Bod
 /// nothing to do (most contacts of a resting pile; it need not read them again).
 enum class Update : std::uint8_t { parted, apart, touching, kept };
 
-/// The contact's impulses carried over by feature id to the points of
+/// The contact's impulses (and rest loads, rest_load.hpp) carried over by feature id to the points of
 /// manifold m, from those of the points it had (ids lastIds[0…lastCount));
 /// a point with no match starts from zero.
 void carryImpulses(Contact& ct, const std::uint16_t* lastIds, int lastCount, const Manifold& m) {
+    // The same features in the same places (every reused manifold, most of a
+    // resting pile's): each point keeps what it has (a point beyond the count
+    // holds zero already: this function or the contact's creation left it so).
+    if (m.pointCount == lastCount && (lastCount < 1 || lastIds[0] == m.points[0].id) &&
+        (lastCount < 2 || (lastIds[1] == m.points[1].id && lastIds[0] != lastIds[1])))
+        return;
     float ni[2] = {0.0f, 0.0f}, ti[2] = {0.0f, 0.0f};
+    RestLoad rest[2] = {0, 0};
     for (int i = 0; i < m.pointCount; ++i) {
         for (int j = 0; j < lastCount; ++j) {
             if (lastIds[j] == m.points[i].id) {
                 ni[i] = ct.normalImpulse[j];
                 ti[i] = ct.tangentImpulse[j];
+                rest[i] = ct.restLoad[j];
                 break;
             }
         }
@@ -273,6 +281,7 @@ void carryImpulses(Contact& ct, const std::uint16_t* lastIds, int lastCount, con
     for (int i = 0; i < 2; ++i) {
         ct.normalImpulse[i] = ni[i];
         ct.tangentImpulse[i] = ti[i];
+        ct.restLoad[i] = rest[i];
     }
 }
 

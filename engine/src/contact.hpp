@@ -11,6 +11,7 @@
 #include <vector>
 
 #include "impulse2d/collision.hpp"
+#include "rest_load.hpp"
 #include "slot_array.hpp"
 
 namespace i2d::detail {
@@ -118,6 +119,9 @@ struct Contact {
     Manifold manifold{};
     float normalImpulse[2]{};  ///< accumulated at each manifold point (N·s)
     float tangentImpulse[2]{};
+    /// The normal force each point was built carrying, whose sag its soft
+    /// row does not count as overlap; 0 for none (rest_load.hpp).
+    RestLoad restLoad[2]{};
     float friction = 0.0f, restitution = 0.0f;  ///< mixed from the two shapes
     ManifoldFrame frame{};                      ///< valid when `framed`
     std::uint32_t generation = 1;
@@ -139,9 +143,12 @@ inline constexpr std::array<float, 512> kDeepDepths = [] {
 }();
 /// The separation of the manifold's deepest point (m), or 0 if none is deeper.
 inline float deepestSeparation(const Manifold& m) {
-    float deepest = 0.0f;
-    for (int i = 0; i < m.pointCount; ++i) deepest = std::min(deepest, m.points[i].separation);
-    return deepest;
+    // Both points' slots, the missing ones as zero, then the smaller: no
+    // branch on a separation's sign, which at rest lies at zero either way
+    // and was mispredicted (a 100-row pyramid standing where it was built).
+    const float first = m.pointCount > 0 ? m.points[0].separation : 0.0f;
+    const float second = m.pointCount > 1 ? m.points[1].separation : 0.0f;
+    return std::min(std::min(first, second), 0.0f);
 }
 
 /// The depth beyond which a point of `c` is a deep overlap (m): the depth it
@@ -150,7 +157,7 @@ inline float deepestSeparation(const Manifold& m) {
 inline float deepOverlapOf(const Contact& c) {
     return kDeepDepths[static_cast<std::size_t>(c.deepScale) | (c.stillDeep ? 256u : 0u)];
 }
-static_assert(sizeof(Contact) == 148, "memory per contact is held below Box2D 2.4.1's: grow it only knowingly");
+static_assert(sizeof(Contact) == 152, "memory per contact is held below Box2D 2.4.1's: grow it only knowingly");
 
 /// A contact's rolling resistance and tangent speed, and its rolling row's
 /// accumulated impulse. Kept beside the contacts, by contact slot, once any

@@ -9,6 +9,7 @@
 
 #include "contact_persistence.hpp"
 #include "contact_solver.hpp"
+#include "rest_load.hpp"
 #include "world_state.hpp"
 
 namespace i2d::detail {
@@ -112,7 +113,9 @@ inline bool prepareContactRow(const WorldState& w, const RowContext& x, int c, C
     cc.normal = ct.manifold.normal;
     cc.friction = ct.friction;
     cc.restitution = ct.restitution;
-    const Softness& sf = againstImmovable(cc) ? x.staticSoft : x.dynamicSoft;
+    const bool immovable = againstImmovable(cc);
+    const Softness& sf = immovable ? x.staticSoft : x.dynamicSoft;
+    const float restCompliance = immovable ? x.staticRestCompliance : x.dynamicRestCompliance;
     cc.biasRate = sf.biasRate;
     cc.massScale = sf.massScale;
     cc.impulseScale = sf.impulseScale;
@@ -124,6 +127,7 @@ inline bool prepareContactRow(const WorldState& w, const RowContext& x, int c, C
     cc.roundA = ct.roundA;
     cc.roundB = ct.roundB;
     cc.turnA = cc.turnB = false;  // (setTurning, from the contact's look)
+    cc.beganAtRest = false;
     for (int j = 0; j < cc.pointCount; ++j)
         cc.deepOverlap = cc.deepOverlap || ct.manifold.points[j].separation < -deepOverlapOf(ct);
     const Vec2 n = cc.normal;
@@ -134,11 +138,14 @@ inline bool prepareContactRow(const WorldState& w, const RowContext& x, int c, C
         const ManifoldPoint& mp = ct.manifold.points[j];
         ContactPointConstraint& cp = cc.points[j];
         contactArms(ct, bA, bB, j, cp.rA, cp.rB);
-        cp.adjustedSeparation = mp.separation + impactShift(w, c, bA, bB, mp.point, n) - dot(cp.rB - cp.rA, n);
         // Effective mass of the normal row: 1 / (J M⁻¹ Jᵀ) with J of Tamis and Maggiore (2015) §5.3.
         float rnA = cross(cp.rA, n), rnB = cross(cp.rB, n);
         float kn = cc.invMassA + cc.invMassB + cc.invIA * rnA * rnA + cc.invIB * rnB * rnB;
         cp.normalMass = kn > 0.0f ? 1.0f / kn : 0.0f;
+        // The overlap is measured from the sag of the load the point was built
+        // carrying (rest_load.hpp): zero without one.
+        cp.adjustedSeparation = (mp.separation + impactShift(w, c, bA, bB, mp.point, n) - dot(cp.rB - cp.rA, n)) -
+                                restSag(ct.restLoad[j], kn, restCompliance);
         float rtA = cross(cp.rA, t), rtB = cross(cp.rB, t);
         float kt = cc.invMassA + cc.invMassB + cc.invIA * rtA * rtA + cc.invIB * rtB * rtB;
         cp.tangentMass = kt > 0.0f ? 1.0f / kt : 0.0f;

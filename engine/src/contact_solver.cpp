@@ -13,6 +13,7 @@
 #include "contact_persistence.hpp"
 #include "contact_row.hpp"
 #include "contact_solver.hpp"
+#include "rest_load.hpp"
 #include "wide_contact.hpp"
 #include "world_state.hpp"
 
@@ -72,6 +73,8 @@ RowContext makeRowContext(const WorldState& w, float h, bool soft) {
     x.dynamicSoft = makeSoft(hertz, set.contactDampingRatio, h);
     // Against an immovable body only one side gives: stiffen (Solver2D doubles the hertz).
     x.staticSoft = makeSoft(2.0f * hertz, set.contactDampingRatio, h);
+    x.dynamicRestCompliance = soft ? restCompliance(hertz) : 0.0f;
+    x.staticRestCompliance = soft ? restCompliance(2.0f * hertz) : 0.0f;
     x.biasRestitution = set.impactModel == ImpactModel::velocity_bias && !soft;
     x.fullDt = soft ? h * static_cast<float>(set.substeps) : h;
     x.warm = set.enableWarmStarting ? 1.0f : 0.0f;
@@ -899,6 +902,7 @@ void applyRestitution(WorldState& w) {
 void storeContactImpulses(WorldState& w) {
     if (!w.solver.rolling.empty()) storeRollingResistance(w);
     // Row by row into its own contact: shared among the workers.
+    const float invH = static_cast<float>(solverSubsteps(w.settings)) / w.stepDt;
     auto store = [&](int b, int e) {
         for (int r = b; r < e; ++r) {
             const ContactConstraint& cc = w.solver.constraints[static_cast<std::size_t>(r)];
@@ -906,6 +910,8 @@ void storeContactImpulses(WorldState& w) {
             for (int j = 0; j < cc.pointCount; ++j) {
                 ct.normalImpulse[j] = cc.points[j].normalImpulse;
                 ct.tangentImpulse[j] = cc.points[j].tangentImpulse;
+                ct.restLoad[j] = nextRestLoad(ct.restLoad[j], ct.normalImpulse[j], invH,
+                                              cc.beganAtRest && restsTouching(ct.manifold));
             }
         }
     };

@@ -63,6 +63,10 @@ struct ContactConstraint {
     /// other body's point. Set from the contact's look (ContactLook).
     bool turnA : 1;
     bool turnB : 1;
+    /// Began touching at rest this step (kWideCold): its impulses at the
+    /// store are the load it was built carrying (rest_load.hpp). Set by
+    /// writeBackWideContacts.
+    bool beganAtRest : 1;
     std::uint8_t pointCount;
     /// K12 of two points solved together where positive (pairMatrix), else 0.
     float pairCoupling;
@@ -141,6 +145,9 @@ inline constexpr std::uint8_t kNoRow = 0xFF;
 struct RowContext {
     int zeroState;
     Softness dynamicSoft, staticSoft;
+    /// 1/ω² of those rows (soft_step; 0 otherwise): the sag of a built-in
+    /// load per unit of F·K (rest_load.hpp).
+    float dynamicRestCompliance, staticRestCompliance;
     bool biasRestitution;  ///< the classic modes' restitution target (velocity-bias impacts)
     bool soft;             ///< soft_step
     float fullDt, warm, pushRate;

@@ -125,6 +125,7 @@ void releaseLostLoads(WorldState& w, std::vector<LostLoad>& lost) {
             for (int i = 0; i < 2; ++i) {
                 ct.normalImpulse[i] *= 1.0f - r;
                 ct.tangentImpulse[i] *= 1.0f - r;
+                ct.restLoad[i] = scaledRestLoad(ct.restLoad[i], 1.0f - r);  // a built-in load goes too (rest_load.hpp)
             }
             const int other = ct.bodyA == b ? ct.bodyB : ct.bodyA;
             if (movable(w, other)) addLoss(w, lost, other, -taken * push, k + 1);

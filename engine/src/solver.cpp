@@ -327,7 +327,7 @@ WideLane wideLaneOf(const SolverArrays& s, std::size_t group, int inGroup) {
 /// and forth every step (pyramid100 on two workers, medians of 10
 /// interleaved runs: 2.47 ms per step against 2.19, the rows' preparation
 /// 0.54 against 0.45 ms; one worker the same, 2.75 against 2.70).
-void storeWideImpulses(WorldState& w, int first, int last) {
+void storeWideImpulses(WorldState& w, int first, int last, float invH) {
     SolverArrays& s = w.solver;
     for (int k = first; k < last; ++k) {
         const int inGroup = s.rowContacts[static_cast<std::size_t>(k)];
@@ -336,9 +336,11 @@ void storeWideImpulses(WorldState& w, int first, int last) {
         const WideLane at = wideLaneOf(s, group, inGroup);
         const WideContactBlock& block = s.wideContacts[at.block];
         Contact& ct = w.contacts[w.activeContacts[static_cast<std::size_t>(k)]];
+        const bool beganAtRest = (block.flags[at.lane] & kWideCold) != 0 && restsTouching(ct.manifold);
         for (int j = 0; j < ct.manifold.pointCount; ++j) {
             ct.normalImpulse[j] = block.points[j].normalImpulse[at.lane];
             ct.tangentImpulse[j] = block.points[j].tangentImpulse[at.lane];
+            ct.restLoad[j] = nextRestLoad(ct.restLoad[j], ct.normalImpulse[j], invH, beganAtRest);
         }
     }
 }
@@ -581,6 +583,7 @@ void solve(WorldState& w, float dt) {
     w.runner.share(s.rowCount + w.joints.count + static_cast<int>(n) >= kParallelWork);
     s.positionUpdates = 0;
     prepareContactRows(w, h, soft);
+    if (soft && !s.coldBlocks.empty()) estimateRestLoads(w, h);
     // Every other step the contact sweep runs backward. One direction alone
     // favours, in every stack, the rows it meets first (they take the larger
     // share of a change in load), the same way each step: pyramid100 leaned
@@ -719,7 +722,7 @@ void solve(WorldState& w, float dt) {
         }
         stopNonFiniteBodies(s);    // the last sweep's, before the impulses are stored
         if (s.wideContactsOnly) {  // blocks without rows store into their contacts
-            auto store = [&](int first, int last) { storeWideImpulses(w, first, last); };
+            auto store = [&](int first, int last) { storeWideImpulses(w, first, last, 1.0f / h); };
             w.runner.run(static_cast<int>(w.activeContacts.size()), kPrepareGrain, store);
         } else if (s.wideContactsActive) {  // restitution and the store read the rows
             auto back = [&](int b, int e) { writeBackWideContacts(s, b, e); };

@@ -9,6 +9,7 @@
 
 #include "contact_row.hpp"
 #include "float4.hpp"
+#include "rest_load.hpp"
 #include "solver.hpp"
 #include "wide_contact_kernel.hpp"
 #include "wide_lanes4.hpp"
@@ -104,11 +105,12 @@ bool prepareWideContactLanes(const WorldState& w, const RowContext& x, const Wid
     // `count` stay zero (their results are not written).
     alignas(16) float nx[4], ny[4], mA[4], iA[4], mB[4], iB[4], biasRate[4];
     alignas(16) float rAx[2][4], rAy[2][4], rBx[2][4], rBy[2][4], separation[2][4];
+    alignas(16) float restLoad[2][4], restCompliance[4];  // rest_load.hpp
     std::uint32_t flags[4];
     int pointCount[4];
     if (count < 4) {
-        for (float* a : {nx, ny, mA, iA, mB, iB, biasRate}) std::fill_n(a, 4, 0.0f);
-        for (auto* a : {rAx, rAy, rBx, rBy, separation}) std::fill_n(&a[0][0], 8, 0.0f);
+        for (float* a : {nx, ny, mA, iA, mB, iB, biasRate, restCompliance}) std::fill_n(a, 4, 0.0f);
+        for (auto* a : {rAx, rAy, rBx, rBy, separation, restLoad}) std::fill_n(&a[0][0], 8, 0.0f);
         std::fill_n(flags, 4, 0u);
         std::fill_n(pointCount, 4, 0);
     }
@@ -143,6 +145,7 @@ bool prepareWideContactLanes(const WorldState& w, const RowContext& x, const Wid
         k.tangentSpeed[lane] = surfaces ? surfaces[c].tangentSpeed : 0.0f;
         const bool immovable = againstImmovable(bA.invMass, bB.invMass);
         biasRate[i] = (immovable ? x.staticSoft : x.dynamicSoft).biasRate;
+        restCompliance[i] = immovable ? x.staticRestCompliance : x.dynamicRestCompliance;
         std::uint32_t f = immovable ? kWideImmovableSide : 0u;
         if (ct.roundA) f |= kWideRoundA;
         if (ct.roundB) f |= kWideRoundB;
@@ -154,7 +157,7 @@ bool prepareWideContactLanes(const WorldState& w, const RowContext& x, const Wid
             cold.maxNormalImpulse[j][lane] = 0.0f;
             if (j >= points) {
                 // No such point: zero in the lane, as in packLane.
-                rAx[j][i] = rAy[j][i] = rBx[j][i] = rBy[j][i] = separation[j][i] = 0.0f;
+                rAx[j][i] = rAy[j][i] = rBx[j][i] = rBy[j][i] = separation[j][i] = restLoad[j][i] = 0.0f;
                 p.rAx[lane] = p.rAy[lane] = p.rBx[lane] = p.rBy[lane] = 0.0f;
                 p.adjustedSeparation[lane] = p.normalMass[lane] = p.tangentMass[lane] = 0.0f;
                 p.normalImpulse[lane] = p.tangentImpulse[lane] = 0.0f;
@@ -169,6 +172,7 @@ bool prepareWideContactLanes(const WorldState& w, const RowContext& x, const Wid
             rBx[j][i] = p.rBx[lane] = rB.x, rBy[j][i] = p.rBy[lane] = rB.y;
             const float shift = shifted ? impactShift(w, c, w.bodies[ct.bodyA], w.bodies[ct.bodyB], mp.point, n) : 0.0f;
             separation[j][i] = mp.separation + shift;
+            restLoad[j][i] = restForce(ct.restLoad[j]);
             p.normalImpulse[lane] = x.warm * ct.normalImpulse[j];
             p.tangentImpulse[lane] = x.warm * ct.tangentImpulse[j];
         }
@@ -211,7 +215,9 @@ bool prepareWideContactLanes(const WorldState& w, const RowContext& x, const Wid
         const Float4 kt = mAB + invIA * rtA * rtA + invIB * rtB * rtB;
         tangentMass[j] = select(kt > zero, one / kt, zero);
         const Float4 arm = (bx - ax) * n_x + (by - ay) * n_y;  // dot(rB − rA, n)
-        adjusted[j] = load4(separation[j]) - arm;
+        // Less the sag of the load the point was built carrying (restSag).
+        const Float4 rest = load4(restLoad[j]);
+        adjusted[j] = (load4(separation[j]) - arm) - select(rest > zero, rest * kn[j] * load4(restCompliance), zero);
         const std::uint32_t bit = j == 0 ? kWidePoint0 : kWidePoint1;
         deepest = select(hasBits(flags, bit), min4(deepest, adjusted[j] + arm), deepest);
     }
@@ -335,6 +341,7 @@ void writeBackWideContacts(SolverArrays& s, int firstBlock, int lastBlock) {
                 cp.tangentImpulse = k.points[j].tangentImpulse[lane];
                 cp.maxNormalImpulse = cold.maxNormalImpulse[j][lane];
             }
+            cc.beganAtRest = (k.flags[lane] & kWideCold) != 0;
         }
     }
 }

@@ -868,15 +868,23 @@ TEST(HardCases, PyramidBuiltAtRestSinksNoFurtherThanItsRest) {
 // rows' time constants (solver.cpp, listRelaxedAgainBlocks): 0.016 and
 // 0.014 m/s. Both sweep directions (destroyed after 120 and after 121
 // steps), sleeping off; the bottom circle never leaves the ground (its
-// centre never above 0.5 m, where it would just touch it).
+// centre never above 0.5 m, where it would just touch it). The circles are
+// dropped 1 cm onto each other, so that the rows are pressed in. Built
+// touching, the rows hold the loads they were built with without sagging
+// (rest_load.hpp) and the destroyed circle's load takes its part of what
+// they hold with it (lost_load.cpp): then nothing is pressed in, and the
+// circles left must not rise faster than their rows' push out of what is:
+// 0.0000 m/s (without the part taken, 0.0024 and 0.0014 m/s).
 TEST(HardCases, CirclesLeftUnderADestroyedHeavyOneDoNotJump) {
-    for (int at : {120, 121}) {
+    for (const auto& [at, gap] :
+         {std::pair{120, 0.01f}, std::pair{121, 0.01f}, std::pair{120, 0.0f}, std::pair{121, 0.0f}}) {
         World world({.enableSleep = false});
         BodyId ground = world.createBody({});
         world.createSegmentShape(ground, {.friction = 0.6f}, Segment{{-10, 0}, {10, 0}});
         BodyId c[3];
         for (int i = 0; i < 3; ++i) {
-            c[i] = world.createBody({.type = BodyType::dynamic_body, .position = {0, 0.5f + static_cast<float>(i)}});
+            c[i] = world.createBody(
+                {.type = BodyType::dynamic_body, .position = {0, 0.5f + static_cast<float>(i) * (1.0f + gap)}});
             world.createCircleShape(c[i], {.density = i == 2 ? 100.0f : 1.0f, .friction = 0.6f}, Circle{{0, 0}, 0.5f});
         }
         for (int i = 0; i < at; ++i) world.step(1.0f / 60.0f);
@@ -889,7 +897,9 @@ TEST(HardCases, CirclesLeftUnderADestroyedHeavyOneDoNotJump) {
             if ((a == c[0] && b == c[1]) || (a == c[1] && b == c[0])) middleDepth = depth;
             if (a == ground || b == ground) groundDepth = depth;
         }
-        ASSERT_GT(middleDepth, 0.01f) << "the heavy circle presses the rows in";
+        if (gap > 0.0f) {
+            ASSERT_GT(middleDepth, 0.01f) << "the heavy circle presses the rows in";
+        }
         const WorldSettings& set = world.settings();
         const float h = 1.0f / 60.0f / static_cast<float>(set.substeps);
         auto biasRate = [&](float hertz) {
@@ -905,8 +915,9 @@ TEST(HardCases, CirclesLeftUnderADestroyedHeavyOneDoNotJump) {
             for (int k = 0; k < 2; ++k) rise = std::max(rise, world.linearVelocity(c[k]).y);
             bottomHighest = std::max(bottomHighest, world.position(c[0]).y);
         }
-        std::printf("[figure] destroyed after %d steps: rise %.4f m/s (push-out bound %.4f), bottom's highest %.4f m\n",
-                    at, rise, pushOut, bottomHighest);
+        std::printf("[figure] %s, destroyed after %d steps: rise %.4f m/s (push-out bound %.4f), bottom's highest "
+                    "%.4f m\n",
+                    gap > 0.0f ? "dropped" : "built touching", at, rise, pushOut, bottomHighest);
         EXPECT_LE(rise, pushOut) << "destroyed after " << at << " steps";
         EXPECT_LT(rise, 0.05f) << "destroyed after " << at << " steps (the scene's bar)";
         EXPECT_LE(bottomHighest, 0.5f) << "destroyed after " << at << " steps";

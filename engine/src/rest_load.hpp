@@ -1,0 +1,101 @@
+// The load a contact was built carrying (Contact::restLoad).
+//
+// A soft row (soft_step) is a spring of stiffness m_eff·ω²: at rest under a
+// force F its point sinks F/(m_eff·ω²) = F·K/ω² (K = 1/m_eff, the row's
+// inverse effective mass), where the push of that overlap, biasRate·C,
+// balances the row's leak, impulseScale·λ (with the soft coefficients of
+// Catto's Box2D v3: impulseScale/(massScale·biasRate) = 1/(h·ω²)). Bodies
+// built touching start with no overlap, so under their weight every row
+// sinks to that sag and overshoots it: a pyramid of 100 rows built touching
+// dropped 0.52 m at its top within 0.4 s, twice its 0.29 m sag, and rang in
+// its slowest vertical mode for seconds, out of the reach of the rows'
+// damping (docs/validation.md, "The load a stack was built with").
+//
+// A contact that begins touching at rest (kWideCold: a row settled in its
+// first step), its points within kRestTouchGap, records each point's normal force at the end of that step,
+// and from then on its row measures the overlap from that force's sag: the
+// separation the row is given is the true one less F_rest·K/ω². The row then
+// holds that load where it was built, and sinks only under load beyond it.
+// The record only ever falls: at the end of every step it is held to the
+// force the point carries then (a record above it would lift the bodies
+// apart by the difference's sag), so a load taken away takes its record
+// with it, and a row never holds its bodies further apart than touching.
+// Carried from manifold to manifold by feature id, as the impulses are.
+#pragma once
+
+#include <algorithm>
+#include <bit>
+#include <cstdint>
+#include <limits>
+
+#include "impulse2d/collision.hpp"
+#include "impulse2d/geometry.hpp"
+
+namespace i2d::detail {
+
+/// 1/ω² of a soft row of `hertz` (s²), the sag per unit of F·K; 0 for a
+/// rigid row.
+inline float restCompliance(float hertz) {
+    constexpr float kTwoPi = 6.28318530717959f;
+    const float omega = kTwoPi * hertz;
+    return hertz > 0.0f ? 1.0f / (omega * omega) : 0.0f;
+}
+
+/// How far apart a row's points may be and count as built touching (m):
+/// bodies built just apart (or closing on each other at the speed of a
+/// step of gravity) hold nothing yet, and their row must not start as if
+/// they did.
+constexpr float kRestTouchGap = 0.1f * kLinearSlop;
+
+/// Whether every point of a manifold is within kRestTouchGap of touching.
+inline bool restsTouching(const Manifold& m) {
+    for (int j = 0; j < m.pointCount; ++j)
+        if (!(m.points[j].separation <= kRestTouchGap)) return false;
+    return m.pointCount > 0;
+}
+
+/// A record is kept in 16 bits, a float's upper half (its sign, exponent and
+/// first 7 bits of mantissa): rounded down, within 0.8 % of the force, so
+/// the record is never above it. Four bytes per contact, which keeps the
+/// memory per touching contact below Box2D 2.4.1's (docs/performance.md).
+using RestLoad = std::uint16_t;
+
+/// The force of a record (N).
+inline float restForce(RestLoad record) { return std::bit_cast<float>(static_cast<std::uint32_t>(record) << 16); }
+
+/// The record of a force (N), rounded down; 0 for none, a non-positive or
+/// a non-finite force.
+inline RestLoad restRecord(float force) {
+    if (!(force > 0.0f) || !(force <= std::numeric_limits<float>::max())) return 0;
+    return static_cast<RestLoad>(std::bit_cast<std::uint32_t>(force) >> 16);
+}
+
+/// How far a point's row measures its overlap from (m): the sag of the force
+/// it was built carrying, F_rest·K/ω² (`compliance` = 1/ω², K the row's
+/// inverse effective mass). Zero without a record (K is then not read, so
+/// an unbounded K makes no NaN).
+inline float restSag(RestLoad record, float inverseMass, float compliance) {
+    return record != 0 ? restForce(record) * inverseMass * compliance : 0.0f;
+}
+
+/// A point's record at the end of a step: its normal impulse over the substep
+/// `impulse` (N·s) times 1/h, taken at the end of the contact's first step
+/// when it began at rest (`began`), else the record held to it.
+inline RestLoad nextRestLoad(RestLoad record, float impulse, float invH, bool began) {
+    const RestLoad now = restRecord(impulse * invH);
+    return began ? now : std::min(record, now);  // (the records of positive floats order as the floats)
+}
+
+/// A record scaled by `factor` (in [0, 1]): part of the load taken away
+/// (lost_load.cpp), whose sag the row must then count again.
+inline RestLoad scaledRestLoad(RestLoad record, float factor) { return restRecord(restForce(record) * factor); }
+
+struct WorldState;
+
+/// soft_step, once the rows are prepared, in a step with cold lanes
+/// (SolverArrays::coldBlocks): the load each cold row that holds a body up
+/// will carry, estimated top down, as its warm start, its overlap measured
+/// from that load's sag (rest_load.cpp).
+void estimateRestLoads(WorldState& w, float h);
+
+}  // namespace i2d::detail
