@@ -75,6 +75,8 @@ RowContext makeRowContext(const WorldState& w, float h, bool soft) {
     x.staticSoft = makeSoft(2.0f * hertz, set.contactDampingRatio, h);
     x.dynamicRestCompliance = soft ? restCompliance(hertz) : 0.0f;
     x.staticRestCompliance = soft ? restCompliance(2.0f * hertz) : 0.0f;
+    x.dynamicRestSagLimit = soft ? restSagLimit(set.maxPushSpeed, x.dynamicSoft.biasRate) : 0.0f;
+    x.staticRestSagLimit = soft ? restSagLimit(set.maxPushSpeed, x.staticSoft.biasRate) : 0.0f;
     x.biasRestitution = set.impactModel == ImpactModel::velocity_bias && !soft;
     x.fullDt = soft ? h * static_cast<float>(set.substeps) : h;
     x.warm = set.enableWarmStarting ? 1.0f : 0.0f;

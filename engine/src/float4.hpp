@@ -42,6 +42,7 @@ struct Mask4 {
 };
 inline Mask4 operator<(Float4 a, Float4 b) { return {_mm_cmplt_ps(a.v, b.v)}; }
 inline Mask4 operator>(Float4 a, Float4 b) { return {_mm_cmpgt_ps(a.v, b.v)}; }
+inline Mask4 operator<=(Float4 a, Float4 b) { return {_mm_cmple_ps(a.v, b.v)}; }
 inline Mask4 nonZero(Float4 a) { return {_mm_cmpneq_ps(a.v, _mm_setzero_ps())}; }
 /// The lanes of four flag words that have every bit of `bits`.
 inline Mask4 hasBits(const std::uint32_t* p, std::uint32_t bits) {
@@ -117,6 +118,9 @@ inline Mask4 operator<(Float4 a, Float4 b) {
 }
 inline Mask4 operator>(Float4 a, Float4 b) {
     return lanewiseMask(a, b, [](float x, float y) { return x > y; });
+}
+inline Mask4 operator<=(Float4 a, Float4 b) {
+    return lanewiseMask(a, b, [](float x, float y) { return x <= y; });
 }
 inline Mask4 nonZero(Float4 a) {
     return lanewiseMask(a, a, [](float x, float) { return x != 0.0f; });

@@ -120,18 +120,21 @@ void estimateRestLoads(WorldState& w, float h) {
             for (std::size_t i = first; i < last; ++i) {
                 const Support& sp = supports[i];
                 WideContactBlock& k = s.wideContacts[static_cast<std::size_t>(sp.block)];
-                const float compliance = (k.flags[sp.lane] & kWideImmovableSide) ? x.staticRestCompliance
-                                                                                 : x.dynamicRestCompliance;
+                const bool immovable = (k.flags[sp.lane] & kWideImmovableSide) != 0;
+                const float compliance = immovable ? x.staticRestCompliance : x.dynamicRestCompliance;
+                const float most = immovable ? x.staticRestSagLimit : x.dynamicRestSagLimit;
                 const float force = share * sp.up;
                 for (int j = 0; j < 2; ++j) {
                     if (!(k.flags[sp.lane] & (j == 0 ? kWidePoint0 : kWidePoint1))) continue;
                     WideContactPoint& p = k.points[j];
-                    if (!(p.normalMass[sp.lane] > 0.0f)) continue;
-                    // The warm start this load needs, and the row's overlap
-                    // measured from its sag (restSag).
-                    p.normalImpulse[sp.lane] = force * h;
-                    p.adjustedSeparation[sp.lane] -= force / p.normalMass[sp.lane] * compliance;
                     if (sp.lower != zero) carried[static_cast<std::size_t>(sp.lower)] += share;
+                    // The warm start this load needs, and the row's overlap
+                    // measured from its sag (restSag): neither for a load
+                    // whose sag is beyond the row's limit (restSagLimit).
+                    const float sag = force / p.normalMass[sp.lane] * compliance;
+                    if (!(p.normalMass[sp.lane] > 0.0f) || !(sag <= most)) continue;
+                    p.normalImpulse[sp.lane] = force * h;
+                    p.adjustedSeparation[sp.lane] -= sag;
                 }
             }
         }

@@ -72,11 +72,23 @@ inline RestLoad restRecord(float force) {
 
 /// How far a point's row measures its overlap from (m): the sag of the force
 /// it was built carrying, F_rest·K/ω² (`compliance` = 1/ω², K the row's
-/// inverse effective mass). Zero without a record (K is then not read, so
-/// an unbounded K makes no NaN).
-inline float restSag(RestLoad record, float inverseMass, float compliance) {
-    return record != 0 ? restForce(record) * inverseMass * compliance : 0.0f;
+/// inverse effective mass), if it is at most `most` (restSagLimit), else
+/// zero. Zero without a record (K is then not read, so an unbounded K makes
+/// no NaN).
+inline float restSag(RestLoad record, float inverseMass, float compliance, float most) {
+    if (record == 0) return 0.0f;
+    const float sag = restForce(record) * inverseMass * compliance;
+    return sag <= most ? sag : 0.0f;
 }
+
+/// The largest sag a row holds its built-in load by (m): half of what its
+/// push cap allows, maxPush/biasRate. A row whose load would sag it further
+/// holds none of it built-in, as without a record: a light box built under
+/// one 5,000 times its mass, its rows told of sags of 0.3 and 1.3 m, was
+/// pushed up 33 mm between them and squeezed out sideways (without records
+/// the heavy box sinks 0.44 m into it in 3 s, deep, and the stack stays), and
+/// held to the limit, by the rest of its sag, it was still squeezed out.
+inline float restSagLimit(float maxPush, float biasRate) { return biasRate > 0.0f ? 0.5f * maxPush / biasRate : 0.0f; }
 
 /// A point's record at the end of a step: its normal impulse over the substep
 /// `impulse` (N·s) times 1/h, taken at the end of the contact's first step

@@ -105,11 +105,11 @@ bool prepareWideContactLanes(const WorldState& w, const RowContext& x, const Wid
     // `count` stay zero (their results are not written).
     alignas(16) float nx[4], ny[4], mA[4], iA[4], mB[4], iB[4], biasRate[4];
     alignas(16) float rAx[2][4], rAy[2][4], rBx[2][4], rBy[2][4], separation[2][4];
-    alignas(16) float restLoad[2][4], restCompliance[4];  // rest_load.hpp
+    alignas(16) float restLoad[2][4], restCompliance[4], restSagMost[4];  // rest_load.hpp
     std::uint32_t flags[4];
     int pointCount[4];
     if (count < 4) {
-        for (float* a : {nx, ny, mA, iA, mB, iB, biasRate, restCompliance}) std::fill_n(a, 4, 0.0f);
+        for (float* a : {nx, ny, mA, iA, mB, iB, biasRate, restCompliance, restSagMost}) std::fill_n(a, 4, 0.0f);
         for (auto* a : {rAx, rAy, rBx, rBy, separation, restLoad}) std::fill_n(&a[0][0], 8, 0.0f);
         std::fill_n(flags, 4, 0u);
         std::fill_n(pointCount, 4, 0);
@@ -146,6 +146,7 @@ bool prepareWideContactLanes(const WorldState& w, const RowContext& x, const Wid
         const bool immovable = againstImmovable(bA.invMass, bB.invMass);
         biasRate[i] = (immovable ? x.staticSoft : x.dynamicSoft).biasRate;
         restCompliance[i] = immovable ? x.staticRestCompliance : x.dynamicRestCompliance;
+        restSagMost[i] = immovable ? x.staticRestSagLimit : x.dynamicRestSagLimit;
         std::uint32_t f = immovable ? kWideImmovableSide : 0u;
         if (ct.roundA) f |= kWideRoundA;
         if (ct.roundB) f |= kWideRoundB;
@@ -217,7 +218,8 @@ bool prepareWideContactLanes(const WorldState& w, const RowContext& x, const Wid
         const Float4 arm = (bx - ax) * n_x + (by - ay) * n_y;  // dot(rB − rA, n)
         // Less the sag of the load the point was built carrying (restSag).
         const Float4 rest = load4(restLoad[j]);
-        adjusted[j] = (load4(separation[j]) - arm) - select(rest > zero, rest * kn[j] * load4(restCompliance), zero);
+        const Float4 sag = rest * kn[j] * load4(restCompliance);
+        adjusted[j] = (load4(separation[j]) - arm) - select((rest > zero) & (sag <= load4(restSagMost)), sag, zero);
         const std::uint32_t bit = j == 0 ? kWidePoint0 : kWidePoint1;
         deepest = select(hasBits(flags, bit), min4(deepest, adjusted[j] + arm), deepest);
     }

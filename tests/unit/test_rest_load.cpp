@@ -90,7 +90,8 @@ TEST(RestLoad, ARecordRoundsDownAndOnlyFalls) {
     EXPECT_EQ(restForce(scaledRestLoad(built, 0.0f)), 0.0f);
     EXPECT_LE(restForce(scaledRestLoad(built, 0.5f)), 0.5f * restForce(built));
     // No record: no sag, and an unbounded inverse mass is not read.
-    EXPECT_EQ(restSag(0, std::numeric_limits<float>::infinity(), 1.0f), 0.0f);
+    EXPECT_EQ(restSag(0, std::numeric_limits<float>::infinity(), 1.0f, 1.0f), 0.0f);
+    EXPECT_EQ(restSag(built, 1.0f, 1.0f, 0.01f), 0.0f);  // beyond its limit: none
 }
 
 // A column of 20 unit boxes built touching sinks into its rows' sag (0.049 m
@@ -141,4 +142,33 @@ TEST(RestLoad, APyramidBuiltTouchingDoesNotSinkOrRing) {
                 largest, eMax / e0);
     EXPECT_LT(largest, 0.01f);
     EXPECT_LE(eMax, e0 * (1.0 + 1e-6));  // passive: no rise beyond the double sums' rounding
+}
+
+// A light box built under boxes far heavier (one 5,000 times its mass, or
+// nine 1,000 times): its rows' built-in loads would sag them 0.3 to 1.3 m,
+// past what their push cap lets them hold (restSagLimit), and told of those
+// sags the rows pushed the light box up 33 to 60 mm between them and
+// squeezed it out sideways, at up to 3 m/s. Such rows hold no built-in load:
+// the heavy boxes sink into the light one, deep, as they did before records,
+// and nothing is pushed out. Bounds: the light box never above where it was
+// built (1e-4 m for the float sums of its position) and never sideways (the
+// stack is symmetric: no force points sideways; 1 mm).
+TEST(RestLoad, ALightBoxBuiltUnderFarHeavierOnesIsNotSqueezedOut) {
+    for (const auto& [count, ratio] : {std::pair{2, 5000.0f}, std::pair{10, 1000.0f}}) {
+        World world({.enableSleep = false});
+        test::makeGround(world, 50.0f);
+        const BodyId base = test::makeBox(world, {0.0f, 0.5f});
+        for (int i = 1; i < count; ++i) test::makeBox(world, {0.0f, 0.5f + static_cast<float>(i)}, 0.5f, ratio);
+        float highest = 0.5f, sideways = 0.0f;
+        for (int s = 0; s < 180; ++s) {
+            world.step(kDt);
+            highest = std::max(highest, world.position(base).y);
+            sideways = std::max(sideways, std::abs(world.position(base).x));
+        }
+        std::printf("[figure] light box under %d boxes %.0f times its mass: highest %.5f m (built at 0.5), "
+                    "sideways %.5f m\n",
+                    count - 1, static_cast<double>(ratio), highest, sideways);
+        EXPECT_LE(highest, 0.5f + 1e-4f) << count << " boxes";
+        EXPECT_LE(sideways, 1e-3f) << count << " boxes";
+    }
 }
