@@ -127,14 +127,18 @@ void estimateRestLoads(WorldState& w, float h) {
                 for (int j = 0; j < 2; ++j) {
                     if (!(k.flags[sp.lane] & (j == 0 ? kWidePoint0 : kWidePoint1))) continue;
                     WideContactPoint& p = k.points[j];
-                    if (sp.lower != zero) carried[static_cast<std::size_t>(sp.lower)] += share;
                     // The warm start this load needs, and the row's overlap
                     // measured from its sag (restSag): neither for a load
-                    // whose sag is beyond the row's limit (restSagLimit).
+                    // whose sag is beyond the row's limit (restSagLimit), nor
+                    // is its share passed down: the rows below would hold up,
+                    // from the first substep, a load the row above them does
+                    // not carry yet (a light box under one 5,000 times its
+                    // mass shot up 2 cm in the first step).
                     const float sag = force / p.normalMass[sp.lane] * compliance;
                     if (!(p.normalMass[sp.lane] > 0.0f) || !(sag <= most)) continue;
                     p.normalImpulse[sp.lane] = force * h;
                     p.adjustedSeparation[sp.lane] -= sag;
+                    if (sp.lower != zero) carried[static_cast<std::size_t>(sp.lower)] += share;
                 }
             }
         }
