@@ -116,7 +116,6 @@ inline bool prepareContactRow(const WorldState& w, const RowContext& x, int c, C
     const bool immovable = againstImmovable(cc);
     const Softness& sf = immovable ? x.staticSoft : x.dynamicSoft;
     const float restCompliance = immovable ? x.staticRestCompliance : x.dynamicRestCompliance;
-    const float restSagMost = immovable ? x.staticRestSagLimit : x.dynamicRestSagLimit;
     cc.biasRate = sf.biasRate;
     cc.massScale = sf.massScale;
     cc.impulseScale = sf.impulseScale;
@@ -146,7 +145,7 @@ inline bool prepareContactRow(const WorldState& w, const RowContext& x, int c, C
         // The overlap is measured from the sag of the load the point was built
         // carrying (rest_load.hpp): zero without one.
         cp.adjustedSeparation = (mp.separation + impactShift(w, c, bA, bB, mp.point, n) - dot(cp.rB - cp.rA, n)) -
-                                restSag(ct.restLoad[j], kn, restCompliance, restSagMost);
+                                restSag(ct.restLoad[j], kn, restCompliance, deepOverlapOf(ct));
         float rtA = cross(cp.rA, t), rtB = cross(cp.rB, t);
         float kt = cc.invMassA + cc.invMassB + cc.invIA * rtA * rtA + cc.invIB * rtB * rtB;
         cp.tangentMass = kt > 0.0f ? 1.0f / kt : 0.0f;

@@ -75,8 +75,6 @@ RowContext makeRowContext(const WorldState& w, float h, bool soft) {
     x.staticSoft = makeSoft(2.0f * hertz, set.contactDampingRatio, h);
     x.dynamicRestCompliance = soft ? restCompliance(hertz) : 0.0f;
     x.staticRestCompliance = soft ? restCompliance(2.0f * hertz) : 0.0f;
-    x.dynamicRestSagLimit = soft ? restSagLimit(set.maxPushSpeed, x.dynamicSoft.biasRate) : 0.0f;
-    x.staticRestSagLimit = soft ? restSagLimit(set.maxPushSpeed, x.staticSoft.biasRate) : 0.0f;
     x.biasRestitution = set.impactModel == ImpactModel::velocity_bias && !soft;
     x.fullDt = soft ? h * static_cast<float>(set.substeps) : h;
     x.warm = set.enableWarmStarting ? 1.0f : 0.0f;
@@ -913,7 +911,8 @@ void storeContactImpulses(WorldState& w) {
                 ct.normalImpulse[j] = cc.points[j].normalImpulse;
                 ct.tangentImpulse[j] = cc.points[j].tangentImpulse;
                 ct.restLoad[j] = nextRestLoad(ct.restLoad[j], ct.normalImpulse[j], invH,
-                                              cc.beganAtRest && restsTouching(ct.manifold));
+                                              cc.beganAtRest && restsTouching(ct.manifold),
+                                              ct.manifold.points[j].separation);
             }
         }
     };

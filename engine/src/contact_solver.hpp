@@ -148,9 +148,8 @@ struct RowContext {
     /// 1/ω² of those rows (soft_step; 0 otherwise): the sag of a built-in
     /// load per unit of F·K (rest_load.hpp).
     float dynamicRestCompliance, staticRestCompliance;
-    float dynamicRestSagLimit, staticRestSagLimit;  ///< restSagLimit of each (m)
-    bool biasRestitution;                           ///< the classic modes' restitution target (velocity-bias impacts)
-    bool soft;                                      ///< soft_step
+    bool biasRestitution;  ///< the classic modes' restitution target (velocity-bias impacts)
+    bool soft;             ///< soft_step
     float fullDt, warm, pushRate;
     /// soft_step with warm starting: the normal speed up to which a contact
     /// without a warm start is at rest, one step of gravity (kWideCold);

@@ -81,15 +81,33 @@ void estimateRestLoads(WorldState& w, float h) {
         if (p.upper != q.upper) return p.upper < q.upper;
         return p.block != q.block ? p.block < q.block : p.lane < q.lane;
     });
-    std::vector<float> carried(s.states.size(), 0.0f);  // the vertical load passed down to each body (N)
+    // What rests on each body, passed down from the bodies above it: the
+    // vertical load (N) and its moment about the body's centre (N·m, the
+    // load times its arm across `up`).
+    std::vector<float> carried(s.states.size(), 0.0f), carriedMoment(s.states.size(), 0.0f);
+    const Vec2 across{up.y, -up.x};
+    struct Point {
+        Support sp;
+        int j;
+        float arm, lowerArm;  ///< across `up`, from the upper body's centre and from the lower one's (m)
+    };
+    std::vector<Point> points;
     for (std::size_t first = 0; first < supports.size();) {
         std::size_t last = first;
         const int body = supports[first].upper;
-        int points = 0;
+        points.clear();
         for (; last < supports.size() && supports[last].upper == body; ++last) {
-            const WideContactBlock& k = s.wideContacts[static_cast<std::size_t>(supports[last].block)];
-            points += (k.flags[supports[last].lane] & kWidePoint1) ? 2 : 1;
+            const Support& sp = supports[last];
+            const WideContactBlock& k = s.wideContacts[static_cast<std::size_t>(sp.block)];
+            const bool upperIsB = k.b[sp.lane] == body;
+            for (int j = 0; j < 2; ++j) {
+                if (!(k.flags[sp.lane] & (j == 0 ? kWidePoint0 : kWidePoint1))) continue;
+                const WideContactPoint& p = k.points[j];
+                const Vec2 rA{p.rAx[sp.lane], p.rAy[sp.lane]}, rB{p.rBx[sp.lane], p.rBy[sp.lane]};
+                points.push_back({sp, j, dot(upperIsB ? rB : rA, across), dot(upperIsB ? rA : rB, across)});
+            }
         }
+        first = last;
         // A body that may be held otherwise (a box sliding onto the next piece
         // of a floor, held by the last; a box of a pile being pushed apart)
         // keeps to the solver: shared over its cold rows alone its load would
@@ -97,52 +115,69 @@ void estimateRestLoads(WorldState& w, float h) {
         // over 150 pieces at one substep gained 1.2 % of its energy; boxes
         // created overlapping at one point on the ground, 2.6 %). Nor is what
         // rests on it passed on.
-        if (heldOtherwise(w, s.stateBodies[static_cast<std::size_t>(body)], up, cold)) {
-            first = last;
-            continue;
-        }
-        // Its weight (gravity and the forces on it, along −up) and what rests on it.
-        const WideContactBlock& first0 = s.wideContacts[static_cast<std::size_t>(supports[first].block)];
-        const int lane0 = supports[first].lane;
-        const float invMass = first0.b[lane0] == body ? first0.mB[lane0] : first0.mA[lane0];
+        if (heldOtherwise(w, s.stateBodies[static_cast<std::size_t>(body)], up, cold)) continue;
+        // Its weight (gravity and the forces on it, along −up) at its centre,
+        // and what rests on it.
+        const Support& first0 = points.front().sp;
+        const WideContactBlock& k0 = s.wideContacts[static_cast<std::size_t>(first0.block)];
+        const float invMass = k0.b[first0.lane] == body ? k0.mB[first0.lane] : k0.mA[first0.lane];
         const float fall = -dot(s.integration[static_cast<std::size_t>(body)].linearAcceleration, up);
         const float load = (invMass > 0.0f && fall > 0.0f ? fall / invMass : 0.0f) +
                            carried[static_cast<std::size_t>(body)];
-        if (load > 0.0f && std::isfinite(load)) {
-            // Each of the n points takes an equal share of the load, of which
-            // its row holds the part along its normal, N_p = (load/n)·u_p, and
-            // friction the rest: exact for a body resting on level supports
-            // symmetrically (a box of a pyramid or a column) or on one slope,
-            // and short of the load where supports slope towards each other
-            // (discs packed in a pile: friction holds none of it there), which
-            // the sweeps make up. The whole share goes down to the body below.
-            const float share = load / static_cast<float>(points);
-            for (std::size_t i = first; i < last; ++i) {
-                const Support& sp = supports[i];
-                WideContactBlock& k = s.wideContacts[static_cast<std::size_t>(sp.block)];
-                const bool immovable = (k.flags[sp.lane] & kWideImmovableSide) != 0;
-                const float compliance = immovable ? x.staticRestCompliance : x.dynamicRestCompliance;
-                const float most = immovable ? x.staticRestSagLimit : x.dynamicRestSagLimit;
-                const float force = share * sp.up;
-                for (int j = 0; j < 2; ++j) {
-                    if (!(k.flags[sp.lane] & (j == 0 ? kWidePoint0 : kWidePoint1))) continue;
-                    WideContactPoint& p = k.points[j];
-                    // The warm start this load needs, and the row's overlap
-                    // measured from its sag (restSag): neither for a load
-                    // whose sag is beyond the row's limit (restSagLimit), nor
-                    // is its share passed down: the rows below would hold up,
-                    // from the first substep, a load the row above them does
-                    // not carry yet (a light box under one 5,000 times its
-                    // mass shot up 2 cm in the first step).
-                    const float sag = force / p.normalMass[sp.lane] * compliance;
-                    if (!(p.normalMass[sp.lane] > 0.0f) || !(sag <= most)) continue;
-                    p.normalImpulse[sp.lane] = force * h;
-                    p.adjustedSeparation[sp.lane] -= sag;
-                    if (sp.lower != zero) carried[static_cast<std::size_t>(sp.lower)] += share;
-                }
+        const float moment = carriedMoment[static_cast<std::size_t>(body)];
+        if (!(load > 0.0f) || !std::isfinite(load) || !std::isfinite(moment)) continue;
+        // The normal forces N_i = u_i·(α + β·d_i) (u_i the normal's part along
+        // up, d_i the point's arm across it): the least-squares forces whose
+        // upward parts add up to the load and whose moment about the centre
+        // balances the moment of what rests on it, Σ N_i·u_i·d_i = M. Friction
+        // holds the rest of each point's share of the load, as it does for a
+        // body on a slope. A body those forces cannot hold (one would pull:
+        // its centre or its load beyond its supports) is left to the solver.
+        double s0 = 0.0, s1 = 0.0, s2 = 0.0;
+        for (const Point& q : points) {
+            const double u2 = static_cast<double>(q.sp.up) * q.sp.up;
+            s0 += u2;
+            s1 += u2 * q.arm;
+            s2 += u2 * q.arm * q.arm;
+        }
+        const double det = s0 * s2 - s1 * s1;
+        double alpha = 0.0, beta = 0.0;
+        if (det > 1e-9 * s0 * s2) {
+            alpha = (load * s2 - moment * s1) / det;
+            beta = (s0 * moment - s1 * load) / det;
+        } else {
+            // Points at one arm (a disc's one point, a corner): the moment is
+            // balanced only if the load's line passes through them.
+            alpha = load / s0;
+            if (std::abs(moment - load * s1 / s0) > load * kLinearSlop) continue;
+        }
+        bool pulls = false;
+        for (const Point& q : points) pulls = pulls || !(alpha + beta * q.arm >= 0.0);
+        if (pulls) continue;
+        for (const Point& q : points) {
+            const Support& sp = q.sp;
+            WideContactBlock& k = s.wideContacts[static_cast<std::size_t>(sp.block)];
+            WideContactPoint& p = k.points[q.j];
+            const bool immovable = (k.flags[sp.lane] & kWideImmovableSide) != 0;
+            const float compliance = immovable ? x.staticRestCompliance : x.dynamicRestCompliance;
+            const float most = deepOverlapOf(
+                w.contacts[s.wideContactCold[static_cast<std::size_t>(sp.block)].contact[sp.lane]]);
+            const float force = static_cast<float>(sp.up * (alpha + beta * q.arm));
+            // The warm start this load needs, and the row's overlap measured
+            // from its sag (restSag): neither for a load whose sag is beyond
+            // the contact's deep depth, nor is it passed down: the rows
+            // below would hold up, from the first substep, a load the row
+            // above them does not carry yet (a light box under one 5,000 times
+            // its mass shot up 2 cm in the first step).
+            const float sag = force / p.normalMass[sp.lane] * compliance;
+            if (!(p.normalMass[sp.lane] > 0.0f) || !(sag <= most)) continue;
+            p.normalImpulse[sp.lane] = force * h;
+            p.adjustedSeparation[sp.lane] -= sag;
+            if (sp.lower != zero) {
+                carried[static_cast<std::size_t>(sp.lower)] += force * sp.up;
+                carriedMoment[static_cast<std::size_t>(sp.lower)] += force * sp.up * q.lowerArm;
             }
         }
-        first = last;
     }
 }
 

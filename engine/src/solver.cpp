@@ -340,7 +340,8 @@ void storeWideImpulses(WorldState& w, int first, int last, float invH) {
         for (int j = 0; j < ct.manifold.pointCount; ++j) {
             ct.normalImpulse[j] = block.points[j].normalImpulse[at.lane];
             ct.tangentImpulse[j] = block.points[j].tangentImpulse[at.lane];
-            ct.restLoad[j] = nextRestLoad(ct.restLoad[j], ct.normalImpulse[j], invH, beganAtRest);
+            ct.restLoad[j] = nextRestLoad(ct.restLoad[j], ct.normalImpulse[j], invH, beganAtRest,
+                                          ct.manifold.points[j].separation);
         }
     }
 }

@@ -105,7 +105,7 @@ bool prepareWideContactLanes(const WorldState& w, const RowContext& x, const Wid
     // `count` stay zero (their results are not written).
     alignas(16) float nx[4], ny[4], mA[4], iA[4], mB[4], iB[4], biasRate[4];
     alignas(16) float rAx[2][4], rAy[2][4], rBx[2][4], rBy[2][4], separation[2][4];
-    alignas(16) float restLoad[2][4], restCompliance[4], restSagMost[4];  // rest_load.hpp
+    alignas(16) float restLoad[2][4], restCompliance[4], restSagMost[4];  // rest_load.hpp: restSag
     std::uint32_t flags[4];
     int pointCount[4];
     if (count < 4) {
@@ -146,13 +146,13 @@ bool prepareWideContactLanes(const WorldState& w, const RowContext& x, const Wid
         const bool immovable = againstImmovable(bA.invMass, bB.invMass);
         biasRate[i] = (immovable ? x.staticSoft : x.dynamicSoft).biasRate;
         restCompliance[i] = immovable ? x.staticRestCompliance : x.dynamicRestCompliance;
-        restSagMost[i] = immovable ? x.staticRestSagLimit : x.dynamicRestSagLimit;
         std::uint32_t f = immovable ? kWideImmovableSide : 0u;
         if (ct.roundA) f |= kWideRoundA;
         if (ct.roundB) f |= kWideRoundB;
         f |= moveFlags(bA.invMass, bA.invInertia, bB.invMass, bB.invInertia);
         const int points = pointCount[i] = ct.manifold.pointCount;
         const float deep = deepOverlapOf(ct);
+        restSagMost[i] = deep;
         for (int j = 0; j < 2; ++j) {
             WideContactPoint& p = k.points[j];
             cold.maxNormalImpulse[j][lane] = 0.0f;

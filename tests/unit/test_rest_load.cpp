@@ -81,12 +81,13 @@ TEST(RestLoad, ARecordRoundsDownAndOnlyFalls) {
     for (float f : {0.0f, -1.0f, std::numeric_limits<float>::infinity(), std::numeric_limits<float>::quiet_NaN()})
         EXPECT_EQ(restRecord(f), 0u) << f;
     const float h = 1.0f / 240.0f, invH = 1.0f / h;
-    const RestLoad built = nextRestLoad(0, 50.0f * h, invH, true);
+    const RestLoad built = nextRestLoad(0, 50.0f * h, invH, true, 0.0f);
     EXPECT_NEAR(restForce(built), 50.0f, 50.0f / 128.0f);
-    EXPECT_EQ(nextRestLoad(built, 80.0f * h, invH, false), built);  // more load: the record stays
-    EXPECT_LT(restForce(nextRestLoad(built, 20.0f * h, invH, false)), 20.0f + 1e-3f);
-    EXPECT_EQ(nextRestLoad(built, 0.0f, invH, false), 0u);
-    EXPECT_EQ(nextRestLoad(built, std::numeric_limits<float>::quiet_NaN(), invH, false), 0u);
+    EXPECT_EQ(nextRestLoad(built, 80.0f * h, invH, false, 0.0f), built);  // more load: the record stays
+    EXPECT_LT(restForce(nextRestLoad(built, 20.0f * h, invH, false, 0.0f)), 20.0f + 1e-3f);
+    EXPECT_EQ(nextRestLoad(built, 0.0f, invH, false, 0.0f), 0u);
+    EXPECT_EQ(nextRestLoad(built, std::numeric_limits<float>::quiet_NaN(), invH, false, 0.0f), 0u);
+    EXPECT_EQ(nextRestLoad(built, 80.0f * h, invH, false, 2.0f * kRestTouchGap), 0u);  // apart: none
     EXPECT_EQ(restForce(scaledRestLoad(built, 0.0f)), 0.0f);
     EXPECT_LE(restForce(scaledRestLoad(built, 0.5f)), 0.5f * restForce(built));
     // No record: no sag, and an unbounded inverse mass is not read.
@@ -146,19 +147,18 @@ TEST(RestLoad, APyramidBuiltTouchingDoesNotSinkOrRing) {
 
 // A light box built under boxes far heavier (one 5,000 times its mass, or
 // nine 1,000 times): its rows' built-in loads would sag them 0.16 to 1.3 m,
-// past what their push cap lets them hold at touching (restSagLimit). Told
-// of those sags, the rows pushed the light box up 33 to 60 mm between them
-// and squeezed it out sideways at up to 3 m/s; and with those rows left out
-// but the load above them still passed down to the first step's estimate of
-// the rows below, the ground's row shot it up 2 cm in that step. Now such
-// rows hold no built-in load and pass none down, and the heavy boxes sink
-// into the light one, deep, as without records. Bounds: the light box never
-// above where it was built (1e-4 m for the float sums of its position) in
-// the first half second, before the heavy box is deep in it, and for the
-// column over 3 s and never sideways (symmetric: no force points sideways;
-// 1 mm). (Under the one box 4,000 to 5,000 times its mass the light box
-// can still be squeezed out once deep, as it was without records at
-// 4,000: the deep push's doing, docs/validation.md.)
+// beyond the deep-overlap depth (5 cm), past which a row holds none of its
+// load built-in (restSag). Told of those sags, the rows pushed the light box
+// up 33 to 60 mm between them and squeezed it out sideways at up to 3 m/s;
+// and with those rows left out but the load above them still passed down to
+// the first step's estimate of the rows below, the ground's row shot it up
+// 2 cm in that step. Now the heavy boxes sink into the light one, deep, as
+// without records. Bounds: the light box never above where it was built
+// (1e-4 m for the float sums of its position) in the first half second,
+// before the heavy box is deep in it, and for the column over 3 s, and
+// never sideways (symmetric: no force points sideways; 1 mm). (Under the one
+// box 4,000 to 5,000 times its mass the light box can be squeezed out once
+// deep, as it was without records at 4,000: the deep push's doing.)
 TEST(RestLoad, ALightBoxBuiltUnderFarHeavierOnesIsNotPushedUp) {
     for (const auto& [count, ratio] : {std::pair{2, 5000.0f}, std::pair{10, 1000.0f}}) {
         World world({.enableSleep = false});
