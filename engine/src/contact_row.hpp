@@ -127,7 +127,6 @@ inline bool prepareContactRow(const WorldState& w, const RowContext& x, int c, C
     cc.roundA = ct.roundA;
     cc.roundB = ct.roundB;
     cc.turnA = cc.turnB = false;  // (setTurning, from the contact's look)
-    cc.beganAtRest = false;
     for (int j = 0; j < cc.pointCount; ++j)
         cc.deepOverlap = cc.deepOverlap || ct.manifold.points[j].separation < -deepOverlapOf(ct);
     const Vec2 n = cc.normal;

@@ -911,7 +911,6 @@ void storeContactImpulses(WorldState& w) {
                 ct.normalImpulse[j] = cc.points[j].normalImpulse;
                 ct.tangentImpulse[j] = cc.points[j].tangentImpulse;
                 ct.restLoad[j] = nextRestLoad(ct.restLoad[j], ct.normalImpulse[j], invH,
-                                              cc.beganAtRest && restsTouching(ct.manifold),
                                               ct.manifold.points[j].separation);
             }
         }

@@ -63,10 +63,6 @@ struct ContactConstraint {
     /// other body's point. Set from the contact's look (ContactLook).
     bool turnA : 1;
     bool turnB : 1;
-    /// Began touching at rest this step (kWideCold): its impulses at the
-    /// store are the load it was built carrying (rest_load.hpp). Set by
-    /// writeBackWideContacts.
-    bool beganAtRest : 1;
     std::uint8_t pointCount;
     /// K12 of two points solved together where positive (pairMatrix), else 0.
     float pairCoupling;

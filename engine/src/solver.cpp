@@ -336,12 +336,10 @@ void storeWideImpulses(WorldState& w, int first, int last, float invH) {
         const WideLane at = wideLaneOf(s, group, inGroup);
         const WideContactBlock& block = s.wideContacts[at.block];
         Contact& ct = w.contacts[w.activeContacts[static_cast<std::size_t>(k)]];
-        const bool beganAtRest = (block.flags[at.lane] & kWideCold) != 0 && restsTouching(ct.manifold);
         for (int j = 0; j < ct.manifold.pointCount; ++j) {
             ct.normalImpulse[j] = block.points[j].normalImpulse[at.lane];
             ct.tangentImpulse[j] = block.points[j].tangentImpulse[at.lane];
-            ct.restLoad[j] = nextRestLoad(ct.restLoad[j], ct.normalImpulse[j], invH, beganAtRest,
-                                          ct.manifold.points[j].separation);
+            ct.restLoad[j] = nextRestLoad(ct.restLoad[j], ct.normalImpulse[j], invH, ct.manifold.points[j].separation);
         }
     }
 }

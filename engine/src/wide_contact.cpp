@@ -343,7 +343,6 @@ void writeBackWideContacts(SolverArrays& s, int firstBlock, int lastBlock) {
                 cp.tangentImpulse = k.points[j].tangentImpulse[lane];
                 cp.maxNormalImpulse = cold.maxNormalImpulse[j][lane];
             }
-            cc.beganAtRest = (k.flags[lane] & kWideCold) != 0;
         }
     }
 }

@@ -81,13 +81,13 @@ TEST(RestLoad, ARecordRoundsDownAndOnlyFalls) {
     for (float f : {0.0f, -1.0f, std::numeric_limits<float>::infinity(), std::numeric_limits<float>::quiet_NaN()})
         EXPECT_EQ(restRecord(f), 0u) << f;
     const float h = 1.0f / 240.0f, invH = 1.0f / h;
-    const RestLoad built = nextRestLoad(0, 50.0f * h, invH, true, 0.0f);
+    const RestLoad built = restRecord(50.0f);
     EXPECT_NEAR(restForce(built), 50.0f, 50.0f / 128.0f);
-    EXPECT_EQ(nextRestLoad(built, 80.0f * h, invH, false, 0.0f), built);  // more load: the record stays
-    EXPECT_LT(restForce(nextRestLoad(built, 20.0f * h, invH, false, 0.0f)), 20.0f + 1e-3f);
-    EXPECT_EQ(nextRestLoad(built, 0.0f, invH, false, 0.0f), 0u);
-    EXPECT_EQ(nextRestLoad(built, std::numeric_limits<float>::quiet_NaN(), invH, false, 0.0f), 0u);
-    EXPECT_EQ(nextRestLoad(built, 80.0f * h, invH, false, 2.0f * kRestTouchGap), 0u);  // apart: none
+    EXPECT_EQ(nextRestLoad(built, 80.0f * h, invH, 0.0f), built);  // more load: the record stays
+    EXPECT_LT(restForce(nextRestLoad(built, 20.0f * h, invH, 0.0f)), 20.0f + 1e-3f);
+    EXPECT_EQ(nextRestLoad(built, 0.0f, invH, 0.0f), 0u);
+    EXPECT_EQ(nextRestLoad(built, std::numeric_limits<float>::quiet_NaN(), invH, 0.0f), 0u);
+    EXPECT_EQ(nextRestLoad(built, 80.0f * h, invH, 2.0f * kRestTouchGap), 0u);  // apart: none
     EXPECT_EQ(restForce(scaledRestLoad(built, 0.0f)), 0.0f);
     EXPECT_LE(restForce(scaledRestLoad(built, 0.5f)), 0.5f * restForce(built));
     // No record: no sag, and an unbounded inverse mass is not read.
