@@ -910,9 +910,8 @@ void storeContactImpulses(WorldState& w) {
             for (int j = 0; j < cc.pointCount; ++j) {
                 ct.normalImpulse[j] = cc.points[j].normalImpulse;
                 ct.tangentImpulse[j] = cc.points[j].tangentImpulse;
-                ct.restLoad[j] = nextRestLoad(ct.restLoad[j], ct.normalImpulse[j], invH,
-                                              ct.manifold.points[j].separation);
             }
+            if (ct.restLoad[0] | ct.restLoad[1]) holdRestLoads(ct, invH);
         }
     };
     w.runner.run(static_cast<int>(w.solver.constraints.size()), 256, store);

@@ -101,18 +101,40 @@ inline float restSag(RestLoad record, float inverseMass, float compliance, float
     return sag <= most ? sag : 0.0f;
 }
 
-/// A point's record at the end of a step: held to its normal impulse over
-/// the substep `impulse` (N·s) times 1/h, and none once the point's bodies
-/// are more than kRestTouchGap apart (`separation`, m, its manifold's as the
-/// step began). The load a record holds comes from the record's own push, so
-/// a load that shifted away from a point (an off-centre block on a light
-/// plank, rocking as it settled) was not seen to: the row held its side up by
-/// up to its sag, and the block climbed 1.6 cm, tilted, and its energy rose
-/// 0.8 %.
-inline RestLoad nextRestLoad(RestLoad record, float impulse, float invH, float separation) {
-    if (record == 0 || !(separation <= kRestTouchGap)) return 0;
-    return std::min(record, restRecord(impulse * invH));  // (the records of positive floats order as the floats)
+/// A contact's records at the end of a step (`records`, one per point of
+/// its manifold, `count`): held to its points' loads, their normal impulses
+/// over the substep (`impulses`, N·s) times 1/h, all by one factor, the
+/// smallest of load over record among its points, so that what they hold
+/// keeps its shape (the moment between the points as well as the load); and
+/// none once a point's bodies are more than kRestTouchGap apart
+/// (`separations`, m, its manifold's as the step began). The load a record
+/// holds comes from the record's own push, so a load that shifted away from
+/// a point (an off-centre block on a light plank, rocking as it settled)
+/// was not seen to: the row held its side up by up to its sag, and the block
+/// climbed 1.6 cm, tilted, and its energy rose 0.8 %. Held point by point, a
+/// block rocking on a plank near its end lost the record on the side it
+/// rocked off and kept it on the other, and climbed on the difference:
+/// 2.3 mm and +0.11 % of its energy for equal masses at one substep, 8 mm
+/// and +0.44 % for a block 9.5 times the plank's.
+inline void holdRestLoads(RestLoad* records, const float* impulses, const float* separations, int count, float invH) {
+    float scale = 1.0f;
+    for (int j = 0; j < count; ++j) {
+        if (records[j] == 0) continue;
+        const float held = restForce(records[j]);
+        const float load = impulses[j] * invH;
+        if (!(separations[j] <= kRestTouchGap) || !(load > 0.0f)) {
+            scale = 0.0f;
+            break;
+        }
+        if (load < held) scale = std::min(scale, load / held);
+    }
+    if (scale == 1.0f) return;
+    for (int j = 0; j < count; ++j) records[j] = scale > 0.0f ? restRecord(restForce(records[j]) * scale) : 0;
 }
+
+struct Contact;
+/// holdRestLoads for contact `ct`, its impulses just stored (rest_load.cpp).
+void holdRestLoads(Contact& ct, float invH);
 
 /// A record scaled by `factor` (in [0, 1]): part of the load taken away
 /// (lost_load.cpp), whose sag the row must then count again.

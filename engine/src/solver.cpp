@@ -339,8 +339,8 @@ void storeWideImpulses(WorldState& w, int first, int last, float invH) {
         for (int j = 0; j < ct.manifold.pointCount; ++j) {
             ct.normalImpulse[j] = block.points[j].normalImpulse[at.lane];
             ct.tangentImpulse[j] = block.points[j].tangentImpulse[at.lane];
-            ct.restLoad[j] = nextRestLoad(ct.restLoad[j], ct.normalImpulse[j], invH, ct.manifold.points[j].separation);
         }
+        if (ct.restLoad[0] | ct.restLoad[1]) holdRestLoads(ct, invH);
     }
 }
 
