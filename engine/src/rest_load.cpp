@@ -154,7 +154,7 @@ void estimateRestLoads(WorldState& w, float h) {
         // keeps to the solver: shared over its cold rows alone its load would
         // be held twice, and it would be lifted (a frictionless box sliding
         // over 150 pieces at one substep gained 1.2 % of its energy; boxes
-        // created overlapping at one point on the ground, 2.6 %). Nor is what
+        // created overlapping at one point on the ground, 2.2 %). Nor is what
         // rests on it passed on.
         if (heldOtherwise(w, s.stateBodies[static_cast<std::size_t>(body)], up, cold)) continue;
         // Its weight (gravity and the forces on it, along −up) at its centre,
