@@ -113,9 +113,10 @@ inline float restSag(RestLoad record, float inverseMass, float compliance, float
 /// was not seen to: the row held its side up by up to its sag, and the block
 /// climbed 1.6 cm, tilted, and its energy rose 0.8 %. Held point by point, a
 /// block rocking on a plank near its end lost the record on the side it
-/// rocked off and kept it on the other, and climbed on the difference:
-/// 2.3 mm and +0.11 % of its energy for equal masses at one substep, 8 mm
-/// and +0.44 % for a block 9.5 times the plank's.
+/// rocked off and kept it on the other, and climbed on the difference (8 mm
+/// and +0.44 % of its energy for a block 9.5 times the plank's at one
+/// substep). Held together it climbed less, but still (+0.37 %): such a body
+/// gets no records at all (kLeastRestShare, rest_load.cpp).
 inline void holdRestLoads(RestLoad* records, const float* impulses, const float* separations, int count, float invH) {
     float scale = 1.0f;
     for (int j = 0; j < count; ++j) {
