@@ -132,7 +132,7 @@ TEST(Columns, TouchingColumnsOfHalfAndTwiceTheSizeStand) {
 // each other: built touching, the rows would hold the loads the column was
 // built with, its lean's moment included, without sagging under them
 // (engine/src/rest_load.hpp), and the lean would have nothing to bend the
-// column with (recomputed every step, such a column sways 0.62 m in 20 s and
+// column with (recomputed every step, such a column sways 0.78 m in 20 s and
 // stands; 50 m with the gaps).
 constexpr int kLeaningColumn = 25;
 constexpr float kLeaningColumnGap = 0.005f;

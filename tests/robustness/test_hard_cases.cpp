@@ -875,12 +875,13 @@ TEST(HardCases, PyramidBuiltAtRestSinksNoFurtherThanItsRest) {
 // 0.014 m/s. Both sweep directions (destroyed after 120 and after 121
 // steps), sleeping off; the bottom circle never leaves the ground (its
 // centre never above 0.5 m, where it would just touch it). The circles are
-// dropped 1 cm onto each other, so that the rows are pressed in. Built
-// touching, the rows hold the loads they were built with without sagging
-// (rest_load.hpp) and the destroyed circle's load takes its part of what
-// they hold with it (lost_load.cpp): then nothing is pressed in, and the
-// circles left must not rise faster than their rows' push out of what is:
-// 0.0000 m/s (without the part taken, 0.0024 and 0.0014 m/s).
+// dropped 1 cm onto each other, so that the rows are pressed in, and built
+// touching: the heavy circle's row joins masses a hundredfold unlike and
+// holds no load it was built with (rest_load.cpp), so that run is pressed in
+// as the dropped one is (0.016 and 0.014 m/s). (Built touching with a record
+// in every row, it was not pressed in at all and rose at 0.0000 m/s, 0.0024
+// m/s without the destroyed load taking its part of the records:
+// AColumnWhoseLoadIsTakenAwayDoesNotJump holds that part now.)
 TEST(HardCases, CirclesLeftUnderADestroyedHeavyOneDoNotJump) {
     for (const auto& [at, gap] :
          {std::pair{120, 0.01f}, std::pair{121, 0.01f}, std::pair{120, 0.0f}, std::pair{121, 0.0f}}) {
@@ -1015,6 +1016,10 @@ TEST(HardCases, ChainLeftUnderADestroyedHeavyEndDoesNotJump) {
 // CirclesLeftUnderADestroyedHeavyOneDoNotJump; against the ground at twice
 // the hertz); a box is pushed by the rows below it, so no box rises faster
 // than their sum over the column. Now 0.0005, 0.023, 0.29 and 0.061 m/s.
+// Built touching, the columns' rows hold the loads they were built with
+// (rest_load.hpp), and a load taken away takes its part of those too
+// (lost_load.cpp): without that the weightless columns rose at 0.023 m/s
+// against a push-out bound of 0.0017.
 // (The 1 kN column's rows are pressed in so far that their bound, 1.18 m/s,
 // does not tell the two apart; the other cases do.)
 TEST(HardCases, AColumnWhoseLoadIsTakenAwayDoesNotJump) {
