@@ -130,7 +130,7 @@ TEST(RestLoad, AColumnBuiltTouchingStandsWhereItWasBuilt) {
 // touching, its top sank up to 6.1 cm into the rows' sag and past it, and
 // rang for seconds. Now its largest drop over 10 s is below 1 cm (the
 // bound: twice the column's twentieth of the sag, above, for a pyramid whose
-// bottom rows carry twice the column's load; measured 0.7 mm), and its energy
+// bottom rows carry twice the column's load; measured 0.2 mm), and its energy
 // never rises.
 TEST(RestLoad, APyramidBuiltTouchingDoesNotSinkOrRing) {
     World world({.enableSleep = false});
