@@ -213,8 +213,8 @@ void estimateRestLoads(WorldState& w, float h) {
             WideContactPoint& p = k.points[q.j];
             const bool immovable = (k.flags[sp.lane] & kWideImmovableSide) != 0;
             const float compliance = immovable ? x.staticRestCompliance : x.dynamicRestCompliance;
-            const float most = deepOverlapOf(
-                w.contacts[s.wideContactCold[static_cast<std::size_t>(sp.block)].contact[sp.lane]]);
+            Contact& contact = w.contacts[s.wideContactCold[static_cast<std::size_t>(sp.block)].contact[sp.lane]];
+            const float most = deepOverlapOf(contact);
             const float force = static_cast<float>(sp.up * (alpha + beta * q.arm));
             // The warm start this load needs, and the row's overlap measured
             // from its sag (restSag): neither for a load whose sag is beyond
@@ -229,8 +229,7 @@ void estimateRestLoads(WorldState& w, float h) {
             if (unlikeMasses(k.mA[sp.lane], k.mB[sp.lane])) continue;
             p.normalImpulse[sp.lane] = force * h;
             p.adjustedSeparation[sp.lane] -= sag;
-            w.contacts[s.wideContactCold[static_cast<std::size_t>(sp.block)].contact[sp.lane]].restLoad[q.j] =
-                restRecord(force);
+            contact.restLoad[q.j] = restRecord(force);
             if (sp.lower != zero) {
                 carried[static_cast<std::size_t>(sp.lower)] += force * sp.up;
                 carriedMoment[static_cast<std::size_t>(sp.lower)] += force * sp.up * q.lowerArm;

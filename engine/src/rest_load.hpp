@@ -101,6 +101,10 @@ inline float restSag(RestLoad record, float inverseMass, float compliance, float
     return sag <= most ? sag : 0.0f;
 }
 
+/// A record scaled by `factor` (in [0, 1]): part of the load taken away
+/// (lost_load.cpp, holdRestLoads), whose sag the row must then count again.
+inline RestLoad scaledRestLoad(RestLoad record, float factor) { return restRecord(restForce(record) * factor); }
+
 /// A contact's records at the end of a step (`records`, one per point of
 /// its manifold, `count`): held to its points' loads, their normal impulses
 /// over the substep (`impulses`, N·s) times 1/h, all by one factor, the
@@ -130,16 +134,12 @@ inline void holdRestLoads(RestLoad* records, const float* impulses, const float*
         if (load < held) scale = std::min(scale, load / held);
     }
     if (scale == 1.0f) return;
-    for (int j = 0; j < count; ++j) records[j] = scale > 0.0f ? restRecord(restForce(records[j]) * scale) : 0;
+    for (int j = 0; j < count; ++j) records[j] = scaledRestLoad(records[j], scale);
 }
 
 struct Contact;
 /// holdRestLoads for contact `ct`, its impulses just stored (rest_load.cpp).
 void holdRestLoads(Contact& ct, float invH);
-
-/// A record scaled by `factor` (in [0, 1]): part of the load taken away
-/// (lost_load.cpp), whose sag the row must then count again.
-inline RestLoad scaledRestLoad(RestLoad record, float factor) { return restRecord(restForce(record) * factor); }
 
 struct WorldState;
 
