@@ -131,6 +131,15 @@ struct SolverArrays {
     std::vector<DeepCarry> deepCarry;          ///< per deep row, in deepRows' order (contact_solver.cpp)
     std::vector<std::uint8_t> supported;       ///< per state: rests on something immovable (deep_overlap.cpp)
     std::vector<std::uint8_t> pushedOffFixed;  ///< per state: pushed out of something immovable (deep_overlap.cpp)
+    /// The shallow rows against something immovable of the bodies a deep row
+    /// pushes, and each point's guard impulse (two per row): the push may
+    /// not drive such a body into what it rests on (deep_overlap.cpp).
+    std::vector<int> pushGuards;
+    std::vector<float> pushGuardImpulses;
+    std::vector<float> pushGuardScales;  ///< per guard: pairScale of its row (fixed within a step)
+    /// Per deep row, in deepRows' order: K11, K22 and K12 of its two points
+    /// (pairMatrix; fixed within a step), for the push's pair solve.
+    std::vector<float> pushPairs;
     /// The deep pushes' impulses of this step's deep rows (in deepRows' order)
     /// and the last step's (deep_overlap.cpp), and the step that filled them in.
     std::vector<PushCarry> pushCarry, pushCarryLast;
