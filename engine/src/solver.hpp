@@ -131,9 +131,10 @@ struct SolverArrays {
     std::vector<DeepCarry> deepCarry;          ///< per deep row, in deepRows' order (contact_solver.cpp)
     std::vector<std::uint8_t> supported;       ///< per state: rests on something immovable (deep_overlap.cpp)
     std::vector<std::uint8_t> pushedOffFixed;  ///< per state: pushed out of something immovable (deep_overlap.cpp)
-    /// The shallow rows against something immovable of the bodies a deep row
-    /// pushes, and each point's guard impulse (two per row): the push may
-    /// not drive such a body into what it rests on (deep_overlap.cpp).
+    /// The shallow rows of the bodies a deep row pushes against something
+    /// immovable that holds them up, and each point's guard impulse (two per
+    /// row): the push may not drive such a body into what it rests on
+    /// (deep_overlap.cpp).
     std::vector<int> pushGuards;
     std::vector<float> pushGuardImpulses;
     std::vector<float> pushGuardScales;  ///< per guard: pairScale of its row (fixed within a step)
