@@ -577,7 +577,7 @@ TEST(OverlapPiles, CentredOnAThinSegment) {
 // (centres 0.5 m apart), friction 0.6 and 1. The push solved each manifold's
 // two points one after the other and turned every box the same way (0.061
 // rad in the first step), and the row ended leaning on itself, propped on
-// corners: 1.028 times its energy with friction 0.6, 1.018 at rest. With the
+// corners: 1.028 times its energy with friction 0.6, 1.017 at rest. With the
 // two points solved together (deep_overlap.cpp, pushPointPair): 1.006 and
 // 1.005, every box within 0.0031 rad of flat. The bounds, no
 // tolerance added.

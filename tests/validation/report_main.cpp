@@ -1729,7 +1729,7 @@ int main(int argc, char** argv) {
           "\n"
           "Twenty unit boxes created on the ground in a row, each half inside the next (centres 0.5 m apart,\n"
           "friction 0.6), parted within a second but ended leaning on each other, propped on corners: 1.028\n"
-          "times their energy at the peak and 1.018 at rest (\"A row created half overlapping on the ground\",\n"
+          "times their energy at the peak and 1.017 at rest (\"A row created half overlapping on the ground\",\n"
           "below). Followed step by step, two causes:\n"
           "\n"
           "- **The order of a manifold's two points.** The push's sweeps solved point 0 and then point 1 of\n"
