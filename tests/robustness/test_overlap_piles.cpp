@@ -607,8 +607,8 @@ TEST(OverlapPiles, ARowCreatedHalfOverlappingOnTheGroundStaysFlat) {
 // the push itself may never give (no body is pushed above the highest it has
 // been), and boxes ended propped on each other's corners: 3 of these 20
 // piles rose to 1.027 to 1.030 times their energy. The push may no longer
-// drive a body into something that does not move (deep_overlap.cpp,
-// guardAgainstImmovable): at most 1.006. Nothing thrown, by the issue's
+// drive a body into something that does not move and holds it up
+// (deep_overlap.cpp, guardAgainstImmovable): at most 1.006. Nothing thrown, by the issue's
 // bounds, no tolerance added (one of these piles is 2.2 cm deep at 2 s; the
 // parting time is held by TwentyAtOnePointOnTheGroundPartWithinTwoSeconds).
 TEST(OverlapPiles, TwentyBoxesAtOnePointOnTheGroundAreNotProppedUp) {

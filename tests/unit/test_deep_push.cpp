@@ -155,9 +155,10 @@ TEST(DeepPush, ABodyIsLiftedBackToItsHighestAtMost) {
 // was solved, and the sweeps left the turn in them, all the same way: up to
 // 0.063 rad in the first step, and on the ground such a row ended leaning on
 // itself, 2.8 % over its energy (docs/validation.md, "Rows turned by the
-// push"). Now the two points are solved together (pushPointPair). Bound: the
-// exact solve of a symmetric pair gives equal impulses up to float rounding
-// of the sums (1e-6 of 0.5 m arms); measured 0.
+// push"). Now the two points are solved together (pushPointPair). Bound:
+// with equal targets and mirrored arms the exact solve gives the two points
+// equal impulses, so any turn left is float rounding; 1e-6 rad is 60,000
+// times below the 0.063 rad the order gave (measured 0).
 TEST(DeepPush, ARowOfBoxesPushedApartIsNotTurned) {
     WorldSettings settings;
     settings.gravity = {0.0f, 0.0f};
