@@ -46,9 +46,8 @@
 // something that does not move), the lift would take the upper body above
 // the highest it has been (Body::highest; a push may give back height a body
 // had, as to the bodies of a pile that fell onto the ground, never add
-// height), and the move is no longer than the narrower body's width (not
-// along a long plank). The sideways move keeps the potential energy; the
-// pile spreads out rather than up.
+// height), and neither body moves further than its own width. The sideways
+// move keeps the potential energy; the pile spreads out rather than up.
 //
 // A manifold's two points are pushed together, as the exact solution of
 // their 2×2 complementarity problem (pushPointPair), not one after the other,
@@ -349,9 +348,10 @@ void prepareDeepOverlaps(WorldState& w) {
     // than its own width: the row moves the two apart in inverse proportion to
     // their masses, so the bodies' shares of the clearing distance are
     // clear·m⁻¹/(m_A⁻¹ + m_B⁻¹), or, where that moves one beyond its width,
-    // split otherwise (below). A box on a long plank is still lifted (it
-    // would have to slide the plank's length); two like bodies, one deep in the
-    // other, slide apart however deep. Held to the narrower width of the pair
+    // split otherwise (below): a box deep in a long plank slides out by its
+    // width while the plank gives way by the rest (a box 0.2 m deep in the
+    // middle of a 6 m plank: the plank moves 1.9 m); two like bodies, one
+    // deep in the other, slide apart however deep. Held to the narrower width of the pair
     // instead (the upper body moving it all), a body created almost wholly
     // inside another was lifted out of it, up to its whole height: of 8 boxes
     // created on the ground (seed 113) one rose 0.67 m above where it was
@@ -406,7 +406,10 @@ void prepareDeepOverlaps(WorldState& w) {
             // at 2 s, the big box pushed up 0.11 and 0.20 m by the soft rows
             // (1.18 and 1.39 times the energy); now the small box slides out
             // within a second
-            // (OverlapPiles.ASmallBoxUnderABigOneSlidesOutFromUnderIt).
+            // (OverlapPiles.ASmallBoxUnderABigOneSlidesOutFromUnderIt), and a
+            // box created deep in a long plank, which never parted either,
+            // slides out while the plank gives way
+            // (OverlapPiles.ABoxInsideALongPlankOnTheGroundParts).
             // Split so, the row moves the pair's centre of mass, which it may
             // do only where it is the pair's one contact: two L-shaped bodies
             // created overlapping touch through several, whose pushes can

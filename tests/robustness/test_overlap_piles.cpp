@@ -651,5 +651,32 @@ TEST(OverlapPiles, ASmallBoxUnderABigOneSlidesOutFromUnderIt) {
     }
 }
 
+// A box of 0.5 m created 0.2 m deep in a plank 0.3 m thick lying on the
+// ground, 6 m long with the box at its middle, or 10 m long with the box 2 m
+// from it. The pair is pushed sideways (lifting the box would take it above
+// the highest it has been); the box slides its own width and the plank gives
+// way by the rest, which may be more than the lift it replaces. Before, such
+// a pair was pushed along its normal, the plank into the ground, whose soft
+// row lifted the box out: after 6 s from the 6 m plank, 9 cm deep at 2 s,
+// and from the 10 m plank not within 10 s (0.14 m deep at 2 s). With the push
+// kept from driving the plank into the ground (guardAgainstImmovable) and
+// before the split was taken whatever the rest, neither parted at all. Now
+// the plank moves 1.9 m and they part in 1.43 s.
+// The bounds, no tolerance added.
+TEST(OverlapPiles, ABoxInsideALongPlankOnTheGroundParts) {
+    for (const auto& [length, offset] : {std::pair{6.0f, 0.0f}, std::pair{10.0f, 2.0f}}) {
+        World world({.enableSleep = false});
+        test::makeGround(world, 200.0f);
+        const BodyId plank = world.createBody({.type = BodyType::dynamic_body, .position = {0.0f, 0.15f}});
+        world.createPolygonShape(plank, {.density = 1.0f, .friction = 0.6f}, makeBox(0.5f * length, 0.15f));
+        const BodyId box = test::makeBox(world, {offset, 0.3f - 0.2f + 0.25f}, 0.25f);
+        const PileFigures f = measure(world, {plank, box});
+        const std::string what = "box 0.2 m deep in a plank " + std::to_string(static_cast<int>(length)) + " m long";
+        expectGentle(f, what);
+        EXPECT_GE(f.separatedAt, 0.0f) << what;
+        EXPECT_LE(f.separatedAt, 2.0f) << what;
+    }
+}
+
 }  // namespace
 }  // namespace i2d
