@@ -151,6 +151,22 @@ void applyPointPush(SolverArrays& s, const ContactConstraint& cc, const ContactP
     s.biasW[static_cast<std::size_t>(cc.b)] += cc.invIB * cross(cp.rB, P);
 }
 
+/// How fast the two bodies' pseudo-velocities separate point cp of row cc
+/// along its normal (negative: closing).
+float pushSpeed(const SolverArrays& s, const ContactConstraint& cc, const ContactPointConstraint& cp) {
+    const std::size_t a = static_cast<std::size_t>(cc.a), b = static_cast<std::size_t>(cc.b);
+    return dot((s.biasV[b] + cross(s.biasW[b], cp.rB)) - (s.biasV[a] + cross(s.biasW[a], cp.rA)), cc.normal);
+}
+
+/// The separating pseudo-speed a deep point asks for: its current separation
+/// (as the velocity rows read it) times the bias rate, beyond what its load
+/// explains, up to the cap (none once it is closed).
+float pointPushTarget(const ContactConstraint& cc, const ContactPointConstraint& cp, Vec2 dp, Rot qA, Rot qB,
+                      float cap) {
+    const float sep = currentSeparation(cp, cc.normal, dp, qA, qB);
+    return std::max(std::min(-cc.biasRate * sep - loadPush(cc, cp), cap), 0.0f);
+}
+
 /// Whether bodies a and b also touch through a contact other than c (bodies
 /// of several shapes).
 bool touchElsewhere(const WorldState& w, int c, int a, int b) {
@@ -177,21 +193,15 @@ bool touchElsewhere(const WorldState& w, int c, int a, int b) {
 /// and ended leaning on each other, 2.8 % over their energy. False (nothing
 /// done) where the two rows are nearly parallel (kLeastBlockDeterminant) or
 /// no case holds (a NaN): the points are then solved one after the other.
-bool pushPointPair(SolverArrays& s, ContactConstraint& cc, const PairMatrix& k, Vec2 n, Vec2 dp, Rot qA, Rot qB,
-                   float cap) {
+bool pushPointPair(SolverArrays& s, ContactConstraint& cc, const PairMatrix& k, Vec2 dp, Rot qA, Rot qB, float cap) {
     ContactPointConstraint& c1 = cc.points[0];
     ContactPointConstraint& c2 = cc.points[1];
     const float det = k.k11 * k.k22 - k.k12 * k.k12;
     if (!(k.k11 > 0.0f && k.k22 > 0.0f && det > kLeastBlockDeterminant * k.k11 * k.k22)) return false;
-    const Vec2 vA = s.biasV[static_cast<std::size_t>(cc.a)], vB = s.biasV[static_cast<std::size_t>(cc.b)];
-    const float wA = s.biasW[static_cast<std::size_t>(cc.a)], wB = s.biasW[static_cast<std::size_t>(cc.b)];
     // b: how far each point's pseudo-speed, without any push of this row,
-    // falls short of its target (the sweep's target: the depth's push beyond
-    // what the load explains, up to the cap). w = K·x + b ≥ 0, x ≥ 0, x·w = 0.
+    // falls short of its target. w = K·x + b ≥ 0, x ≥ 0, x·w = 0.
     auto shortfall = [&](const ContactPointConstraint& cp) {
-        const float speed = dot((vB + cross(wB, cp.rB)) - (vA + cross(wA, cp.rA)), n);
-        const float sep = currentSeparation(cp, n, dp, qA, qB);
-        return speed - std::max(std::min(-cc.biasRate * sep - loadPush(cc, cp), cap), 0.0f);
+        return pushSpeed(s, cc, cp) - pointPushTarget(cc, cp, dp, qA, qB, cap);
     };
     const float a1 = c1.biasImpulse, a2 = c2.biasImpulse;
     const float b1 = shortfall(c1) - (k.k11 * a1 + k.k12 * a2);
@@ -209,8 +219,8 @@ bool pushPointPair(SolverArrays& s, ContactConstraint& cc, const PairMatrix& k, 
     }
     c1.biasImpulse = x1;
     c2.biasImpulse = x2;
-    applyPointPush(s, cc, c1, (x1 - a1) * n);
-    applyPointPush(s, cc, c2, (x2 - a2) * n);
+    applyPointPush(s, cc, c1, (x1 - a1) * cc.normal);
+    applyPointPush(s, cc, c2, (x2 - a2) * cc.normal);
     return true;
 }
 
@@ -238,15 +248,13 @@ bool pushPointPair(SolverArrays& s, ContactConstraint& cc, const PairMatrix& k, 
 void guardAgainstImmovable(SolverArrays& s) {
     for (std::size_t g = 0; g < s.pushGuards.size(); ++g) {
         ContactConstraint& cc = s.constraints[static_cast<std::size_t>(s.pushGuards[g])];
-        const Vec2 vA = s.biasV[static_cast<std::size_t>(cc.a)], vB = s.biasV[static_cast<std::size_t>(cc.b)];
-        const float wA = s.biasW[static_cast<std::size_t>(cc.a)], wB = s.biasW[static_cast<std::size_t>(cc.b)];
         const float scale = s.pushGuardScales[g];
-        float impulse[2] = {0.0f, 0.0f};
+        float impulse[2] = {0.0f, 0.0f}, speed[2] = {0.0f, 0.0f};
+        for (int j = 0; j < cc.pointCount; ++j) speed[j] = pushSpeed(s, cc, cc.points[j]);  // both before either acts
         for (int j = 0; j < cc.pointCount; ++j) {
             const ContactPointConstraint& cp = cc.points[j];
-            const float closing = dot((vB + cross(wB, cp.rB)) - (vA + cross(wA, cp.rA)), cc.normal);
             float& accumulated = s.pushGuardImpulses[2 * g + static_cast<std::size_t>(j)];
-            const float next = std::max(accumulated - scale * cp.normalMass * closing, 0.0f);
+            const float next = std::max(accumulated - scale * cp.normalMass * speed[j], 0.0f);
             impulse[j] = next - accumulated;
             accumulated = next;
         }
@@ -270,16 +278,9 @@ void prepareDeepOverlaps(WorldState& w) {
         if (cc.invMassA == 0.0f) s.pushedOffFixed[static_cast<std::size_t>(cc.b)] = 1;
         if (cc.invMassB == 0.0f) s.pushedOffFixed[static_cast<std::size_t>(cc.a)] = 1;
     }
-    // The guards: the shallow rows of the bodies a deep row pushes against
-    // something immovable that holds them up (guardAgainstImmovable).
-    // pushedOffFixed's array, bit 2, marks the pushed bodies while they are
-    // listed.
-    constexpr std::uint8_t kPushed = 2;
-    for (int r : s.deepRows) {
-        const ContactConstraint& cc = s.constraints[static_cast<std::size_t>(r)];
-        s.pushedOffFixed[static_cast<std::size_t>(cc.a)] |= kPushed;
-        s.pushedOffFixed[static_cast<std::size_t>(cc.b)] |= kPushed;
-    }
+    // The guards: the shallow rows of the bodies a deep row pushes (those
+    // with a deep contact, SolverArrays::deepContactCount) against something
+    // immovable that holds them up (guardAgainstImmovable).
     s.pushGuards.clear();
     s.pushGuardScales.clear();
     for (std::size_t r = 0; r < s.constraints.size(); ++r) {
@@ -287,7 +288,7 @@ void prepareDeepOverlaps(WorldState& w) {
         const bool fixedA = cc.invMassA == 0.0f, fixedB = cc.invMassB == 0.0f;
         if (cc.deepOverlap || fixedA == fixedB) continue;
         const int moving = fixedA ? cc.b : cc.a;
-        if (!(s.pushedOffFixed[static_cast<std::size_t>(moving)] & kPushed)) continue;
+        if (s.deepContactCount[static_cast<std::size_t>(moving)] == 0) continue;
         // Only what holds the body up: its normal points up at the body,
         // against the body's own gravity.
         const float upAtMoving = (fixedA ? -1.0f : 1.0f) * dot(cc.normal, g);
@@ -296,7 +297,6 @@ void prepareDeepOverlaps(WorldState& w) {
         s.pushGuards.push_back(static_cast<int>(r));
         s.pushGuardScales.push_back(cc.pointCount == 2 ? pairScale(cc) : 1.0f);
     }
-    for (std::uint8_t& mark : s.pushedOffFixed) mark &= static_cast<std::uint8_t>(~kPushed);
     if (gl == 0.0f) {
         s.supported.assign(s.states.size(), 0);  // pushDeepOverlaps reads it
         return;
@@ -464,8 +464,8 @@ void pushDeepOverlaps(WorldState& w, float h) {
             applyPointPush(s, cc, cc.points[j], cc.points[j].biasImpulse * cc.normal);
     });
     s.pushGuardImpulses.assign(2 * s.pushGuards.size(), 0.0f);
-    // Each two-point row's matrix, for its pair solve (the arms and masses
-    // are the step's).
+    // Each deep row's pair matrix, for its pair solve (pushPointPair), once
+    // for the substep's 16 sweeps.
     std::vector<float>& pairs = s.pushPairs;
     pairs.clear();
     forEachDeepRow(s, [&](const ContactConstraint& cc, const SidePush*) {
@@ -498,19 +498,13 @@ void pushDeepOverlaps(WorldState& w, float h) {
             const Rot qA = cc.roundA ? Rot{} : sA.dq, qB = cc.roundB ? Rot{} : sB.dq;
             const Vec2 n = cc.normal;
             const Vec2 dp = sB.dp - sA.dp;
-            if (cc.pointCount == 2 && pushPointPair(s, cc, {pair[0], pair[1], pair[2]}, n, dp, qA, qB, cap)) return;
+            if (cc.pointCount == 2 && pushPointPair(s, cc, {pair[0], pair[1], pair[2]}, dp, qA, qB, cap)) return;
             for (int j = 0; j < cc.pointCount; ++j) {
                 ContactPointConstraint& cp = cc.points[j];
-                // The current separation, as the velocity rows read it, and the
-                // separating pseudo-speed asked for beyond what the load
-                // explains (none once it is closed).
-                const float sep = currentSeparation(cp, n, dp, qA, qB);
-                const float target = std::max(std::min(-cc.biasRate * sep - loadPush(cc, cp), cap), 0.0f);
-                const Vec2 dv =
-                    (s.biasV[static_cast<std::size_t>(cc.b)] + cross(s.biasW[static_cast<std::size_t>(cc.b)], cp.rB)) -
-                    (s.biasV[static_cast<std::size_t>(cc.a)] + cross(s.biasW[static_cast<std::size_t>(cc.a)], cp.rA));
+                const float target = pointPushTarget(cc, cp, dp, qA, qB, cap);
                 // Projected Gauss-Seidel on the accumulated push impulse (≥ 0).
-                const float accumulated = std::max(cp.biasImpulse - cp.normalMass * (dot(dv, n) - target), 0.0f);
+                const float accumulated = std::max(cp.biasImpulse - cp.normalMass * (pushSpeed(s, cc, cp) - target),
+                                                   0.0f);
                 const float impulse = accumulated - cp.biasImpulse;
                 cp.biasImpulse = accumulated;
                 applyPointPush(s, cc, cp, impulse * n);

@@ -139,7 +139,7 @@ struct SolverArrays {
     std::vector<float> pushGuardImpulses;
     std::vector<float> pushGuardScales;  ///< per guard: pairScale of its row (fixed within a step)
     /// Per deep row, in deepRows' order: K11, K22 and K12 of its two points
-    /// (pairMatrix; fixed within a step), for the push's pair solve.
+    /// (pairMatrix), for the push's pair solve (deep_overlap.cpp, each substep).
     std::vector<float> pushPairs;
     /// The deep pushes' impulses of this step's deep rows (in deepRows' order)
     /// and the last step's (deep_overlap.cpp), and the step that filled them in.
