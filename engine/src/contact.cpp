@@ -231,7 +231,7 @@ inline void markOverlapFromStart(const WorldState& w, Contact& ct, const Body& a
         if (ct.overlapFromStart && deepest > -w.settings.penetrationSlop) ct.overlapFromStart = false;
         return;
     }
-    bool overlap = deepest < -deepOverlapOf(ct);
+    bool overlap = deepest < -deepDepthOf(ct);  // (a first touch: as deep as the shapes' own depth)
     for (int i = 0; i < m.pointCount && overlap; ++i) {
         const Vec2 p = m.points[i].point;
         const Vec2 dv = (b.v + cross(b.w, p - b.center)) - (a.v + cross(a.w, p - a.center));
