@@ -124,6 +124,7 @@ inline bool prepareContactRow(const WorldState& w, const RowContext& x, int c, C
     const ContactSurface* surface = contactSurface(w, c);
     cc.tangentSpeed = surface ? surface->tangentSpeed : 0.0f;
     cc.deepOverlap = false;
+    cc.overlapFromStart = ct.overlapFromStart;
     cc.roundA = ct.roundA;
     cc.roundB = ct.roundB;
     cc.turnA = cc.turnB = false;  // (setTurning, from the contact's look)

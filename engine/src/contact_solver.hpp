@@ -47,8 +47,9 @@ struct ContactConstraint {
     float invMassA, invIA, invMassB, invIB;
     float biasRate, massScale, impulseScale;  ///< soft contact coefficients
     float maxPush;  ///< push speed cap of this contact (m/s); baumgarte and split share it among a body's deep contacts
-    float tangentSpeed;    ///< friction's target relative tangent speed (m/s): 0 but on conveyors
-    bool deepOverlap : 1;  ///< a point overlaps by more than kDeepOverlap (contact_solver.cpp)
+    float tangentSpeed;         ///< friction's target relative tangent speed (m/s): 0 but on conveyors
+    bool deepOverlap : 1;       ///< a point overlaps by more than kDeepOverlap (contact_solver.cpp)
+    bool overlapFromStart : 1;  ///< the contact's Contact::overlapFromStart
     /// Two points solved together (contact_solver.cpp), unless the overlap is
     /// so deep that its push is at the cap (bodies being pushed apart, not
     /// resting) or their rows are nearly parallel (kLeastBlockDeterminant).

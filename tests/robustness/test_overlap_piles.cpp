@@ -343,6 +343,27 @@ TEST(OverlapPiles, TwentyAtOnePointOnTheGroundPartWithinTwoSeconds) {
         }
 }
 
+// 20 capsules created at one point on the ground, seeds 1 to 40. They
+// spread sideways into a row about 22 m long within 1.4 s; the last
+// centimetres of their overlaps were then pushed at the soft rows' rate,
+// heavily damped for stacking, and 3 of these 40 piles were still deeper
+// than 2 cm at 2 s (parted at 2.02 to 2.08 s). A contact created
+// overlapping is pushed to the same rest twice as fast
+// (kStartOverlapPushFactor, engine/src/deep_overlap.cpp): within 2 cm by 2 s.
+// The issue's bounds, no tolerance added. Seeds 30001 to 30040 still have
+// two such piles parting at 2.05 and 2.07 s (docs/validation.md, "A created
+// overlap's last centimetres").
+TEST(OverlapPiles, TwentyCapsulesAtOnePointOnTheGroundPartWithinTwoSeconds) {
+    for (unsigned seed = 1; seed <= 40; ++seed) {
+        const PileFigures f = airPile(Kind::capsule, 20, 0.5f, seed);
+        const std::string what = "20 capsules at one point on the ground, seed " + std::to_string(seed);
+        expectNothingThrown(f, what);
+        EXPECT_LE(f.deepestAt2s, 0.02f) << what;
+        EXPECT_GE(f.separatedAt, 0.0f) << what;
+        EXPECT_LE(f.separatedAt, 2.0f) << what;
+    }
+}
+
 // 50 boxes created at one point 1 m up land at once as a lump and must spread
 // along the ground in one layer 50 m long (the issue's rise bound allows no
 // second): its ends 25 m out, which at the sideways push limit of 3c takes
