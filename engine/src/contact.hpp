@@ -71,10 +71,11 @@ constexpr float kDeepExitFraction = 0.25f;
 /// Their soft rows then pushed all that overlap out at once through the
 /// velocities, where the relax pass could not take it back. Eighty such
 /// boxes 0.6 m wide without friction slid apart at up to 1.4 m/s, with 14 %
-/// more energy than they started with (5.7 % now); forty with friction 0.6,
-/// 4.7 % (0.6 % now; docs/validation.md, "Overlaps squeezed back"). At the
-/// slop itself the push never ends (its target falls to zero there) and
-/// piles separate more slowly.
+/// more energy than they started with, and forty with friction 0.6 with
+/// 4.7 %; now 3.5 % and 0.7 % (with kStartOverlapPushFactor as well;
+/// docs/validation.md, "Overlaps squeezed back"). At the slop itself the
+/// push never ends (its target falls to zero there) and piles separate more
+/// slowly.
 constexpr float kStartOverlapDeep = 0.01f;
 /// Contact::deepScale of a contact deep from kDeepOverlap itself.
 constexpr std::uint8_t kFullDeepScale = 255;

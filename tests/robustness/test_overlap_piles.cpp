@@ -626,13 +626,15 @@ TEST(OverlapPiles, ARowCreatedHalfOverlappingOnTheGroundStaysFlat) {
 // the middle's deep contacts squeezed the ends' contacts, already out of the
 // deep regime, back to just under the deep depth (5 cm), and their soft rows
 // pushed that out through the velocities, which the relax pass could not
-// take back: the rows slid apart with 1.034 and 1.047 times their energy
-// (eighty such boxes: 1.139 and 1.106). A contact created overlapping is now
-// pushed on pseudo-velocities down to kStartOverlapDeep (contact.hpp): 1.008
-// and 1.004. Nothing thrown, by the bounds, no tolerance added. (Not
-// the 2 cm at 2 s: the row has 11.7 m of overlap to undo, 5.9 m at each end,
-// which the 3 m/s push cap allows in 2 s only if every box moves at once;
-// these rows are 1.8 and 2.8 cm deep at 2 s.)
+// take back: the rows slid apart with 1.042 and 1.046 times their energy
+// (the start plus the lift out of the ground, as measured here). A contact
+// created overlapping is now pushed on pseudo-velocities down to
+// kStartOverlapDeep (contact.hpp), and twice as fast
+// (kStartOverlapPushFactor, deep_overlap.cpp): 1.011 and 1.006. Nothing
+// thrown, by the bounds, no tolerance added. (Not the 2 cm at 2 s:
+// the row has 11.7 m of overlap to undo, 5.85 m at each end, which at the
+// 3 m/s cap takes 1.95 s; these rows are 1.7 and 3.0 cm deep at 2 s, 2.3
+// and 5.2 before.)
 TEST(OverlapPiles, ALongRowCreatedHalfOverlappingOnTheGroundGainsNoEnergy) {
     for (const float friction : {0.0f, 0.6f}) {
         World world({.enableSleep = false});
