@@ -648,6 +648,54 @@ TEST(OverlapPiles, ALongRowCreatedHalfOverlappingOnTheGroundGainsNoEnergy) {
     }
 }
 
+// 50 unit boxes created at one point on the ground, seeds 1 to 5. The push
+// turned bodies without limit: one box of seed 1 turned by 0.26 rad in a step
+// and back by 0.6 rad in the next (a corner at 25 m/s), which drove a corner
+// 16 cm into the ground; the ground's deep row then lifted the box (a body
+// may leave something immovable above the highest it has been) and left it
+// standing on the corner. Now no point of a pushed body turns faster than
+// the sideways limit 3c (deep_overlap.cpp): a unit box (reach √2/2 m) turns
+// at most 3c·Δt/reach = 0.212 rad a step on its pseudo-spin. Measured from the
+// positions, a step's turn also holds what the spin turned it by, credited
+// here at the larger of the step's first and last spins; within the step the
+// soft rows' push may spin a box further, at most c at a point, which the
+// relax pass takes back before the step ends. So the bound is
+// 4c·Δt/reach = 0.283 rad; the largest turns were 0.49 to 0.97 rad before
+// (seeds 1, 3, 4, 5) and are 0.214 now.
+TEST(OverlapPiles, FiftyBoxesAtOnePointOnTheGroundAreNotTurnedFasterThanThePushAllows) {
+    for (unsigned seed = 1; seed <= 5; ++seed) {
+        World world({.enableSleep = false});
+        test::makeGround(world, 200.0f);
+        std::mt19937 rng(seed);
+        std::uniform_real_distribution<float> jitter(-0.01f, 0.01f);
+        std::vector<BodyId> boxes;
+        for (int i = 0; i < 50; ++i)
+            boxes.push_back(makeBody(world, Kind::box, {jitter(rng), 0.5f + jitter(rng)}, 0.0f));
+        const float reach = std::sqrt(0.5f);
+        const float bound = 4.0f * world.settings().maxPushSpeed * kDt / reach;
+        std::vector<float> angle, spin;
+        for (BodyId b : boxes) {
+            angle.push_back(world.angle(b));
+            spin.push_back(world.angularVelocity(b));
+        }
+        float largest = 0.0f;
+        for (int step = 0; step < 6 * 60; ++step) {
+            world.step(kDt);
+            for (std::size_t i = 0; i < boxes.size(); ++i) {
+                const float a = world.angle(boxes[i]), w = world.angularVelocity(boxes[i]);
+                const float turned = std::abs(std::remainder(a - angle[i], 2.0f * 3.14159265f));
+                largest = std::max(largest, turned - std::max(std::abs(w), std::abs(spin[i])) * kDt);
+                angle[i] = a;
+                spin[i] = w;
+            }
+        }
+        std::printf(
+            "[figure] 50 boxes at one point on the ground, seed %u: largest turn in a step beyond the spin's %.3f rad\n",
+            seed, largest);
+        EXPECT_LE(largest, bound) << "seed " << seed;
+    }
+}
+
 // 20 boxes created at one point on the ground, seeds 40001 to 40020 (not used
 // in developing what follows). The push turned boxes resting on the ground
 // about their centres, which drove a corner of each into the ground; the
