@@ -580,7 +580,7 @@ void pushDeepOverlaps(WorldState& w, float h) {
         // to 25 m/s), driving a corner 16 cm into the ground; the ground's
         // deep row then lifted the box, which
         // may leave something immovable above the highest it has been, and
-        // it was left standing on the corner. 21 piles of 50 unit boxes
+        // it was left standing on the corner. 20 piles of 50 unit boxes
         // created at one point on the ground peaked at 1.007 to 1.104 times
         // their energy, now at most 1.038 (docs/validation.md, "Turns the
         // push may give").
