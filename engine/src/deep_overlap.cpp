@@ -577,13 +577,12 @@ void pushDeepOverlaps(WorldState& w, float h) {
         // (reach: the farthest point from the centre of mass). Unlimited, a
         // push between two boxes nearly on top of each other turned one by
         // 0.26 rad in a step and back by 0.6 rad in the next (a corner at up
-        // to 25 m/s), driving a corner 16 cm into the ground; the ground's
-        // deep row then lifted the box, which
-        // may leave something immovable above the highest it has been, and
-        // it was left standing on the corner. 20 piles of 50 unit boxes
-        // created at one point on the ground peaked at 1.007 to 1.104 times
-        // their energy, now at most 1.038 (docs/validation.md, "Turns the
-        // push may give").
+        // to 25 m/s), driving a corner 16 cm into the ground. The ground's
+        // deep row then lifted the box out, and a body leaving something
+        // immovable may rise above the highest it has been: it was left
+        // standing on the corner. 20 piles of 50 unit boxes created at one
+        // point on the ground peaked at 1.007 to 1.104 times their energy,
+        // now at most 1.038 (docs/validation.md, "Turns the push may give").
         float& turn = s.biasW[i];
         const float reach = w.bodies[s.stateBodies[i]].reach;
         if (reach > 0.0f && std::abs(turn) * reach > sidewaysCap) turn *= sidewaysCap / (std::abs(turn) * reach);
