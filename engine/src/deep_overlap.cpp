@@ -583,9 +583,11 @@ void pushDeepOverlaps(WorldState& w, float h) {
         // standing on the corner. 20 piles of 50 unit boxes created at one
         // point on the ground peaked at 1.007 to 1.104 times their energy,
         // now at most 1.038 (docs/validation.md, "Turns the push may give").
-        float& turn = s.biasW[i];
-        const float reach = w.bodies[s.stateBodies[i]].reach;
-        if (reach > 0.0f && std::abs(turn) * reach > sidewaysCap) turn *= sidewaysCap / (std::abs(turn) * reach);
+        // (A body the push does not turn is not read: most of a large world.)
+        if (float& turn = s.biasW[i]; turn != 0.0f) {
+            const float reach = w.bodies[s.stateBodies[i]].reach;
+            if (reach > 0.0f && std::abs(turn) * reach > sidewaysCap) turn *= sidewaysCap / (std::abs(turn) * reach);
+        }
         // A body no deep row pushed (most of a large world) has nothing to
         // limit, lift or wake.
         if (v.x == 0.0f && v.y == 0.0f) continue;
