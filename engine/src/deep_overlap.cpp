@@ -85,28 +85,46 @@ namespace {
 // height plus the cap allows. The sweeps run only in steps with a deep
 // overlap, over its deep rows alone.
 constexpr int kPushSweeps = 16;
-// A body's pseudo-velocity across gravity may reach this many times
-// maxPushSpeed (below). A sideways push leaves no velocity and lifts nothing,
-// so the cap, which bounds the energy an upward push adds, need not hold it to
-// the same speed; what it bounds there is how far a body jumps in a step (at
-// 9 m/s, 3.75 cm per substep). A pile created at one point must spread before
-// it parts: 50 unit boxes cover 50 m², a disc of radius 4 m, which at 3 m/s
-// takes 1.3 s before any lag of the sweeps, and 50 boxes or capsules created
-// at one point in the air were still up to 52 cm deep at 2 s. At twice the
-// cap, of 180 such piles not used in choosing it (30, 50 and 80 boxes,
-// circles or capsules from 5 and 10 m), 106 instead of 74 were within 2 cm at
-// 2 s. At three times, for bodies resting on nothing first, of the 180 piles
-// 158 instead of 154 (and 82 instead of 75 of 90 not used in choosing it);
-// 60 circles of radius 5 to 25 cm created at one point beside a static wall
-// 1 or 4 cm thick crossed it no more often than at twice. A supported body
-// was held to twice while the soft rows took over a pile's overlaps at the
-// deep depth (at three times, piles created on the ground met every bound
-// less often); since a deep overlap stays deep to a quarter of that depth
-// (kDeepExitFraction), every body may reach three times: 20 boxes, circles
-// and capsules created at one point on the ground spread 20 m, and at twice
-// their edges took 1.6 s to get there and the piles 2.1 to 2.7 s to part
-// (docs/validation.md, "Deep until well apart").
-constexpr float kSidewaysPushFactor = 3.0f;
+// The sideways limit, kSidewaysPushFactor (deep_overlap.hpp): why it is
+// not the cap. A sideways push leaves no velocity and lifts nothing, so the
+// cap, which bounds the energy an upward push adds, need not hold it to the
+// same speed; what it bounds there is how far a body jumps in a step. A pile
+// created at one point must spread before it parts: 50 unit boxes cover
+// 50 m², a disc of radius 4 m, which at 3 m/s takes 1.3 s before any lag of
+// the sweeps, and 50 boxes or capsules created at one point in the air were
+// still up to 52 cm deep at 2 s. At twice the cap, of 180 such piles not used
+// in choosing it (30, 50 and 80 boxes, circles or capsules from 5 and 10 m),
+// 106 instead of 74 were within 2 cm at 2 s. At three times, for bodies
+// resting on nothing first, of the 180 piles 158 instead of 154 (and 82
+// instead of 75 of 90 not used in choosing it); 60 circles of radius 5 to
+// 25 cm created at one point beside a static wall 1 or 4 cm thick crossed it
+// no more often than at twice. A supported body was held to twice while the
+// soft rows took over a pile's overlaps at the deep depth (at three times,
+// piles created on the ground met every bound less often); since a deep
+// overlap stays deep to a quarter of that depth (kDeepExitFraction), every
+// body may reach three times: 20 boxes, circles and capsules created at one
+// point on the ground spread 20 m, and at twice their edges took 1.6 s to
+// get there and the piles 2.1 to 2.7 s to part (docs/validation.md, "Deep
+// until well apart"). At three times, a pile created at one point on the
+// ground still spread at the limit: the edges of 40 unit boxes moved out at
+// exactly 9 m/s for 1.5 s, and 50 such boxes (seeds 1 to 20) parted after
+// 4.6 to 5.6 s, 10 of them rising above 1.02 times their energy while their
+// layer was still closing (up to 1.038). Now five times (docs/validation.md,
+// "A wider sideways limit").
+//
+// No point of a pushed body turns faster than kTurnPushFactor·c. Unlimited,
+// a push between two boxes nearly on top of each other turned one by
+// 0.26 rad in a step and back by 0.6 rad in the next (a corner at up to
+// 25 m/s), driving a corner 16 cm into the ground. The ground's deep row then
+// lifted the box out, and a body leaving something immovable may rise above
+// the highest it has been: it was left standing on the corner. Of 20 piles of
+// 50 unit boxes created at one point on the ground, 15 peaked above 1.02
+// times their energy, up to 1.104; at c, 1.5c, 2c and 3c, 0, 3, 6 and 10 of
+// them, but below 3c capsule piles at one point on the ground parted later,
+// turning being how they untangle (docs/validation.md, "Turns the push may
+// give"). Kept at 3c when the sideways limit became 5c: a turn drives a
+// corner into what is below, a slide does not.
+constexpr float kTurnPushFactor = 3.0f;
 // The fraction of a deep row's push impulse at the end of a step that the
 // next step's push starts from (within a step each substep starts from all of
 // the last one's). Started from zero in every substep, the sweeps found a
@@ -467,6 +485,7 @@ void pushDeepOverlaps(WorldState& w, float h) {
     SolverArrays& s = w.solver;
     const float cap = w.settings.maxPushSpeed;
     const float sidewaysCap = kSidewaysPushFactor * cap;
+    const float turnCap = kTurnPushFactor * cap;
     s.biasV.assign(s.states.size(), Vec2{});
     s.biasW.assign(s.states.size(), 0.0f);
     const BodyState* states = s.states.data();
@@ -573,20 +592,12 @@ void pushDeepOverlaps(WorldState& w, float h) {
     const std::size_t n = s.stateBodies.size();
     for (std::size_t i = 0; i < n; ++i) {
         Vec2& v = s.biasV[i];
-        // Its pseudo-spin: no point turns faster than the sideways limit
-        // (reach: the farthest point from the centre of mass). Unlimited, a
-        // push between two boxes nearly on top of each other turned one by
-        // 0.26 rad in a step and back by 0.6 rad in the next (a corner at up
-        // to 25 m/s), driving a corner 16 cm into the ground. The ground's
-        // deep row then lifted the box out, and a body leaving something
-        // immovable may rise above the highest it has been: it was left
-        // standing on the corner. 20 piles of 50 unit boxes created at one
-        // point on the ground peaked at 1.007 to 1.104 times their energy,
-        // now at most 1.038 (docs/validation.md, "Turns the push may give").
+        // Its pseudo-spin: no point turns faster than turnCap (reach: the
+        // farthest point from the centre of mass; kTurnPushFactor above).
         // (A body the push does not turn is not read: most of a large world.)
         if (float& turn = s.biasW[i]; turn != 0.0f) {
             const float reach = w.bodies[s.stateBodies[i]].reach;
-            if (reach > 0.0f && std::abs(turn) * reach > sidewaysCap) turn *= sidewaysCap / (std::abs(turn) * reach);
+            if (reach > 0.0f && std::abs(turn) * reach > turnCap) turn *= turnCap / (std::abs(turn) * reach);
         }
         // A body no deep row pushed (most of a large world) has nothing to
         // limit, lift or wake.

@@ -317,7 +317,8 @@ TEST(OverlapPiles, FiftyAtOnePointPartWithinTwoSeconds) {
 
 // 20 bodies created at one point on the ground (centres 0.5 m up, within
 // 1 cm) must spread along it in one layer about 20 m long: its ends 10 m
-// out, 1.1 s at the sideways push limit of 3c. Seeds 1 to 3 of each kind,
+// out, 1.1 s at the sideways push limit of 3c (0.7 s at today's 5c,
+// kSidewaysPushFactor). Seeds 1 to 3 of each kind,
 // not used in developing what follows. While a deep overlap stopped being
 // deep at the deep depth (5 cm), the soft rows took over the rest of each
 // overlap and pushed it out through the velocities, and the pushes along
@@ -366,9 +367,10 @@ TEST(OverlapPiles, TwentyCapsulesAtOnePointOnTheGroundPartWithinTwoSeconds) {
 
 // 50 boxes created at one point 1 m up land at once as a lump and must spread
 // along the ground in one layer 50 m long (the rise bound allows no
-// second): its ends 25 m out, which at the sideways push limit of 3c takes
-// 25 m / (3 · 3 m/s) = 2.8 s, so the 2 s is out of reach
-// (docs/validation.md, "Variants beyond the layouts"). The edges do
+// second): its ends 25 m out, which at the sideways push limit of 3c took
+// 25 m / (3 · 3 m/s) = 2.8 s, so the 2 s was out of reach
+// (docs/validation.md, "Variants beyond the layouts"); at today's 5c
+// it takes 1.7 s before any lag of the sweeps ("A wider sideways limit"). The edges do
 // move out at the limit, but the pile parts later: the last overlaps are
 // boxes left above the first layer, which the push may not lift above the
 // highest they have been, and which wait for the layer below to open a gap.
@@ -395,13 +397,13 @@ TEST(OverlapPiles, FiftyBoxesAtOnePointOnTheGroundSpreadAtThePushLimit) {
 }
 
 // The deep push's limits per body (deep_overlap.cpp): across gravity at most
-// three times maxPushSpeed c (unit/test_deep_push.cpp), so in a step no body
-// of a pile in the air moves sideways more than 3·c·Δt (the pseudo-velocity
-// is the only sideways motion here: the pile is at rest and the push leaves
-// no velocity), and the pushes through a pile of 20 boxes created at one
-// point add up beyond 2·c, near the limit; upwards at most c, less the fall,
+// five times maxPushSpeed c (kSidewaysPushFactor, unit/test_deep_push.cpp), so
+// in a step no body of a pile in the air moves sideways more than 5·c·Δt (the
+// pseudo-velocity is the only sideways motion here: the pile is at rest and
+// the push leaves no velocity), and the pushes through a pile of 20 boxes
+// created at one point add up beyond 2·c; upwards at most c, less the fall,
 // so no body rises more than c·Δt in a step.
-TEST(OverlapPiles, APushAcrossGravityInTheAirReachesThriceTheCapAndNoMore) {
+TEST(OverlapPiles, APushAcrossGravityInTheAirGoesBeyondTwiceTheCapUpToTheSidewaysLimit) {
     for (unsigned seed : {1u, 2u, 3u}) {
         World world({.enableSleep = false});
         std::mt19937 rng(seed);
@@ -426,7 +428,7 @@ TEST(OverlapPiles, APushAcrossGravityInTheAirReachesThriceTheCapAndNoMore) {
                 EXPECT_EQ(world.linearVelocity(bodies[i]).x, 0.0f) << "seed " << seed << " step " << step;
             }
             reached = std::max(reached, sideways);
-            EXPECT_LE(sideways, 3.0f * cap * kDt + rounding) << "seed " << seed << " step " << step;
+            EXPECT_LE(sideways, 5.0f * cap * kDt + rounding) << "seed " << seed << " step " << step;
             EXPECT_LE(rise, cap * kDt + rounding) << "seed " << seed << " step " << step;
         }
         EXPECT_GT(reached, 2.0f * cap * kDt) << "seed " << seed;
@@ -654,7 +656,7 @@ TEST(OverlapPiles, ALongRowCreatedHalfOverlappingOnTheGroundGainsNoEnergy) {
 // 16 cm into the ground; the ground's deep row then lifted the box (a body
 // may leave something immovable above the highest it has been) and left it
 // standing on the corner. Now no point of a pushed body turns faster than
-// the sideways limit 3c (deep_overlap.cpp): a unit box (reach √2/2 m) turns
+// the turn limit 3c (kTurnPushFactor, deep_overlap.cpp): a unit box (reach √2/2 m) turns
 // at most 3c·Δt/reach = 0.212 rad a step on its pseudo-spin. Measured from the
 // positions, a step's turn also holds what the spin turned it by, credited
 // here at the larger of the step's first and last spins; within the step the
