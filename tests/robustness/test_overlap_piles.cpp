@@ -405,8 +405,12 @@ TEST(OverlapPiles, FiftyBoxesAtOnePointOnTheGroundSpreadAtThePushLimit) {
 // bounds, no tolerance added. At 3c, seeds 1, 4 and 5 rose to 1.038, 1.027
 // and 1.033 times their energy while their layer was still closing (10 of
 // seeds 1 to 20 beyond 1.02); at 5c to at most 1.009 here, 1.018 over seeds
-// 1 to 20 (docs/validation.md, "A wider sideways limit"). They part after
-// 3.8 to 4.4 s here, so the 2 s is not asserted.
+// 1 to 20 (docs/validation.md, "A wider sideways limit"). With the push's
+// sweeps run on until they converge but its guards holding one way, 19 of
+// seeds 1 to 20 rose beyond 1.02 (up to 1.052), boxes tilted onto corners;
+// with the two-point guards held both ways, at most 1.0045 here
+// (docs/validation.md, "A push that converges"). They part after 2.6 to
+// 2.9 s here, so the 2 s is not asserted.
 TEST(OverlapPiles, FiftyBoxesAtOnePointOnTheGroundGainNoEnergy) {
     for (unsigned seed = 1; seed <= 5; ++seed)
         expectNothingThrown(airPile(Kind::box, 50, 0.5f, seed),
@@ -649,12 +653,14 @@ TEST(OverlapPiles, ARowCreatedHalfOverlappingOnTheGroundStaysFlat) {
 // (the start plus the lift out of the ground, as measured here). A contact
 // created overlapping is now pushed on pseudo-velocities down to
 // kStartOverlapDeep (contact.hpp), and twice as fast
-// (kStartOverlapPushFactor, deep_overlap.cpp): 1.011 and 1.006. Nothing
-// thrown, by the bounds, no tolerance added. (Not the 2 cm at 2 s:
-// the row has 11.7 m of overlap to undo, 5.85 m at each end, which at the
-// 3 m/s cap takes 1.95 s; these rows are 1.7 and 3.0 cm deep at 2 s, 2.3
-// and 5.2 before.)
-TEST(OverlapPiles, ALongRowCreatedHalfOverlappingOnTheGroundGainsNoEnergy) {
+// (kStartOverlapPushFactor, deep_overlap.cpp): 1.011 and 1.006. The row
+// has 11.7 m of overlap to undo, 5.85 m at each end. Its push's sweeps,
+// stopped at sixteen, left it 1.7 and 3.0 cm deep at 2 s (2.3 and 5.2 cm
+// before the two changes above; 1.4 and 2.8 cm with the sideways limit at
+// 5c); run on until they converge (kMaxPushSweeps, deep_overlap.cpp), it is
+// within 2 cm after 0.87 and 1.03 s, at 1.018 and 1.007 times its energy.
+// The bounds, all of them, no tolerance added.
+TEST(OverlapPiles, ALongRowCreatedHalfOverlappingOnTheGroundPartsGently) {
     for (const float friction : {0.0f, 0.6f}) {
         World world({.enableSleep = false});
         test::makeGround(world, 200.0f, friction);
@@ -662,8 +668,11 @@ TEST(OverlapPiles, ALongRowCreatedHalfOverlappingOnTheGroundGainsNoEnergy) {
         for (int i = 0; i < 40; ++i)
             boxes.push_back(test::makeBox(world, {0.3f * static_cast<float>(i) - 5.85f, 0.3f}, 0.3f, 1.0f, friction));
         const PileFigures f = measure(world, boxes);
-        expectNothingThrown(f, "row of 40 boxes of 0.6 m half overlapping on the ground, friction " +
-                                   std::to_string(friction).substr(0, 3));
+        const std::string what = "row of 40 boxes of 0.6 m half overlapping on the ground, friction " +
+                                 std::to_string(friction).substr(0, 3);
+        expectGentle(f, what);
+        EXPECT_GE(f.separatedAt, 0.0f) << what;
+        EXPECT_LE(f.separatedAt, 2.0f) << what;
     }
 }
 
