@@ -2130,7 +2130,7 @@ int main(int argc, char** argv) {
           "without friction); the batteries broke a bound in 0, 1, 0, 0 and 3 layouts. But of the probe's\n"
           "3,500 piles, 430 rose beyond 1.02 times their energy instead of 216 (deep at 2 s 422 instead of\n"
           "668; 1,009 breaking a bound in all), at every friction, up to 1.22 times: the guards carry the\n"
-          "push into bodies it does not otherwise move.\n"
+          "push into bodies it does not otherwise move. Held to rows within 45° of level, 418 (1,022 in all).\n"
           "\n"
           "### Variants beyond the issue's layouts\n\n"
           "Probed apart from the test suite (defaults, sleeping off; figures not part of a test):\n\n"
