@@ -384,7 +384,8 @@ TEST(OverlapPiles, TwentyCapsulesAtOnePointOnTheGroundPartWithinTwoSeconds) {
 // speed and energy bounds hold, no tolerance added; the time bound is a
 // regression bound, not a physical one: 6 s, the slowest of those 20
 // layouts (5.83 s) rounded up (7 s, from 6.92 s, before; at 3c seeds 1, 3
-// and 5 part after 6.15, 6.38 and 6.08 s). (Before the push started each step from
+// and 5 part after 6.15, 6.38 and 6.08 s; since the push's sweeps converge,
+// kMaxPushSweeps, after 3.97, 4.08 and 3.80 s). (Before the push started each step from
 // half of where the last one ended, deep_overlap.cpp, kPushCarry, a box
 // wedged between two others was pushed one way in one step and back in the
 // next, and these layouts parted after 9.05 to 9.33 s.)

@@ -93,9 +93,11 @@ float fastestPush(Vec2 gravity, bool supported, int count) {
     return fastest;
 }
 
-// A row long enough to ask for more than the sideways limit (8c converged)
-// within a step's sweeps, which do not converge along it: in one substep its
-// last body reached 13.4 m/s of the 15, in four the limit.
+// A row long enough to ask for more than the sideways limit (8c converged).
+// With sixteen sweeps a substep, which do not converge along it, one
+// substep's push left its last body at 13.4 m/s of the 15, so a step's four
+// substeps are taken; with the sweeps run on until they converge
+// (kMaxPushSweeps, deep_overlap.cpp) one substep reaches the limit as well.
 constexpr int kLongRow = 8;
 
 // Float rounding of limitTo's rescaling (a few ulps of the limit, 15 m/s).
