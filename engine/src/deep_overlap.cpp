@@ -99,7 +99,8 @@ constexpr int kPushSweeps = 16;
 // resting on the ground onto their corners, which the guards now prevent
 // (guardAgainstImmovable). Of the outside probe's 3,500 piles, 1,293 broke a
 // bound of the issue with sixteen sweeps, 1,082 converged, 1,016 converged
-// and guarded both ways (docs/validation.md, "A push that converges"). A
+// and guarded both ways (1,097 with at most 32 sweeps; docs/validation.md,
+// "A push that converges"). A
 // step with a deep overlap costs up to twice as much (50 boxes at one point
 // on the ground, the engine against itself: 0.24 against 0.48 ms a step over
 // their first 5 s).
