@@ -141,6 +141,17 @@ void expectGentle(const PileFigures& f, const std::string& what) {
     EXPECT_LE(f.deepestAt2s, 0.02f) << what;
 }
 
+// `count` square boxes of half-width `half` resting on a ground of friction
+// `friction` in `world`, each half inside the next (centres `half` apart),
+// the first centred at `firstX`.
+std::vector<BodyId> rowHalfOverlapping(World& world, int count, float half, float firstX, float friction) {
+    test::makeGround(world, 200.0f, friction);
+    std::vector<BodyId> boxes;
+    for (int i = 0; i < count; ++i)
+        boxes.push_back(test::makeBox(world, {half * static_cast<float>(i) + firstX, half}, half, 1.0f, friction));
+    return boxes;
+}
+
 // `count` bodies created within 1 cm of one point `height` m above the ground.
 PileFigures airPile(Kind kind, int count, float height, unsigned seed) {
     World world({.enableSleep = false});
@@ -629,10 +640,7 @@ TEST(OverlapPiles, CentredOnAThinSegment) {
 TEST(OverlapPiles, ARowCreatedHalfOverlappingOnTheGroundStaysFlat) {
     for (const float friction : {0.6f, 1.0f}) {
         World world({.enableSleep = false});
-        test::makeGround(world, 200.0f, friction);
-        std::vector<BodyId> boxes;
-        for (int i = 0; i < 20; ++i)
-            boxes.push_back(test::makeBox(world, {0.5f * static_cast<float>(i) - 4.75f, 0.5f}, 0.5f, 1.0f, friction));
+        const std::vector<BodyId> boxes = rowHalfOverlapping(world, 20, 0.5f, -4.75f, friction);
         const PileFigures f = measure(world, boxes);
         float tilt = 0.0f;
         for (const BodyId b : boxes) tilt = std::max(tilt, std::abs(world.angle(b)));
@@ -664,10 +672,7 @@ TEST(OverlapPiles, ARowCreatedHalfOverlappingOnTheGroundStaysFlat) {
 TEST(OverlapPiles, ALongRowCreatedHalfOverlappingOnTheGroundPartsGently) {
     for (const float friction : {0.0f, 0.6f}) {
         World world({.enableSleep = false});
-        test::makeGround(world, 200.0f, friction);
-        std::vector<BodyId> boxes;
-        for (int i = 0; i < 40; ++i)
-            boxes.push_back(test::makeBox(world, {0.3f * static_cast<float>(i) - 5.85f, 0.3f}, 0.3f, 1.0f, friction));
+        const std::vector<BodyId> boxes = rowHalfOverlapping(world, 40, 0.3f, -5.85f, friction);
         const PileFigures f = measure(world, boxes);
         const std::string what = "row of 40 boxes of 0.6 m half overlapping on the ground, friction " +
                                  std::to_string(friction).substr(0, 3);
