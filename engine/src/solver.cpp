@@ -863,7 +863,12 @@ void forEachStepArray(WorldState& w, F&& f) {
     f(s.deepRows);
     f(s.sidePushes);
     f(s.supported);
-    f(s.pushedOffFixed);
+    f(s.pushOffFixedLift);
+    f(s.pushShoves);
+    f(s.pushShoveImpulses);
+    f(s.pushWalled);
+    f(s.pushCeilings);
+    f(s.pushCeilingMark);
     f(s.supportStart);
     f(s.supportAbove);
     f(s.supportQueue);

@@ -126,11 +126,13 @@ struct SolverArrays {
     /// Per state, in a step with a turning row: its angular velocity when the
     /// step began, which the turning rows' bend is predicted with (turningBend).
     std::vector<float> startSpin;
-    std::vector<int> deepRows;                 ///< the rows that do, ascending (contact_solver.cpp)
-    std::vector<SidePush> sidePushes;          ///< deep rows pushed sideways, in row order (deep_overlap.cpp)
-    std::vector<DeepCarry> deepCarry;          ///< per deep row, in deepRows' order (contact_solver.cpp)
-    std::vector<std::uint8_t> supported;       ///< per state: rests on something immovable (deep_overlap.cpp)
-    std::vector<std::uint8_t> pushedOffFixed;  ///< per state: pushed out of something immovable (deep_overlap.cpp)
+    std::vector<int> deepRows;            ///< the rows that do, ascending (contact_solver.cpp)
+    std::vector<SidePush> sidePushes;     ///< deep rows pushed sideways, in row order (deep_overlap.cpp)
+    std::vector<DeepCarry> deepCarry;     ///< per deep row, in deepRows' order (contact_solver.cpp)
+    std::vector<std::uint8_t> supported;  ///< per state: rests on something immovable (deep_overlap.cpp)
+    /// Per state: how far a deep row pushing it out of something immovable
+    /// may lift it above the highest it has been (m; deep_overlap.cpp).
+    std::vector<float> pushOffFixedLift;
     /// The shallow rows of the bodies a deep row pushes against something
     /// immovable that holds them up, and each point's guard impulse (two per
     /// row): the push may not drive such a body into what it rests on
@@ -138,6 +140,14 @@ struct SolverArrays {
     std::vector<int> pushGuards;
     std::vector<float> pushGuardImpulses;
     std::vector<float> pushGuardScales;  ///< per guard: pairScale of its row (fixed within a step)
+    /// The shallow rows between two moving bodies, one of them pushed, and
+    /// each row's shove impulse: a pushed body shoves the body it touches
+    /// (deep_overlap.cpp, shoveTouching).
+    std::vector<int> pushShoves;
+    std::vector<float> pushShoveImpulses;
+    std::vector<std::uint8_t> pushWalled;       ///< per state: touches something immovable that does not hold it up
+    std::vector<PushCeiling> pushCeilings;      ///< the push's bodies under gravity (deep_overlap.cpp)
+    std::vector<std::uint8_t> pushCeilingMark;  ///< per state: has a PushCeiling this substep
     /// Per deep row, in deepRows' order: K11, K22 and K12 of its two points
     /// (pairMatrix), for the push's pair solve (deep_overlap.cpp, each substep).
     std::vector<float> pushPairs;

@@ -396,7 +396,12 @@ TEST(OverlapPiles, TwentyCapsulesAtOnePointOnTheGroundPartWithinTwoSeconds) {
 // regression bound, not a physical one: 6 s, the slowest of those 20
 // layouts (5.83 s) rounded up (7 s, from 6.92 s, before; at 3c seeds 1, 3
 // and 5 part after 6.15, 6.38 and 6.08 s; since the push's sweeps converge,
-// kMaxPushSweeps, after 3.97, 4.08 and 3.80 s). (Before the push started each step from
+// kMaxPushSweeps, after 3.97, 4.08 and 3.80 s). Since the push may not drive
+// a pushed body into a moving body it touches either, and holds every body
+// under its height limit within its sweeps (docs/validation.md, "Guards
+// between moving bodies"), seeds 1 to 20 part after 2.33 to 3.50 s (seeds 1,
+// 3 and 5: 2.83, 2.88 and 2.67 s): the bound is now 4 s, 3.50 s rounded up.
+// (Before the push started each step from
 // half of where the last one ended, deep_overlap.cpp, kPushCarry, a box
 // wedged between two others was pushed one way in one step and back in the
 // next, and these layouts parted after 9.05 to 9.33 s.)
@@ -406,7 +411,7 @@ TEST(OverlapPiles, FiftyBoxesAtOnePointOnTheGroundSpreadAtThePushLimit) {
         const std::string what = "50 boxes at one point 1 m up, seed " + std::to_string(seed);
         expectNothingThrown(f, what);
         EXPECT_GE(f.separatedAt, 0.0f) << what;
-        EXPECT_LE(f.separatedAt, 6.0f) << what;
+        EXPECT_LE(f.separatedAt, 4.0f) << what;
     }
 }
 
@@ -421,12 +426,24 @@ TEST(OverlapPiles, FiftyBoxesAtOnePointOnTheGroundSpreadAtThePushLimit) {
 // sweeps run on until they converge but its guards holding one way, 19 of
 // seeds 1 to 20 rose beyond 1.02 (up to 1.052), boxes tilted onto corners;
 // with the two-point guards held both ways, at most 1.0045 here
-// (docs/validation.md, "A push that converges"). They part after 2.6 to
-// 2.9 s here, so the issue's 2 s is not asserted.
+// (docs/validation.md, "A push that converges"). They parted after 2.6 to
+// 2.9 s, until the push was kept from driving a pushed body into a moving
+// body it touches (guards between moving bodies, through the centres, and
+// each body held under its height limit within the sweeps:
+// docs/validation.md, "Guards between moving bodies"); now within 2 cm after
+// 1.90 to 1.95 s here, so the issue's 2 s is asserted too, no tolerance
+// added. Over seeds 1 to 20, 15 layouts meet it; the other five are 2.2 to
+// 3.9 cm deep at 2 s (apart after 1.87 to 2.08 s), at most 1.003 times their
+// energy.
 TEST(OverlapPiles, FiftyBoxesAtOnePointOnTheGroundGainNoEnergy) {
-    for (unsigned seed = 1; seed <= 5; ++seed)
-        expectNothingThrown(airPile(Kind::box, 50, 0.5f, seed),
-                            "50 boxes at one point on the ground, seed " + std::to_string(seed));
+    for (unsigned seed = 1; seed <= 5; ++seed) {
+        const PileFigures f = airPile(Kind::box, 50, 0.5f, seed);
+        const std::string what = "50 boxes at one point on the ground, seed " + std::to_string(seed);
+        expectNothingThrown(f, what);
+        EXPECT_GE(f.separatedAt, 0.0f) << what;
+        EXPECT_LE(f.separatedAt, 2.0f) << what;
+        EXPECT_LE(f.deepestAt2s, 0.02f) << what;
+    }
 }
 
 // The deep push's limits per body (deep_overlap.cpp): across gravity at most
