@@ -42,16 +42,6 @@ struct SidePush {
     float invMassA, invMassB;  ///< how the row splits the move between A and B (prepareDeepOverlaps)
 };
 
-/// A body the push moves, held below the height it may reach in a substep
-/// (pushDeepOverlaps): its pseudo-velocity along up at most `limit`.
-struct PushCeiling {
-    int state;
-    Vec2 up;        ///< unit, against the body's free acceleration
-    float limit;    ///< m/s
-    float invMass;  ///< the body's
-    float impulse;  ///< accumulated, downwards (≥ 0)
-};
-
 /// A deep contact's push impulses at the end of a step, which the next step's
 /// push starts from (pushDeepOverlaps).
 struct PushCarry {
@@ -59,6 +49,7 @@ struct PushCarry {
     int shapeA, shapeB;
     bool sideways;     ///< pushed as a SidePush (its impulse in impulse[0])
     float impulse[2];  ///< per point, as ContactPointConstraint::biasImpulse
+    Vec2 apart;        ///< B's centre less A's at that step's start (m)
 };
 
 /// Once per step, after the rows are prepared, in a step with a deep overlap:

@@ -866,9 +866,8 @@ void forEachStepArray(WorldState& w, F&& f) {
     f(s.pushOffFixedLift);
     f(s.pushShoves);
     f(s.pushShoveImpulses);
+    f(s.pushStalled);
     f(s.pushWalled);
-    f(s.pushCeilings);
-    f(s.pushCeilingMark);
     f(s.supportStart);
     f(s.supportAbove);
     f(s.supportQueue);
