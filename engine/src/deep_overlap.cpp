@@ -368,10 +368,10 @@ void guardAgainstImmovable(SolverArrays& s) {
 /// contact points instead, the shoves turned the bodies they pushed off
 /// centre: capsules lying on the ground were stood on end, and of the outside
 /// probe's 3,500 piles 420 rose beyond 1.02 times their energy instead of 216
-/// (up to 1.27 times; now 194). A body touching something immovable that does not hold it up (a
-/// wall, a ceiling, a kinematic drum's side) neither shoves nor is shoved:
-/// shoved into the side of a chain drum turning at 20 rad/s, thin boxes were
-/// pushed through it
+/// (up to 1.27 times; now 194). A body touching something immovable that
+/// does not hold it up (a wall, a ceiling, a kinematic drum's side) neither
+/// shoves nor is shoved: shoved into the side of a chain drum turning at
+/// 20 rad/s, thin boxes were pushed through it
 /// (KeptManifolds.AFasterChainDrumKeepsTheThinBodiesItPressesIntoItsSides).
 /// Only under gravity: between 625 weightless circles jammed in a box
 /// (Confined, docs/validation.md) shoves left 0.09 to 0.23 J of jiggle from 5
@@ -768,17 +768,9 @@ void pushDeepOverlaps(WorldState& w, float h) {
             float limit = liftLimit(w, i, up, cap, h);
             // No body is lifted above the highest it has been, as the
             // sideways rows above hold the supported ones, unless a row
-            // pushes it out of something that does not move, and then no
-            // further than that row's depth along up at the step's start
-            // (SolverArrays::pushOffFixedLift): lifted without that bound, a
-            // body the push had turned or driven into the ground was lifted
-            // out above where it had been, step after step (of the probe's
-            // piles, a body rose up to 2.54 m above where it was created;
-            // with the bound, 1.14 m; docs/validation.md, "Shoves between
-            // moving bodies").
-            // Lifted so at
-            // rest, with no fall to pay for it, bodies of 50 boxes created at
-            // one point 3 m up were pushed from 2.7 m to 3.7 m while their
+            // pushes it out of something that does not move. Lifted so at
+            // rest, with no fall to pay for it, bodies of 50 boxes created
+            // at one point 3 m up were pushed from 2.7 m to 3.7 m while their
             // velocities stayed at zero, 0.45 m above the highest they had
             // been; from 1 m up the pile's potential energy climbed from 456
             // to 522 J (500 J at the start) with the kinetic energy near
@@ -786,6 +778,14 @@ void pushDeepOverlaps(WorldState& w, float h) {
             // times the start (bodies resting on nothing had been lifted 32 J
             // at rest as the pile landed); every body: 1.000
             // (docs/validation.md, "Variants beyond the issue's layouts").
+            // Pushed out of something that does not move, a body rises no
+            // further than that row's depth along up at the step's start
+            // (SolverArrays::pushOffFixedLift): without that bound, a body
+            // the push had turned or driven into the ground was lifted out
+            // above where it had been, step after step (of the outside
+            // probe's piles, a body rose up to 2.54 m above where it was
+            // created; with the bound, 1.14 m; docs/validation.md, "Shoves
+            // between moving bodies").
             const float u = dot(v, up);
             Vec2 across = v - u * up;
             limitTo(across, sidewaysCap);

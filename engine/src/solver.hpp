@@ -145,8 +145,10 @@ struct SolverArrays {
     /// (deep_overlap.cpp, shoveTouching).
     std::vector<int> pushShoves;
     std::vector<float> pushShoveImpulses;
-    std::vector<std::uint8_t> pushStalled;  ///< per state: a deep row of it made no progress over the last step
-    std::vector<std::uint8_t> pushWalled;   ///< per state: touches something immovable that does not hold it up
+    /// Per state: in a deep row whose two bodies moved less than kStallMove
+    /// relative to each other over the last step (deep_overlap.cpp).
+    std::vector<std::uint8_t> pushStalled;
+    std::vector<std::uint8_t> pushWalled;  ///< per state: touches something immovable that does not hold it up
     /// Per deep row, in deepRows' order: K11, K22 and K12 of its two points
     /// (pairMatrix), for the push's pair solve (deep_overlap.cpp, each substep).
     std::vector<float> pushPairs;
