@@ -396,20 +396,6 @@ void shoveTouching(SolverArrays& s) {
     }
 }
 
-/// How fast body i's push may carry it up (along up, against its free
-/// acceleration) in this substep: at most the cap c less its falling speed,
-/// never less than c/2, and no higher than the highest it has been, or than
-/// where a deep row pushing it out of something immovable clears it
-/// (pushDeepOverlaps).
-float liftLimit(const WorldState& w, std::size_t i, Vec2 up, float cap, float h) {
-    const SolverArrays& s = w.solver;
-    const float falling = std::max(-dot(s.states[i].v, up), 0.0f);
-    const Body& body = w.bodies[s.stateBodies[i]];
-    const float moved = dot(s.states[i].dp, up);
-    const float room = std::max(body.highest - dot(body.center, up), s.pushOffFixedLift[i]) - moved;
-    return std::min(cap - std::min(falling, 0.5f * cap), std::max(room, 0.0f) / h);
-}
-
 }  // namespace
 
 void prepareDeepOverlaps(WorldState& w) {
@@ -617,8 +603,7 @@ void prepareDeepOverlaps(WorldState& w) {
         const std::size_t a = static_cast<std::size_t>(cc.a), b = static_cast<std::size_t>(cc.b);
         if ((s.deepContactCount[a] == 0 && s.deepContactCount[b] == 0) || s.pushWalled[a] || s.pushWalled[b]) continue;
         if (s.pushStalled[a] || s.pushStalled[b]) continue;
-        if (gl == 0.0f || !(w.bodies[s.stateBodies[a]].gravityScale > 0.0f) ||
-            !(w.bodies[s.stateBodies[b]].gravityScale > 0.0f))
+        if (!(w.bodies[s.stateBodies[a]].gravityScale > 0.0f) || !(w.bodies[s.stateBodies[b]].gravityScale > 0.0f))
             continue;
         if (std::abs(dot(cc.normal, g)) > kShoveLevel * gl) continue;
         s.pushShoves.push_back(static_cast<int>(r));
@@ -767,7 +752,8 @@ void pushDeepOverlaps(WorldState& w, float h) {
         Vec2 up{};
         if (g > 0.0f) {
             up = (-1.0f / g) * a;
-            float limit = liftLimit(w, i, up, cap, h);
+            const float falling = std::max(-dot(s.states[i].v, up), 0.0f);
+            float limit = cap - std::min(falling, 0.5f * cap);
             // No body is lifted above the highest it has been, as the
             // sideways rows above hold the supported ones, unless a row
             // pushes it out of something that does not move. Lifted so at
@@ -788,6 +774,10 @@ void pushDeepOverlaps(WorldState& w, float h) {
             // probe's piles, a body rose up to 2.54 m above where it was
             // created; with the bound, 1.14 m; docs/validation.md, "Shoves
             // between moving bodies").
+            const Body& body = w.bodies[s.stateBodies[i]];
+            const float room = std::max(body.highest - dot(body.center, up), s.pushOffFixedLift[i]) -
+                               dot(s.states[i].dp, up);
+            limit = std::min(limit, std::max(room, 0.0f) / h);
             const float u = dot(v, up);
             Vec2 across = v - u * up;
             limitTo(across, sidewaysCap);
