@@ -280,9 +280,9 @@ constexpr float kUnloadedTimeConstants = 3.0f;
 /// part of that push in them: three circles stacked on the ground, the top
 /// one 100 times as dense and then destroyed, left the other two rising at
 /// 0.054 and 0.059 m/s (docs/validation.md, "Warm Start Energy").
-void listRelaxedAgainBlocks(WorldState& w, const RowContext& x) {
+void listRelaxedAgainBlocks(WorldState& w, const RowContext& x, bool fromStart) {
     SolverArrays& s = w.solver;
-    std::uint32_t flags = s.anyDeepOverlap ? kWideDeep : 0u;
+    std::uint32_t flags = (s.anyDeepOverlap ? kWideDeep : 0u) | (fromStart ? kWideFromStart : 0u);
     if (w.lastUnloadedAt != 0) {
         const float steps = kUnloadedTimeConstants / std::max(x.dynamicSoft.biasRate * x.fullDt, 1e-6f);
         // (1 + the stamp of the step before the release: this step is w.stepStamp.)
@@ -377,8 +377,8 @@ void prepareContactRows(WorldState& w, float h, bool soft) {
     s.tilt.candidate.clear();
     s.coldBlocks.clear();
     s.deepBlocks.clear();
-    // Whether a lane is cold (kWideCold), set by the workers that find one.
-    std::atomic<bool> anyCold{false};
+    // The kWideFound flags some lane has, set by the workers that find one.
+    std::atomic<std::uint32_t> found{0};
     if (!s.wideContactsOnly) {
         prepareContacts(w, h, soft);  // leaves each colour's end in colourOffsets
         if (!s.wideContactsActive) {
@@ -390,15 +390,16 @@ void prepareContactRows(WorldState& w, float h, bool soft) {
         const std::vector<int>& blockRows = s.wideBlockRows;
         const RowContext x = makeRowContext(w, h, soft);
         auto pack = [&](int b, int e) {
-            bool cold = false;
+            std::uint32_t lanes = 0;
             for (int k = b; k < e; ++k)
-                cold |= packWideContactBlock(s, k, blockRows[static_cast<std::size_t>(2 * k)],
-                                             blockRows[static_cast<std::size_t>(2 * k + 1)], &w, &x);
-            if (cold) anyCold.store(true, std::memory_order_relaxed);
+                lanes |= packWideContactBlock(s, k, blockRows[static_cast<std::size_t>(2 * k)],
+                                              blockRows[static_cast<std::size_t>(2 * k + 1)], &w, &x);
+            if (lanes) found.fetch_or(lanes, std::memory_order_relaxed);
         };
         w.runner.run(blocks, kPackGrain, pack);
-        if (anyCold.load(std::memory_order_relaxed)) listBlocks(s, kWideCold, s.coldBlocks, s.coldBlockStart);
-        listRelaxedAgainBlocks(w, x);
+        const std::uint32_t lanes = found.load(std::memory_order_relaxed);
+        if (lanes & kWideCold) listBlocks(s, kWideCold, s.coldBlocks, s.coldBlockStart);
+        listRelaxedAgainBlocks(w, x, (lanes & kWideFromStart) != 0);
         // The tilt rows' candidates (contact_tilt.cpp), from their lanes.
         for (int k = 0; k < (w.settings.exactColumnTilt ? blocks : 0); ++k) {
             const WideContactBlock& blk = s.wideContacts[static_cast<std::size_t>(k)];
@@ -439,7 +440,7 @@ void prepareContactRows(WorldState& w, float h, bool soft) {
     auto prepare = [&](int first, int last) {
         WideLaneTarget targets[4];
         int pending = 0;
-        bool cold = false;
+        std::uint32_t lanes = 0;
         for (int k = first; k < last; ++k) {
             const int inGroup = s.rowContacts[static_cast<std::size_t>(k)];
             if (inGroup < 0) continue;
@@ -456,12 +457,12 @@ void prepareContactRows(WorldState& w, float h, bool soft) {
             targets[pending++] = {contact, &s.wideContacts[at.block], &s.wideContactCold[at.block], at.lane};
             if (tilt) s.tiltCandidate[static_cast<std::size_t>(k)] = tiltCandidate(s, w.contacts[contact]);
             if (pending == 4) {
-                cold |= prepareWideContactLanes(w, x, targets, pending);
+                lanes |= prepareWideContactLanes(w, x, targets, pending);
                 pending = 0;
             }
         }
-        if (pending > 0) cold |= prepareWideContactLanes(w, x, targets, pending);
-        if (cold) anyCold.store(true, std::memory_order_relaxed);
+        if (pending > 0) lanes |= prepareWideContactLanes(w, x, targets, pending);
+        if (lanes) found.fetch_or(lanes, std::memory_order_relaxed);
     };
     w.runner.run(static_cast<int>(activeCount), kPrepareGrain, prepare);
     // The lanes past each group's last row stay empty.
@@ -473,8 +474,9 @@ void prepareContactRows(WorldState& w, float h, bool soft) {
         for (int lane = count % 4; lane < 4; ++lane)
             packEmptyWideContactLane(s.wideContacts[k], s.wideContactCold[k], lane, x.zeroState);
     }
-    if (anyCold.load(std::memory_order_relaxed)) listBlocks(s, kWideCold, s.coldBlocks, s.coldBlockStart);
-    listRelaxedAgainBlocks(w, x);
+    const std::uint32_t lanes = found.load(std::memory_order_relaxed);
+    if (lanes & kWideCold) listBlocks(s, kWideCold, s.coldBlocks, s.coldBlockStart);
+    listRelaxedAgainBlocks(w, x, (lanes & kWideFromStart) != 0);
     // The candidates of the columns' tilt rows (contact_tilt.cpp), marked
     // by the workers that prepared them, in the order of the active contacts.
     for (std::size_t k = 0; k < (tilt ? activeCount : 0); ++k) {

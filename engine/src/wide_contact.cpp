@@ -28,9 +28,9 @@ bool mayBeCold(const WorldState& w, const Contact& ct) {
 }
 
 /// Lane `lane` of block k from row cc (null: an empty lane), every field written.
-inline bool packLane(WideContactBlock& k, WideContactCold& cold, int lane, const ContactConstraint* cc, int row,
-                     int zero, const BodyState* states = nullptr, const WorldState* w = nullptr,
-                     const RowContext* x = nullptr) {
+inline std::uint32_t packLane(WideContactBlock& k, WideContactCold& cold, int lane, const ContactConstraint* cc,
+                              int row, int zero, const BodyState* states = nullptr, const WorldState* w = nullptr,
+                              const RowContext* x = nullptr) {
     const bool used = cc != nullptr;
     k.a[lane] = used ? cc->a : zero;
     k.b[lane] = used ? cc->b : zero;
@@ -48,6 +48,7 @@ inline bool packLane(WideContactBlock& k, WideContactCold& cold, int lane, const
         if (cc->roundA) flags |= kWideRoundA;
         if (cc->roundB) flags |= kWideRoundB;
         if (cc->deepOverlap) flags |= kWideDeep;
+        if (cc->overlapFromStart && !cc->deepOverlap) flags |= kWideFromStart;
         if (againstImmovable(*cc)) flags |= kWideImmovableSide;
         if (cc->pointCount > 0) flags |= kWidePoint0;
         if (cc->pointCount > 1) flags |= kWidePoint1;
@@ -79,26 +80,28 @@ inline bool packLane(WideContactBlock& k, WideContactCold& cold, int lane, const
         p.tangentImpulse[lane] = present ? cp->tangentImpulse : 0.0f;
         cold.maxNormalImpulse[j][lane] = present ? cp->maxNormalImpulse : 0.0f;
     }
-    return (flags & kWideCold) != 0;
+    return flags & kWideFound;
 }
 
 }  // namespace
 
-bool packWideContactBlock(SolverArrays& s, int block, int start, int last, const WorldState* w, const RowContext* x) {
+std::uint32_t packWideContactBlock(SolverArrays& s, int block, int start, int last, const WorldState* w,
+                                   const RowContext* x) {
     const int zero = static_cast<int>(s.states.size()) - 1;
     WideContactBlock& k = s.wideContacts[static_cast<std::size_t>(block)];
     WideContactCold& cold = s.wideContactCold[static_cast<std::size_t>(block)];
-    bool anyCold = false;
+    std::uint32_t found = 0;
     for (int lane = 0; lane < 4; ++lane) {
         const int r = start + lane;
-        anyCold |= packLane(k, cold, lane, r < last ? &s.constraints[static_cast<std::size_t>(r)] : nullptr, r, zero,
-                            s.states.data(), w, x);
+        found |= packLane(k, cold, lane, r < last ? &s.constraints[static_cast<std::size_t>(r)] : nullptr, r, zero,
+                          s.states.data(), w, x);
     }
-    return anyCold;
+    return found;
 }
 
-bool prepareWideContactLanes(const WorldState& w, const RowContext& x, const WideLaneTarget* targets, int count) {
-    bool anyCold = false;
+std::uint32_t prepareWideContactLanes(const WorldState& w, const RowContext& x, const WideLaneTarget* targets,
+                                      int count) {
+    std::uint32_t found = 0;
     // Each lane's contact and bodies are read one lane at a time, as
     // prepareContactRow reads them; what the arithmetic below does not change
     // goes straight to the lane, the rest to these arrays as well. Lanes past
@@ -188,11 +191,10 @@ bool prepareWideContactLanes(const WorldState& w, const RowContext& x, const Wid
                 const Vec2 rA{rAx[j][i], rAy[j][i]}, rB{rBx[j][i], rBy[j][i]};
                 speed[j] = dot((sB.v + cross(sB.w, rB)) - (sA.v + cross(sA.w, rA)), n);
             }
-            if (coldAtRest(x, points, depth, speed)) {
-                f |= kWideCold;
-                anyCold = true;
-            }
+            if (coldAtRest(x, points, depth, speed)) f |= kWideCold;
         }
+        if (ct.overlapFromStart && (f & kWideDeep) == 0) f |= kWideFromStart;
+        found |= f & kWideFound;
         flags[i] = f;
     }
     // The arithmetic of prepareContactRow and finishContactRow (soft_step),
@@ -258,7 +260,7 @@ bool prepareWideContactLanes(const WorldState& w, const RowContext& x, const Wid
             p.tangentMass[lane] = outTangentMass[j][i];
         }
     }
-    return anyCold;
+    return found;
 }
 
 void packEmptyWideContactLane(WideContactBlock& k, WideContactCold& cold, int lane, int zeroState) {

@@ -49,7 +49,12 @@ enum WideContactFlag : std::uint32_t {
     kWideMovesB = 1u << 8,         ///< the same for B
     kWideCold = 1u << 9,           ///< a contact at rest without a warm start: settled (settleColdContacts)
     kWideUnloaded = 1u << 10,      ///< a contact whose load was taken away lately: relaxed again (relaxDeepContacts)
+    /// A contact created overlapping (Contact::overlapFromStart) and no longer
+    /// deep: its soft rows push the last of the overlap out, relaxed again (relaxDeepContacts)
+    kWideFromStart = 1u << 11,
 };
+/// The flags a preparation reports when some lane has them (packWideContactBlock, prepareWideContactLanes).
+constexpr std::uint32_t kWideFound = kWideCold | kWideFromStart;
 
 /// Whether the row of a contact whose manifold got points this step
 /// (Contact::touchBegan, so it has no warm start: the manifold before had no
@@ -106,11 +111,11 @@ struct WideContactCold {
 
 /// Packs the rows [start, min(start + 4, last)) of SolverArrays::constraints
 /// (of one colour, which ends at `last`) into block `block` of
-/// s.wideContacts (sized by the caller), every field written. Returns
-/// whether a lane is cold (kWideCold), looked for when the world `w` and
-/// the rows' context `x` are given.
-bool packWideContactBlock(SolverArrays& s, int block, int start, int last, const WorldState* w = nullptr,
-                          const RowContext* x = nullptr);
+/// s.wideContacts (sized by the caller), every field written. Returns the
+/// kWideFound flags some lane has (kWideCold is looked for when the world
+/// `w` and the rows' context `x` are given).
+std::uint32_t packWideContactBlock(SolverArrays& s, int block, int start, int last, const WorldState* w = nullptr,
+                                   const RowContext* x = nullptr);
 /// Where one contact's lane goes (prepareWideContactLanes).
 struct WideLaneTarget {
     int contact;  ///< contact slot
@@ -124,8 +129,9 @@ struct WideLaneTarget {
 /// are read one by one, the arithmetic of prepareContactRow and
 /// finishContactRow runs in the lanes of Float4 in the same order, so the
 /// bits are the scalar row's. Writes those lanes only, so lanes may be
-/// prepared on any worker. Returns whether a lane is cold (kWideCold).
-bool prepareWideContactLanes(const WorldState& w, const RowContext& x, const WideLaneTarget* targets, int count);
+/// prepared on any worker. Returns the kWideFound flags some lane has.
+std::uint32_t prepareWideContactLanes(const WorldState& w, const RowContext& x, const WideLaneTarget* targets,
+                                      int count);
 /// Lane `lane` of block k empty: the zero state on both sides, no points.
 void packEmptyWideContactLane(WideContactBlock& k, WideContactCold& cold, int lane, int zeroState);
 /// `points` (1 or 2) is the most points a lane of blocks [firstBlock,

@@ -399,8 +399,11 @@ TEST(OverlapPiles, TwentyCapsulesAtOnePointOnTheGroundPartWithinTwoSeconds) {
 // kMaxPushSweeps, after 3.97, 4.08 and 3.80 s). Since a pushed body shoves
 // the bodies beside it instead of driving into them (docs/validation.md,
 // "Shoves between moving bodies"), seeds 1 to 20 part after 2.85 to 3.83 s
-// (seeds 1, 3 and 5: 3.17, 3.83 and 3.23 s): the bound is now 4 s, 3.83 s
-// rounded up. (Before the push started each step from half of where the
+// (seeds 1, 3 and 5: 3.17, 3.83 and 3.23 s): the bound was 4 s, 3.83 s
+// rounded up. With the sideways limit at 10c and the last of a created
+// overlap relaxed again (docs/validation.md, "The sideways limit again"),
+// 2.38 to 3.37 s (seeds 1, 3 and 5: 2.55, 2.92 and 3.37 s): 3.5 s, 3.37 s
+// rounded up to the half second. (Before the push started each step from half of where the
 // last one ended, deep_overlap.cpp, kPushCarry, a box wedged between two
 // others was pushed one way in one step and back in the next, and these
 // layouts parted after 9.05 to 9.33 s.)
@@ -410,38 +413,49 @@ TEST(OverlapPiles, FiftyBoxesAtOnePointOnTheGroundSpreadAtThePushLimit) {
         const std::string what = "50 boxes at one point 1 m up, seed " + std::to_string(seed);
         expectNothingThrown(f, what);
         EXPECT_GE(f.separatedAt, 0.0f) << what;
-        EXPECT_LE(f.separatedAt, 4.0f) << what;
+        EXPECT_LE(f.separatedAt, 3.5f) << what;
     }
 }
 
 // The issue's example on the ground: 50 unit boxes created at one point,
 // their centres 0.5 m up (resting on it), seeds 1 to 5. They spread along the
 // ground at the push's sideways limit (deep_overlap.hpp, kSidewaysPushFactor)
-// and may not rise, be thrown or gain energy while they do: the issue's
-// bounds, no tolerance added. At 3c, seeds 1, 4 and 5 rose to 1.038, 1.027
-// and 1.033 times their energy while their layer was still closing (10 of
-// seeds 1 to 20 beyond 1.02); at 5c to at most 1.009 here, 1.018 over seeds
-// 1 to 20 (docs/validation.md, "A wider sideways limit"). With the push's
-// sweeps run on until they converge but its guards holding one way, 19 of
-// seeds 1 to 20 rose beyond 1.02 (up to 1.052), boxes tilted onto corners;
-// with the two-point guards held both ways, at most 1.0045 here
-// (docs/validation.md, "A push that converges"). They parted after 2.6 to
-// 2.9 s, 2.0 to 2.4 s since a pushed body shoves the bodies beside it
-// (docs/validation.md, "Shoves between moving bodies"; 3.8 cm deep at 2 s at
-// most over seeds 1 to 20), so the issue's 2 s is not asserted.
-TEST(OverlapPiles, FiftyBoxesAtOnePointOnTheGroundGainNoEnergy) {
-    for (unsigned seed = 1; seed <= 5; ++seed)
-        expectNothingThrown(airPile(Kind::box, 50, 0.5f, seed),
-                            "50 boxes at one point on the ground, seed " + std::to_string(seed));
+// into one layer 50 m long, and may not rise, be thrown or gain energy while
+// they do: the issue's bounds, no tolerance added. At 3c, seeds 1, 4 and 5
+// rose to 1.038, 1.027 and 1.033 times their energy while their layer was
+// still closing (10 of seeds 1 to 20 beyond 1.02); at 5c to at most 1.009
+// here, 1.018 over seeds 1 to 20 (docs/validation.md, "A wider sideways
+// limit"). With the push's sweeps run on until they converge but its guards
+// holding one way, 19 of seeds 1 to 20 rose beyond 1.02 (up to 1.052), boxes
+// tilted onto corners; with the two-point guards held both ways, at most
+// 1.0045 here (docs/validation.md, "A push that converges"). The layer's ends
+// are 24.5 m out, 1.6 s at 5c before any lag of the sweeps: they parted after
+// 2.6 to 2.9 s, 2.0 to 2.4 s once a pushed body shoved the bodies beside it
+// (docs/validation.md, "Shoves between moving bodies"; seeds 1 to 4 here
+// 2.03 to 2.42 s, 2.2 to 3.3 cm deep at 2 s). At 10c (0.8 s), with the last
+// of a created overlap relaxed again, seeds 1 to 5 part after 1.45 to
+// 1.68 s, at most 1.4 cm deep at 2 s (docs/validation.md, "The sideways
+// limit again": seeds 1 to 20 part after 1.42 to 2.07 s, and two of them,
+// 7 and 15, are 2.3 and 2.5 cm deep at 2 s). The issue's 2 s, no tolerance
+// added.
+TEST(OverlapPiles, FiftyBoxesAtOnePointOnTheGroundPartWithinTwoSecondsGainingNoEnergy) {
+    for (unsigned seed = 1; seed <= 5; ++seed) {
+        const PileFigures f = airPile(Kind::box, 50, 0.5f, seed);
+        const std::string what = "50 boxes at one point on the ground, seed " + std::to_string(seed);
+        expectGentle(f, what);
+        EXPECT_GE(f.separatedAt, 0.0f) << what;
+        EXPECT_LE(f.separatedAt, 2.0f) << what;
+    }
 }
 
 // The deep push's limits per body (deep_overlap.cpp): across gravity at most
-// five times maxPushSpeed c (kSidewaysPushFactor, unit/test_deep_push.cpp), so
-// in a step no body of a pile in the air moves sideways more than 5·c·Δt (the
+// ten times maxPushSpeed c (kSidewaysPushFactor, unit/test_deep_push.cpp), so
+// in a step no body of a pile in the air moves sideways more than 10·c·Δt (the
 // pseudo-velocity is the only sideways motion here: the pile is at rest and
 // the push leaves no velocity), and the pushes through a pile of 20 boxes
 // created at one point add up beyond 2·c; upwards at most c, less the fall,
 // so no body rises more than c·Δt in a step.
+constexpr float kSidewaysFactor = 10.0f;  // kSidewaysPushFactor (engine/src/deep_overlap.hpp, not public)
 TEST(OverlapPiles, APushAcrossGravityInTheAirGoesBeyondTwiceTheCapUpToTheSidewaysLimit) {
     for (unsigned seed : {1u, 2u, 3u}) {
         World world({.enableSleep = false});
@@ -467,7 +481,7 @@ TEST(OverlapPiles, APushAcrossGravityInTheAirGoesBeyondTwiceTheCapUpToTheSideway
                 EXPECT_EQ(world.linearVelocity(bodies[i]).x, 0.0f) << "seed " << seed << " step " << step;
             }
             reached = std::max(reached, sideways);
-            EXPECT_LE(sideways, 5.0f * cap * kDt + rounding) << "seed " << seed << " step " << step;
+            EXPECT_LE(sideways, kSidewaysFactor * cap * kDt + rounding) << "seed " << seed << " step " << step;
             EXPECT_LE(rise, cap * kDt + rounding) << "seed " << seed << " step " << step;
         }
         EXPECT_GT(reached, 2.0f * cap * kDt) << "seed " << seed;
@@ -696,6 +710,47 @@ TEST(OverlapPiles, ALongRowCreatedHalfOverlappingOnTheGroundPartsGently) {
             EXPECT_GE(f.separatedAt, 0.0f) << what;
             EXPECT_LE(f.separatedAt, 2.0f) << what;
         }
+}
+
+// Rows of 10 and 20 boxes of 0.6 m created half overlapping on a ground
+// without friction, which keeps whatever velocity the push leaves. A created
+// overlap is pushed on pseudo-velocities until it is within kStartOverlapDeep
+// (1 cm, engine/src/contact.hpp), and its soft rows then push the rest out
+// through the velocities, each asking its pair to part at up to
+// biasRate·(1 cm − slop): 6.12/s · 5 mm = 3.1 cm/s at the defaults (50 Hz,
+// ζ = 25, substeps of 1/240 s: ω/(2ζ + hω)). Along a row those asks add
+// up: left in the velocities, box i of n moves out at |i − (n − 1)/2| times
+// that, ½·m·Σv² = 0.014 J for 10 boxes and 0.11 J for 20. The relax pass
+// takes a soft row's push back, whole once it converges, but one relax sweep
+// a substep converges along a row only in part: the rows kept 0.022 and
+// 0.10 J after 3 s (0.022 and 0.072 J with the sideways limit at 5c). The
+// blocks holding such rows are now relaxed again until they settle
+// (kWideFromStart, engine/src/contact_solver.cpp): 0.0030 and 0.035 J. The
+// bound is half the unrelaxed estimate: that much of the push taken back.
+TEST(OverlapPiles, ARowPushedOutOfItsCreatedOverlapsKeepsLittleOfThePushInItsVelocities) {
+    const WorldSettings defaults;
+    const float h = (1.0f / 60.0f) / static_cast<float>(defaults.substeps);
+    const float omega = 2.0f * 3.14159265f * defaults.contactHertz;
+    const float biasRate = omega / (2.0f * defaults.contactDampingRatio + h * omega);
+    const float ask = biasRate * (0.01f - defaults.penetrationSlop);  // m/s, one row at the handover
+    for (const int count : {10, 20}) {
+        World world({.enableSleep = false});
+        const float firstX = -0.15f * static_cast<float>(count - 1);  // centred
+        const std::vector<BodyId> boxes = rowHalfOverlapping(world, count, 0.3f, firstX, 0.0f);
+        for (int step = 0; step < 180; ++step) world.step(kDt);
+        double kinetic = 0.0, unrelaxed = 0.0;
+        for (int i = 0; i < count; ++i) {
+            const BodyId b = boxes[static_cast<std::size_t>(i)];
+            kinetic += 0.5 * world.mass(b) * lengthSquared(world.linearVelocity(b)) +
+                       0.5 * world.rotationalInertia(b) * world.angularVelocity(b) * world.angularVelocity(b);
+            const double v = std::abs(i - 0.5 * (count - 1)) * ask;
+            unrelaxed += 0.5 * world.mass(b) * v * v;
+        }
+        std::printf("[figure] row of %d frictionless boxes created half overlapping: kinetic energy after 3 s "
+                    "%.4f J, unrelaxed estimate %.4f J\n",
+                    count, kinetic, unrelaxed);
+        EXPECT_LE(kinetic, 0.5 * unrelaxed) << count << " boxes";
+    }
 }
 
 // 50 unit boxes created at one point on the ground, seeds 1 to 5. The push

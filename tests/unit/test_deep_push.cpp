@@ -93,14 +93,16 @@ float fastestPush(Vec2 gravity, bool supported, int count) {
     return fastest;
 }
 
-// A row long enough to ask for more than the sideways limit (8c converged).
-// With sixteen sweeps a substep, which do not converge along it, one
-// substep's push left its last body at 13.4 m/s of the 15, so a step's four
-// substeps are taken; with the sweeps run on until they converge
-// (kMaxPushSweeps, deep_overlap.cpp) one substep reaches the limit as well.
-constexpr int kLongRow = 8;
+// A row long enough to ask for more than the sideways limit: its last body,
+// unlimited, would be pushed at kLongRow·c, three times the cap beyond the
+// limit. With sixteen sweeps a substep, which do not converge along it, one
+// substep's push left the last body of a row of 8 at 13.4 m/s of a limit of
+// 15, so a step's four substeps are taken; with the sweeps run on until they
+// converge (kMaxPushSweeps, deep_overlap.cpp) one substep reaches the limit
+// as well.
+constexpr int kLongRow = static_cast<int>(kSidewaysPushFactor) + 3;
 
-// Float rounding of limitTo's rescaling (a few ulps of the limit, 15 m/s).
+// Float rounding of limitTo's rescaling (a few ulps of the limit, 30 m/s).
 constexpr float kRounding = 1e-5f;
 
 TEST(DeepPush, AcrossGravityTheSidewaysLimitForEveryBody) {
