@@ -344,6 +344,16 @@ void storeWideImpulses(WorldState& w, int first, int last, float invH) {
     }
 }
 
+/// Whether mask m has at most two bits set: std::popcount(m) <= 2 without
+/// the library call std::popcount becomes on x86-64's baseline (no popcnt
+/// instruction), which tiltCandidate made twice for every contact.
+constexpr bool atMostTwoBits(std::uint32_t m) {
+    m &= m - 1u;  // the lowest bit cleared
+    m &= m - 1u;  // and the next
+    return m == 0u;
+}
+static_assert(atMostTwoBits(0u) && atMostTwoBits(0x80000001u) && !atMostTwoBits(0x7u) && !atMostTwoBits(~0u));
+
 /// Whether a contact's row may be a tilt row of a column (contact_tilt.cpp):
 /// two points that both carried load when the step began, not an overlap
 /// since its bodies were created or moved (pushed apart, not resting), and
@@ -354,7 +364,7 @@ inline bool tiltCandidate(const SolverArrays& s, const Contact& ct) {
         ct.overlapFromStart)
         return false;
     const std::uint32_t* masks = s.contactColourMasks.data();
-    return std::popcount(masks[ct.bodyA]) <= 2 && std::popcount(masks[ct.bodyB]) <= 2;
+    return atMostTwoBits(masks[ct.bodyA]) && atMostTwoBits(masks[ct.bodyB]);
 }
 
 /// The contact rows of this step (after colourContacts). soft_step without
