@@ -800,8 +800,8 @@ void settleColdContacts(WorldState& w, float h) {
 // overlap out through the velocities, and along a row of bodies those
 // pushes add up. A row of 80 boxes of 0.6 m created half overlapping without
 // friction slid apart, each box at a speed in proportion to its distance from
-// the middle, at 1.022 times its energy; relaxed again, 1.012
-// (docs/validation.md, "The sideways limit again").
+// the middle, at 1.021 times its energy with the sideways push at 10c;
+// relaxed again, 1.011 (docs/validation.md, "The sideways limit again").
 constexpr int kDeepRelaxSweeps = 8;
 constexpr float kDeepRelaxTolerance = 0.003f;
 

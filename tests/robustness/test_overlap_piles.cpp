@@ -403,10 +403,10 @@ TEST(OverlapPiles, TwentyCapsulesAtOnePointOnTheGroundPartWithinTwoSeconds) {
 // rounded up. With the sideways limit at 10c, the last of a created overlap
 // relaxed again and level deep rows never stalled (docs/validation.md, "The
 // sideways limit again"), 2.13 to 3.18 s (seeds 1, 3 and 5: 2.77, 2.63 and
-// 2.82 s): 3.5 s, 3.18 s rounded up to the half second. (Before the push started each step from half of where the
-// last one ended, deep_overlap.cpp, kPushCarry, a box wedged between two
-// others was pushed one way in one step and back in the next, and these
-// layouts parted after 9.05 to 9.33 s.)
+// 2.82 s): 3.5 s, 3.18 s rounded up to the half second. (Before the push
+// started each step from half of where the last one ended, deep_overlap.cpp,
+// kPushCarry, a box wedged between two others was pushed one way in one
+// step and back in the next, and these layouts parted after 9.05 to 9.33 s.)
 TEST(OverlapPiles, FiftyBoxesAtOnePointOnTheGroundSpreadAtThePushLimit) {
     for (unsigned seed : {1u, 3u, 5u}) {
         const PileFigures f = airPile(Kind::box, 50, 1.0f, seed);
