@@ -141,6 +141,12 @@ void expectGentle(const PileFigures& f, const std::string& what) {
     EXPECT_LE(f.deepestAt2s, 0.02f) << what;
 }
 
+/// The time: the deepest contact within 2 cm by 2 s (and at all).
+void expectPartedInTime(const PileFigures& f, const std::string& what) {
+    EXPECT_GE(f.separatedAt, 0.0f) << what;
+    EXPECT_LE(f.separatedAt, 2.0f) << what;
+}
+
 // `count` square boxes of half-width `half` resting on a ground of friction
 // `friction` in `world`, each half inside the next (centres `half` apart),
 // the first centred at `firstX`.
@@ -203,8 +209,7 @@ TEST(OverlapPiles, InTheAirAtOnePoint) {
                                      std::to_string(seed);
             const PileFigures f = airPile(kind, 12, 4.0f, seed);
             print(f, what);
-            EXPECT_GE(f.separatedAt, 0.0f) << what;
-            EXPECT_LE(f.separatedAt, 2.0f) << what;
+            expectPartedInTime(f, what);
             EXPECT_LE(f.deepestAt2s, 0.02f) << what;
             EXPECT_LE(f.rise, 0.5f) << what;
             EXPECT_LE(f.speedExcess, 0.0f) << what;
@@ -244,8 +249,7 @@ TEST(OverlapPiles, OnTheGround) {
                                          " scattered on the ground, seed " + std::to_string(seed);
                 const PileFigures f = groundPile(kind, count, seed);
                 print(f, what);
-                EXPECT_GE(f.separatedAt, 0.0f) << what;
-                EXPECT_LE(f.separatedAt, 2.0f) << what;
+                expectPartedInTime(f, what);
                 EXPECT_LE(f.deepestAt2s, 0.02f) << what;
                 EXPECT_LE(f.speedExcess, 0.0f) << what;
                 EXPECT_LE(f.rise, 0.5f) << what;
@@ -350,8 +354,7 @@ TEST(OverlapPiles, TwentyAtOnePointOnTheGroundPartWithinTwoSeconds) {
             const std::string what = std::string("20 ") + kindName(kind) + " at one point on the ground, seed " +
                                      std::to_string(seed);
             expectGentle(f, what);
-            EXPECT_GE(f.separatedAt, 0.0f) << what;
-            EXPECT_LE(f.separatedAt, 2.0f) << what;
+            expectPartedInTime(f, what);
         }
 }
 
@@ -371,8 +374,7 @@ TEST(OverlapPiles, TwentyCapsulesAtOnePointOnTheGroundPartWithinTwoSeconds) {
         const std::string what = "20 capsules at one point on the ground, seed " + std::to_string(seed);
         expectNothingThrown(f, what);
         EXPECT_LE(f.deepestAt2s, 0.02f) << what;
-        EXPECT_GE(f.separatedAt, 0.0f) << what;
-        EXPECT_LE(f.separatedAt, 2.0f) << what;
+        expectPartedInTime(f, what);
     }
 }
 
@@ -443,8 +445,7 @@ TEST(OverlapPiles, FiftyBoxesAtOnePointOnTheGroundPartWithinTwoSecondsGainingNoE
         const PileFigures f = airPile(Kind::box, 50, 0.5f, seed);
         const std::string what = "50 boxes at one point on the ground, seed " + std::to_string(seed);
         expectGentle(f, what);
-        EXPECT_GE(f.separatedAt, 0.0f) << what;
-        EXPECT_LE(f.separatedAt, 2.0f) << what;
+        expectPartedInTime(f, what);
     }
 }
 
@@ -668,8 +669,7 @@ TEST(OverlapPiles, ARowCreatedHalfOverlappingOnTheGroundStaysFlat) {
                                  std::to_string(friction).substr(0, 3);
         expectGentle(f, what);
         std::printf("[figure] %s: largest tilt at 20 s %.4f rad\n", what.c_str(), tilt);
-        EXPECT_GE(f.separatedAt, 0.0f) << what;
-        EXPECT_LE(f.separatedAt, 2.0f) << what;
+        expectPartedInTime(f, what);
     }
 }
 
@@ -707,8 +707,7 @@ TEST(OverlapPiles, ALongRowCreatedHalfOverlappingOnTheGroundPartsGently) {
                                      " boxes of 0.6 m half overlapping on the ground, friction " +
                                      std::to_string(friction).substr(0, 3);
             expectGentle(f, what);
-            EXPECT_GE(f.separatedAt, 0.0f) << what;
-            EXPECT_LE(f.separatedAt, 2.0f) << what;
+            expectPartedInTime(f, what);
         }
 }
 
@@ -848,8 +847,7 @@ TEST(OverlapPiles, ASmallBoxUnderABigOneSlidesOutFromUnderIt) {
         const std::string what = "0.25 m box on the ground under a 0.9 m box " + std::to_string(depth).substr(0, 4) +
                                  " m deep in it";
         expectGentle(f, what);
-        EXPECT_GE(f.separatedAt, 0.0f) << what;
-        EXPECT_LE(f.separatedAt, 2.0f) << what;
+        expectPartedInTime(f, what);
     }
 }
 
@@ -875,8 +873,7 @@ TEST(OverlapPiles, ABoxInsideALongPlankOnTheGroundParts) {
         const PileFigures f = measure(world, {plank, box});
         const std::string what = "box 0.2 m deep in a plank " + std::to_string(static_cast<int>(length)) + " m long";
         expectGentle(f, what);
-        EXPECT_GE(f.separatedAt, 0.0f) << what;
-        EXPECT_LE(f.separatedAt, 2.0f) << what;
+        expectPartedInTime(f, what);
     }
 }
 
