@@ -72,8 +72,9 @@ struct WorldSettings {
     /// Largest speed used to push overlapping bodies apart (m/s). Overlaps
     /// deeper than 5 cm in soft_step (less between thin shapes) are pushed on
     /// pseudo-velocities that leave no velocity behind, until they are within
-    /// a quarter of that depth; those may move a body across gravity at three
-    /// times this (a sideways move lifts nothing), up or down at most this.
+    /// a quarter of that depth (overlaps bodies were created or moved into:
+    /// within 1 cm); those may move a body across gravity at ten times this (a
+    /// sideways move lifts nothing), up or down at most this.
     float maxPushSpeed = 3.0f;
     /// Contact stiffness (Hz) and damping ratio for soft_step. The stiffness is
     /// capped at a quarter of the substep rate (60 Hz at 60 Hz × 4 substeps),
