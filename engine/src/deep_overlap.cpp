@@ -592,6 +592,8 @@ void prepareDeepOverlaps(WorldState& w) {
     std::sort(last.begin(), last.end(), byContact);
     s.pushCarry.clear();
     s.pushStalled.assign(s.states.size(), 0);
+    // Steeper than kShoveLevel: the rows that do not shove, and the deep rows that may stall.
+    auto steep = [&](const ContactConstraint& cc) { return std::abs(dot(cc.normal, g)) > kShoveLevel * gl; };
     forEachDeepRow(s, [&](ContactConstraint& cc, const SidePush* sp) {
         const Contact& ct = w.contacts[cc.contact];
         const Vec2 apart = w.bodies[ct.bodyB].center - w.bodies[ct.bodyA].center;
@@ -600,7 +602,7 @@ void prepareDeepOverlaps(WorldState& w) {
         const auto it = std::lower_bound(last.begin(), last.end(), key, byContact);
         if (it == last.end() || it->contact != key.contact || it->shapeA != key.shapeA || it->shapeB != key.shapeB)
             return;
-        if (length(apart - it->apart) < kStallMove && std::abs(dot(cc.normal, g)) > kShoveLevel * gl) {
+        if (length(apart - it->apart) < kStallMove && steep(cc)) {
             s.pushStalled[static_cast<std::size_t>(cc.a)] = 1;
             s.pushStalled[static_cast<std::size_t>(cc.b)] = 1;
         }
@@ -619,7 +621,7 @@ void prepareDeepOverlaps(WorldState& w) {
         if (s.pushStalled[a] || s.pushStalled[b]) continue;
         if (!(w.bodies[s.stateBodies[a]].gravityScale > 0.0f) || !(w.bodies[s.stateBodies[b]].gravityScale > 0.0f))
             continue;
-        if (std::abs(dot(cc.normal, g)) > kShoveLevel * gl) continue;
+        if (steep(cc)) continue;
         s.pushShoves.push_back(static_cast<int>(r));
     }
 }

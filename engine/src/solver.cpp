@@ -304,6 +304,13 @@ void listRelaxedAgainBlocks(WorldState& w, const RowContext& x, bool fromStart) 
     if (flags != 0) listBlocks(s, flags, s.deepBlocks, s.deepBlockStart);
 }
 
+/// The blocks swept again in this step, from the kWideFound flags some lane
+/// has (`found`): the cold ones (settleColdContacts) and those relaxed again.
+void listSweptAgainBlocks(WorldState& w, const RowContext& x, std::uint32_t found) {
+    if (found & kWideCold) listBlocks(w.solver, kWideCold, w.solver.coldBlocks, w.solver.coldBlockStart);
+    listRelaxedAgainBlocks(w, x, (found & kWideFromStart) != 0);
+}
+
 /// Where the row at place `inGroup` of coloured row group `group` lies
 /// among the wide blocks (prepareContactRows writes it there,
 /// storeWideImpulses reads it back).
@@ -407,9 +414,7 @@ void prepareContactRows(WorldState& w, float h, bool soft) {
             if (lanes) found.fetch_or(lanes, std::memory_order_relaxed);
         };
         w.runner.run(blocks, kPackGrain, pack);
-        const std::uint32_t lanes = found.load(std::memory_order_relaxed);
-        if (lanes & kWideCold) listBlocks(s, kWideCold, s.coldBlocks, s.coldBlockStart);
-        listRelaxedAgainBlocks(w, x, (lanes & kWideFromStart) != 0);
+        listSweptAgainBlocks(w, x, found.load(std::memory_order_relaxed));
         // The tilt rows' candidates (contact_tilt.cpp), from their lanes.
         for (int k = 0; k < (w.settings.exactColumnTilt ? blocks : 0); ++k) {
             const WideContactBlock& blk = s.wideContacts[static_cast<std::size_t>(k)];
@@ -484,9 +489,7 @@ void prepareContactRows(WorldState& w, float h, bool soft) {
         for (int lane = count % 4; lane < 4; ++lane)
             packEmptyWideContactLane(s.wideContacts[k], s.wideContactCold[k], lane, x.zeroState);
     }
-    const std::uint32_t lanes = found.load(std::memory_order_relaxed);
-    if (lanes & kWideCold) listBlocks(s, kWideCold, s.coldBlocks, s.coldBlockStart);
-    listRelaxedAgainBlocks(w, x, (lanes & kWideFromStart) != 0);
+    listSweptAgainBlocks(w, x, found.load(std::memory_order_relaxed));
     // The candidates of the columns' tilt rows (contact_tilt.cpp), marked
     // by the workers that prepared them, in the order of the active contacts.
     for (std::size_t k = 0; k < (tilt ? activeCount : 0); ++k) {
