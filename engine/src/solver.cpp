@@ -881,6 +881,7 @@ void forEachStepArray(WorldState& w, F&& f) {
     f(s.pushOffFixedLift);
     f(s.pushShoves);
     f(s.pushShoveImpulses);
+    f(s.pushShoveAxes);
     f(s.pushStalled);
     f(s.pushWalled);
     f(s.supportStart);

@@ -145,6 +145,10 @@ struct SolverArrays {
     /// (deep_overlap.cpp, shoveTouching).
     std::vector<int> pushShoves;
     std::vector<float> pushShoveImpulses;
+    /// Per shove: the level direction it shoves along (unit, across gravity)
+    /// when its row is steeper than level (deep_overlap.cpp, kShoveLevel), or
+    /// zero for a level row, which shoves along its normal.
+    std::vector<Vec2> pushShoveAxes;
     /// Per state: in a deep row whose two bodies moved less than kStallMove
     /// relative to each other over the last step (deep_overlap.cpp).
     std::vector<std::uint8_t> pushStalled;

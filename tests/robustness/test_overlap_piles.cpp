@@ -711,6 +711,63 @@ TEST(OverlapPiles, ALongRowCreatedHalfOverlappingOnTheGroundPartsGently) {
         }
 }
 
+// A body pushed out of an overlap shoves a body leaning on it (deep_overlap.cpp,
+// kShoveSteepest). Two unit boxes created 0.3 m into each other on the
+// ground, and a capsule (1.8 m long, radius 0.1) leaning on the far top
+// corner of one of them, its foot on the ground, its side resting on the
+// corner: the contact's normal is as far from level as the capsule is from
+// upright. The push slides the box out of its neighbour, towards the
+// capsule. Before steeper rows shoved along their level part, the box was
+// driven into the capsule, 2.4 to 3.7 cm deep at leans of 0.3 to 0.8 rad
+// (17° to 46°), which the soft row then pushed out through the velocities;
+// in a pile of capsules fallen against each other that went back and forth
+// for a second (docs/validation.md, "Shoves across leaning rows"). Shoved,
+// the capsule slides along and the contact stays within the penetration
+// slop (5 mm), the depth a soft row rests at: what is left is its sag under
+// the capsule's weight, a tenth of a millimetre at the contacts' stiffness
+// (g/ω², ω = 2π·50 Hz), and 0.8 mm at most was measured. The boxes part too.
+TEST(OverlapPiles, ABodyPushedOutOfAnOverlapShovesABodyLeaningOnIt) {
+    for (const float lean : {0.3f, 0.45f, 0.6f, 0.8f}) {
+        World world({.enableSleep = false});
+        BodyId ground = world.createBody({.type = BodyType::static_body});
+        world.createPolygonShape(ground, ShapeDef{.friction = 0.6f}, makeOffsetBox(50.0f, 1.0f, {0.0f, -1.0f}, 0.0f));
+        const float overlap = 0.3f;
+        const BodyId left = makeBody(world, Kind::box, {-0.5f + 0.5f * overlap, 0.5f}, 0.0f);
+        const BodyId pushed = makeBody(world, Kind::box, {0.5f - 0.5f * overlap, 0.5f}, 0.0f);
+        // The capsule's axis u leans towards the boxes; its side touches the
+        // corner C along n, and its foot's centre lies one radius up.
+        const float half = 0.8f, radius = 0.1f;
+        const Vec2 corner{1.0f - 0.5f * overlap, 1.0f};
+        const Vec2 u{-std::sin(lean), std::cos(lean)}, n{std::cos(lean), std::sin(lean)};
+        const float along = (corner.y + radius * n.y - radius) / u.y;  // foot to corner, along u
+        const Vec2 foot = corner - along * u + radius * n;
+        ASSERT_LT(along, 2.0f * half);
+        const BodyId leaning = world.createBody(
+            {.type = BodyType::dynamic_body, .position = foot + half * u, .angle = lean});
+        world.createCapsuleShape(leaning, ShapeDef{.density = 1.0f, .friction = 0.6f},
+                                 Capsule{{0.0f, -half}, {0.0f, half}, radius});
+        auto depth = [&](BodyId a, BodyId b) {
+            float d = 0.0f;
+            for (const ContactData& c : world.contacts()) {
+                const BodyId x = world.shapeBody(c.shapeA), y = world.shapeBody(c.shapeB);
+                if (!((x == a && y == b) || (x == b && y == a))) continue;
+                for (int j = 0; j < c.manifold.pointCount; ++j) d = std::min(d, c.manifold.points[j].separation);
+            }
+            return -d;
+        };
+        float deepestOnCapsule = 0.0f;
+        for (int step = 0; step < 180; ++step) {
+            world.step(kDt);
+            deepestOnCapsule = std::max(deepestOnCapsule, depth(pushed, leaning));
+        }
+        const std::string what = "capsule leaning " + std::to_string(lean).substr(0, 4) + " rad";
+        std::printf("[figure] %s: deepest on the capsule %.4f m, boxes %.4f m deep at 3 s\n", what.c_str(),
+                    deepestOnCapsule, depth(left, pushed));
+        EXPECT_LE(deepestOnCapsule, world.settings().penetrationSlop) << what;
+        EXPECT_LE(depth(left, pushed), 0.02f) << what;  // the 2 cm, well before 3 s
+    }
+}
+
 // Rows of 10 and 20 boxes of 0.6 m created half overlapping on a ground
 // without friction, which keeps whatever velocity the push leaves. A created
 // overlap is pushed on pseudo-velocities until it is within kStartOverlapDeep
