@@ -194,8 +194,9 @@ constexpr float kShoveLevel = 0.25881904f;
 // pseudo-velocities along it), so that the shoves' sweeps solve a symmetric
 // system: measured at the contact points along the normal and applied along
 // the level, the sweeps grew the impulses without bound in piles whose shoves
-// formed loops, until the push was dropped as non-finite (dropNonFinitePush)
-// and 35 of the probe's piles stayed frozen, up to 1.44 m deep for 20 s.
+// formed loops, until the pushed bodies' pseudo-velocities were dropped as
+// non-finite (dropNonFinitePush) and 35 of the probe's piles stayed frozen,
+// up to 1.44 m deep for 20 s.
 // Steeper still (a body resting on another) it does not shove: a level shove
 // there would carry the upper body along with the lower.
 constexpr float kShoveSteepest = 0.8660254f;
