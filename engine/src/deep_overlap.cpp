@@ -603,7 +603,25 @@ void prepareDeepOverlaps(WorldState& w) {
             invMassB = sum * (movedB / clear);
             invMassA = sum - invMassB;
         }
-        s.sidePushes.push_back({r, toSide <= toOtherSide ? side : -side, clear, invMassA, invMassB});
+        const Vec2 axis = toSide <= toOtherSide ? side : -side;
+        s.sidePushes.push_back({r, axis, clear, invMassA, invMassB});
+        // The pair does not slide back into each other along the push's axis
+        // while it is pushed apart along it: their relative velocity against
+        // the push is taken out, an exchange of momentum between the two
+        // along the axis (as a rigid row would make; the kinetic energy can
+        // only fall). Left in, it cancelled the push: on a frictionless
+        // ground, where nothing else takes it out, a circle deep in a flat
+        // box slid one way at the velocities' 2.3 m/s while the push moved
+        // it back at as much, the pair drifting along together 0.25 m deep
+        // for 18 s (docs/validation.md, "Shoves across leaning rows").
+        Vec2& vA = s.states[static_cast<std::size_t>(cc.a)].v;
+        Vec2& vB = s.states[static_cast<std::size_t>(cc.b)].v;
+        const float against = dot(vB - vA, axis);
+        if (against < 0.0f) {
+            const Vec2 P = (-against / (cc.invMassA + cc.invMassB)) * axis;
+            vA = mulSub(vA, cc.invMassA, P);
+            vB = mulAdd(vB, cc.invMassB, P);
+        }
     }
     // Each row's push starts from kPushCarry of where the last step's ended,
     // if it was pushed the same way (sideways or along its normal).

@@ -768,6 +768,63 @@ TEST(OverlapPiles, ABodyPushedOutOfAnOverlapShovesABodyLeaningOnIt) {
     }
 }
 
+// A pair pushed apart sideways does not slide back into itself (deep_overlap.cpp,
+// prepareDeepOverlaps). A circle of radius 0.24 m created 12 cm deep in the top
+// of a flat box (0.7 × 0.27 m) on a frictionless ground, 0.15 m off its centre,
+// so that the push slides it out towards that side (it may not lift it above
+// where it was created), while the two slide the other way relative to each
+// other at 2.3 m/s (the box at 1.7 m/s one way, the circle at 0.6 m/s the
+// other). Before, the push moved the circle back as fast as the velocities
+// slid it on, and nothing on a frictionless ground takes velocities out: the
+// pair drifted along together, 12 cm deep, for as long as it ran (a pile of
+// the outside probe did so for 18 s, 0.25 m deep; docs/validation.md,
+// "Shoves across leaning rows"). Now the velocity against the push is
+// exchanged between the two (momentum kept, kinetic energy lost): the pair
+// parts within the 2 s and 2 cm. No horizontal force acts from
+// outside (the ground's normal is vertical, frictionless), so the total
+// momentum along x is the start's up to float rounding (1e-4 of it, far
+// above a few hundred steps' rounding, far below the 0.2 kg·m/s a one-sided
+// change would make); and a passive system gains no energy (the 1 %).
+TEST(OverlapPiles, APairPushedApartSidewaysDoesNotSlideBackIntoItself) {
+    World world({.enableSleep = false});
+    BodyId ground = world.createBody({.type = BodyType::static_body});
+    world.createPolygonShape(ground, ShapeDef{.friction = 0.0f}, makeOffsetBox(200.0f, 1.0f, {0.0f, -1.0f}, 0.0f));
+    const BodyId box = world.createBody({.type = BodyType::dynamic_body, .position = {0.0f, 0.135f}});
+    world.createPolygonShape(box, ShapeDef{.density = 1.0f, .friction = 0.0f}, makeBox(0.35f, 0.135f));
+    const BodyId circle = world.createBody(
+        {.type = BodyType::dynamic_body, .position = {0.15f, 0.27f + 0.24f - 0.12f}});
+    world.createCircleShape(circle, ShapeDef{.density = 1.0f, .friction = 0.0f}, Circle{{0.0f, 0.0f}, 0.24f});
+    world.setLinearVelocity(box, {1.7f, 0.0f});
+    world.setLinearVelocity(circle, {-0.6f, 0.0f});
+    const std::vector<BodyId> pair{box, circle};
+    auto momentumX = [&] {
+        float p = 0.0f;
+        for (const BodyId b : pair) p += world.mass(b) * world.linearVelocity(b).x;
+        return p;
+    };
+    auto energy = [&] {
+        float e = 0.0f;
+        for (const BodyId b : pair) {
+            const Vec2 v = world.linearVelocity(b);
+            const float w = world.angularVelocity(b);
+            e += 0.5f * world.mass(b) * dot(v, v) + 0.5f * world.rotationalInertia(b) * w * w +
+                 world.mass(b) * kG * world.worldCenterOfMass(b).y;
+        }
+        return e;
+    };
+    const float p0 = momentumX(), e0 = energy();
+    float peak = e0;
+    for (int step = 1; step <= 120; ++step) {
+        world.step(kDt);
+        peak = std::max(peak, energy());
+        EXPECT_NEAR(momentumX(), p0, 1e-4f * std::abs(p0)) << "step " << step;
+    }
+    std::printf("[figure] circle deep in a sliding box: %.4f m deep at 2 s, energy peak %.4f of the start\n",
+                deepest(world), peak / e0);
+    EXPECT_LE(deepest(world), 0.02f);
+    EXPECT_LE(peak, 1.01f * e0);
+}
+
 // Rows of 10 and 20 boxes of 0.6 m created half overlapping on a ground
 // without friction, which keeps whatever velocity the push leaves. A created
 // overlap is pushed on pseudo-velocities until it is within kStartOverlapDeep
