@@ -391,8 +391,9 @@ void guardAgainstImmovable(SolverArrays& s) {
 
 /// One sweep of the shoves (SolverArrays::pushShoves): each shallow row
 /// between two moving bodies, one of them pushed, takes an impulse along its
-/// normal through the two centres (on their translation alone) that keeps
-/// it from closing on the pseudo-velocities, so a pushed body shoves the body
+/// normal (a row steeper than kShoveLevel: along its level part,
+/// kShoveSteepest) through the two centres (on their translation alone) that
+/// keeps it from closing on the pseudo-velocities, so a pushed body shoves the body
 /// beside it along instead of driving into it. Driven in, the new overlap was
 /// the soft rows' to part, through the velocities: 50 unit boxes created at
 /// one point on the ground spread into one layer and then took most of a
@@ -634,7 +635,8 @@ void prepareDeepOverlaps(WorldState& w) {
     std::sort(last.begin(), last.end(), byContact);
     s.pushCarry.clear();
     s.pushStalled.assign(s.states.size(), 0);
-    // Steeper than kShoveLevel: the rows that do not shove, and the deep rows that may stall.
+    // Steeper than kShoveLevel: the rows that shove along their level part
+    // alone (kShoveSteepest), and the deep rows that may stall.
     auto steep = [&](const ContactConstraint& cc) { return std::abs(dot(cc.normal, g)) > kShoveLevel * gl; };
     forEachDeepRow(s, [&](ContactConstraint& cc, const SidePush* sp) {
         const Contact& ct = w.contacts[cc.contact];
