@@ -2413,7 +2413,10 @@ int main(int argc, char** argv) {
           "its first 600 steps bit-identical but ragdoll, whose limbs created overlapping shove across\n"
           "leaning rows (its deepest contact 3.8 cm against 4.3, its energy never above the start either way),\n"
           "and stack5_overlap, whose pushed pair loses its sliding (its named boxes within 0.1 mm of where\n"
-          "they ended, its peak energy 255.64 J either way).\n"
+          "they ended, its peak energy 255.64 J either way). Cost, the engine against itself, three\n"
+          "interleaved rounds of 50 boxes and of 50 capsules at one point on the ground (seeds 1 to 5, their\n"
+          "first 5 s): 0.264 to 0.295 ms a step against 0.268 to 0.276 for the boxes, 0.267 to 0.307 against\n"
+          "0.279 to 0.308 for the capsules, within the machine's noise.\n"
           "\n";
     md << "### Variants beyond the issue's layouts\n\n"
           "Probed apart from the test suite (defaults, sleeping off; figures not part of a test):\n\n"
