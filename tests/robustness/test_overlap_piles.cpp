@@ -783,7 +783,7 @@ TEST(OverlapPiles, ABodyPushedOutOfAnOverlapShovesABodyLeaningOnIt) {
 // parts within the 2 s and 2 cm. No horizontal force acts from
 // outside (the ground's normal is vertical, frictionless), so the total
 // momentum along x is the start's up to float rounding (1e-4 of it, far
-// above a few hundred steps' rounding, far below the 0.2 kg·m/s a one-sided
+// above a few hundred steps' rounding, far below the 0.4 kg·m/s a one-sided
 // change would make); and a passive system gains no energy (the 1 %).
 TEST(OverlapPiles, APairPushedApartSidewaysDoesNotSlideBackIntoItself) {
     World world({.enableSleep = false});
