@@ -285,6 +285,53 @@ void carryImpulses(Contact& ct, const std::uint16_t* lastIds, int lastCount, con
     }
 }
 
+/// updateManifold for two circles with neither a sensor, a seam rule nor a
+/// pre-solve callback (every contact of a pile of balls): the same steps in
+/// the same order and the same bits, without the questions two circles
+/// answer already. Such a pair is never framed (canPersist: two round shapes
+/// have no face to keep), the feature id of its one point is always 0 (so
+/// the impulses carry over exactly when the point count stays), and its
+/// motion-kept point needs no side test (computeManifold).
+Update updateCirclePair(WorldState& w, Contact& ct) {
+    const Body& A = w.bodies[ct.bodyA];
+    const Body& B = w.bodies[ct.bodyB];
+    const Circle& ca = w.shapes[ct.shapeA].geometry.circle;
+    const Circle& cb = w.shapes[ct.shapeB].geometry.circle;
+    ct.foundAfterStrike = false;
+    const int lastCount = ct.manifold.pointCount;
+    Manifold& m = ct.manifold;
+    const float spec = w.settings.speculativeDistance;
+    const float dt = w.stepDt;
+    // computeManifold's bound and its kept point, in its operations.
+    const float bound = dt * (length(A.v) + std::abs(A.w) * std::max(A.reach, 0.0f) + length(B.v) +
+                              std::abs(B.w) * std::max(B.reach, 0.0f));
+    const bool bounded = bound > 0.0f && std::isfinite(bound);
+    writeCircleManifold(ca, A.xf, cb, B.xf, bounded ? spec + bound : spec, m);
+    if (bounded && m.pointCount == 1 && m.points[0].separation > spec) {
+        const ManifoldPoint& mp = m.points[0];
+        const Vec2 n = m.normal;
+        const Vec2 vA = A.v + cross(A.w, mp.point - A.center), vB = B.v + cross(B.w, mp.point - B.center);
+        const float closing = std::max(dot(vA, n), 0.0f) + std::max(-dot(vB, n), 0.0f);
+        if (mp.separation > spec + dt * closing) m.pointCount = 0;
+    }
+    const bool touching = m.pointCount > 0;
+    if (touching)
+        markDepth(w, ct, A, B);
+    else if (ct.stillDeep)
+        ct.stillDeep = false;
+    if (m.pointCount != lastCount) {  // carryImpulses: a new point starts from zero
+        for (int i = 0; i < 2; ++i) {
+            ct.normalImpulse[i] = 0.0f;
+            ct.tangentImpulse[i] = 0.0f;
+            ct.restLoad[i] = 0;
+        }
+    }
+    ct.touchBegan = touching && !ct.touching;
+    ct.framed = false;
+    if (touching && ct.touching && !ct.enableHitEvents) return Update::kept;
+    return touching ? Update::touching : Update::apart;
+}
+
 /// The manifold part of a contact's update: the new manifold (kept or
 /// computed), seam ghosts dropped, the pre-solve callback, the impulses
 /// carried over by feature id, the frame for reuse. Writes this contact
@@ -294,6 +341,7 @@ void carryImpulses(Contact& ct, const std::uint16_t* lastIds, int lastCount, con
 Update updateManifold(WorldState& w, int c) {
     Contact& ct = w.contacts[c];
     if (!overlaps(w.broadPhase.fatBox(ct.shapeA), w.broadPhase.fatBox(ct.shapeB))) return Update::parted;
+    if (ct.roundA && ct.roundB && !ct.isSensor && !ct.seamRule && !w.preSolve) return updateCirclePair(w, ct);
     const Body& bodyA = w.bodies[ct.bodyA];
     const Body& bodyB = w.bodies[ct.bodyB];
     // A touching flat pair that has barely moved keeps its manifold (same ids,

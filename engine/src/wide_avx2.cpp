@@ -141,6 +141,96 @@ struct Lanes8 {
     }
 };
 
+/// Two lane policies' blocks swept at once (TwinLanes: four contact blocks
+/// of one colour, sixteen lanes in two AVX registers per value). Every
+/// operation becomes two independent instructions, one per half, so the two
+/// halves' chains of dependent arithmetic overlap. A sweep of one block pair
+/// is a chain (gather, the normal row, the friction row on the velocities it
+/// left, scatter) longer than the core can look ahead of, so consecutive
+/// pairs hardly overlapped. Swept two pairs together, pyramid100's step took
+/// 7 % less time; four pairs together spilled registers and were slower than
+/// one (docs/performance.md, "Two block pairs at once"). Each lane still sees
+/// the same operations in the same order, so the bits are the same.
+template <class T>
+struct Twin {
+    T lo, hi;
+};
+template <class T>
+I2D_AVX Twin<T> operator+(Twin<T> a, Twin<T> b) {
+    return {a.lo + b.lo, a.hi + b.hi};
+}
+template <class T>
+I2D_AVX Twin<T> operator-(Twin<T> a, Twin<T> b) {
+    return {a.lo - b.lo, a.hi - b.hi};
+}
+template <class T>
+I2D_AVX Twin<T> operator*(Twin<T> a, Twin<T> b) {
+    return {a.lo * b.lo, a.hi * b.hi};
+}
+template <class T>
+I2D_AVX Twin<T> operator/(Twin<T> a, Twin<T> b) {
+    return {a.lo / b.lo, a.hi / b.hi};
+}
+template <class T>
+I2D_AVX Twin<T> operator-(Twin<T> a) {
+    return {-a.lo, -a.hi};
+}
+template <class T>
+I2D_AVX auto operator<(Twin<T> a, Twin<T> b) {
+    return Twin<decltype(a.lo < b.lo)>{a.lo < b.lo, a.hi < b.hi};
+}
+template <class T>
+I2D_AVX auto operator>(Twin<T> a, Twin<T> b) {
+    return Twin<decltype(a.lo > b.lo)>{a.lo > b.lo, a.hi > b.hi};
+}
+template <class T>
+I2D_AVX Twin<T> operator&(Twin<T> a, Twin<T> b) {
+    return {a.lo & b.lo, a.hi & b.hi};
+}
+template <class T>
+I2D_AVX Twin<T> operator|(Twin<T> a, Twin<T> b) {
+    return {a.lo | b.lo, a.hi | b.hi};
+}
+template <class T>
+I2D_AVX Twin<T> andNot(Twin<T> a, Twin<T> b) {
+    return {andNot(a.lo, b.lo), andNot(a.hi, b.hi)};
+}
+template <class M, class T>
+I2D_AVX Twin<T> select(Twin<M> m, Twin<T> yes, Twin<T> no) {
+    return {select(m.lo, yes.lo, no.lo), select(m.hi, yes.hi, no.hi)};
+}
+
+template <class L>
+struct TwinLanes {
+    using V = Twin<typename L::V>;
+    using M = Twin<typename L::M>;
+    L p, q;
+    template <class F>
+    I2D_AVX V load(F f) const {
+        return {p.load(f), q.load(f)};
+    }
+    template <class F>
+    I2D_AVX void store(F f, V x) const {
+        p.store(f, x.lo), q.store(f, x.hi);
+    }
+    I2D_AVX static V splat(float x) { return {L::splat(x), L::splat(x)}; }
+    I2D_AVX V load(int j, PointField f) const { return {p.load(j, f), q.load(j, f)}; }
+    I2D_AVX void store(int j, PointField f, V x) const { p.store(j, f, x.lo), q.store(j, f, x.hi); }
+    I2D_AVX V loadMax(int j) const { return {p.loadMax(j), q.loadMax(j)}; }
+    I2D_AVX void storeMax(int j, V x) const { p.storeMax(j, x.lo), q.storeMax(j, x.hi); }
+    I2D_AVX M flags(std::uint32_t bits) const { return {p.flags(bits), q.flags(bits)}; }
+    I2D_AVX WideBodyT<V> gather(const BodyState* states, bool sideA) const {
+        const auto a = p.gather(states, sideA), b = q.gather(states, sideA);
+        return {{a.vx, b.vx},   {a.vy, b.vy},   {a.w, b.w},   {a.reserved, b.reserved},
+                {a.dpx, b.dpx}, {a.dpy, b.dpy}, {a.qc, b.qc}, {a.qs, b.qs}};
+    }
+    I2D_AVX void scatter(BodyState* states, bool sideA, const WideBodyT<V>& b) const {
+        p.scatter(states, sideA, {b.vx.lo, b.vy.lo, b.w.lo, b.reserved.lo, b.dpx.lo, b.dpy.lo, b.qc.lo, b.qs.lo});
+        q.scatter(states, sideA, {b.vx.hi, b.vy.hi, b.w.hi, b.reserved.hi, b.dpx.hi, b.dpy.hi, b.qc.hi, b.qs.hi});
+    }
+};
+using Lanes16 = TwinLanes<Lanes8<WideContactBlock>>;
+
 /// One block of hinges (kHingeLanes = 8) in the lanes of Float8: each field
 /// one load.
 struct HingeLanes8 {
@@ -172,6 +262,18 @@ I2D_AVX Float8 maxv<Float8, Mask8>(Float8 a, Float8 b) {
 template <>
 I2D_AVX Float8 clampv<Float8, Mask8>(Float8 a, Float8 lo, Float8 hi) {
     return select(a < lo, lo, Float8{_mm256_min_ps(hi.v, a.v)});
+}
+// The same, half by half, for a Twin.
+template <class V, class M>
+requires requires(V v) { v.lo; }
+I2D_AVX V maxv(V a, V b) {
+    return {maxv<decltype(a.lo), decltype(M{}.lo)>(a.lo, b.lo), maxv<decltype(a.lo), decltype(M{}.lo)>(a.hi, b.hi)};
+}
+template <class V, class M>
+requires requires(V v) { v.lo; }
+I2D_AVX V clampv(V a, V lo, V hi) {
+    return {clampv<decltype(a.lo), decltype(M{}.lo)>(a.lo, lo.lo, hi.lo),
+            clampv<decltype(a.lo), decltype(M{}.lo)>(a.hi, lo.hi, hi.hi)};
 }
 
 // ---- Integration, eight bodies at a time ------------------------------------
@@ -272,8 +374,10 @@ int solveWideContactsAvx2(WideContactBlock* blocks, WideContactCold* cold, BodyS
                           int first, int last, int points) {
     int i = first;
     withPointCount(points, [&](auto n) {
-        for (; i + 1 < last; i += 2)
-            solveBlock<n()>(Lanes8<WideContactBlock>{blocks + i, blocks + i + 1, cold + i, cold + i + 1}, states, sp);
+        using L8 = Lanes8<WideContactBlock>;
+        auto l8 = [&](int k) { return L8{blocks + k, blocks + k + 1, cold + k, cold + k + 1}; };
+        for (; i + 3 < last; i += 4) solveBlock<n()>(Lanes16{l8(i), l8(i + 2)}, states, sp);
+        for (; i + 1 < last; i += 2) solveBlock<n()>(l8(i), states, sp);
     });
     return i;
 }

@@ -117,6 +117,10 @@ void expectAgreement(int lanes) {
     // Deep points whose rising impulse the carry cut (pushed apart) and kept
     // (a sag its load explains): both must occur for the test to cover them.
     int cut = 0, keptRising = 0;
+    // Groups of blocks the eight-lane sweep takes four at a time (sixteen
+    // lanes), with a pair left over (eight lanes), with an odd block left
+    // over (four lanes): each path must be run.
+    int fours = 0, pairsLeft = 0, oddsLeft = 0;
     for (unsigned seed = 1; seed <= 30; ++seed) {
         const int n = 41;  // not a multiple of four: the last block has empty lanes
         WorldState scalar({}, 1), wide({}, 2);
@@ -129,6 +133,11 @@ void expectAgreement(int lanes) {
         const int twoPoints = onePointRowsLast(scalar.solver);
         onePointRowsLast(s);
         const int twoBlocks = (twoPoints + 3) / 4, oneBlocks = (n - twoPoints + 3) / 4;
+        for (const int blocks : {twoBlocks, oneBlocks}) {
+            fours += blocks >= 4;
+            pairsLeft += blocks % 4 >= 2;
+            oddsLeft += blocks % 2;
+        }
         s.wideContacts.resizeForOverwrite(static_cast<std::size_t>(twoBlocks + oneBlocks));
         s.wideContactCold.resizeForOverwrite(static_cast<std::size_t>(twoBlocks + oneBlocks));
         for (int block = 0; block < twoBlocks; ++block) packWideContactBlock(s, block, 4 * block, twoPoints);
@@ -202,12 +211,16 @@ void expectAgreement(int lanes) {
     }
     EXPECT_GT(cut, 0);
     EXPECT_GT(keptRising, 0);
+    EXPECT_GT(fours, 0);
+    EXPECT_GT(pairsLeft, 0);
+    EXPECT_GT(oddsLeft, 0);
 }
 
 TEST(WideContact, AgreesBitForBitWithTheScalarRowsInFourLanes) { expectAgreement(4); }
 
-// Two blocks at a time in eight lanes where the CPU has AVX2 (41 rows are 11
-// blocks: five pairs and one block left to the four lanes).
+// Where the CPU has AVX2: each group's blocks four at a time in sixteen lanes
+// (two AVX registers a value, wide_avx2.cpp), then a pair in eight, the odd
+// one left to the four lanes.
 TEST(WideContact, AgreesBitForBitWithTheScalarRowsInEightLanes) {
     limitWideLanes(8);
     if (wideLanes() != 8) GTEST_SKIP() << "no AVX2 on this CPU (or a portable build)";
