@@ -724,11 +724,12 @@ void collide(WorldState& w) {
         std::uint8_t* results = updates.data() + processed;
         ContactLook* looks = gatheredLooks.data() + processed;
         auto manifolds = [&](int b, int e) {
-            for (int i = b; i < e; ++i) {
-                const Update update = updateManifold(w, round[i]);
-                results[i] = static_cast<std::uint8_t>(update);
-                look(round[i], update, looks[i]);
-            }
+            // The chunk's manifolds, then its looks: each pass a shorter chain
+            // per contact, so more contacts overlap in the core (the chunk's
+            // contacts stay in the first-level cache between the two). One
+            // pass doing both took 3 % longer on a pile of 1,000 circles.
+            for (int i = b; i < e; ++i) results[i] = static_cast<std::uint8_t>(updateManifold(w, round[i]));
+            for (int i = b; i < e; ++i) look(round[i], static_cast<Update>(results[i]), looks[i]);
         };
         w.runner.run(count, kCollideGrain, manifolds);
         for (; processed < roundEnd; ++processed) {
