@@ -22,6 +22,8 @@ struct Float4 {
     __m128 v;
 };
 inline Float4 splat(float x) { return {_mm_set1_ps(x)}; }
+/// The lanes a, b, c, d (in that order), from registers.
+inline Float4 make4(float a, float b, float c, float d) { return {_mm_setr_ps(a, b, c, d)}; }
 inline Float4 load4(const float* p) { return {_mm_loadu_ps(p)}; }
 inline void store4(float* p, Float4 a) { _mm_storeu_ps(p, a.v); }
 inline Float4 operator+(Float4 a, Float4 b) { return {_mm_add_ps(a.v, b.v)}; }
@@ -67,6 +69,7 @@ struct Float4 {
     float v[4];
 };
 inline Float4 splat(float x) { return {{x, x, x, x}}; }
+inline Float4 make4(float a, float b, float c, float d) { return {{a, b, c, d}}; }
 inline Float4 load4(const float* p) { return {{p[0], p[1], p[2], p[3]}}; }
 inline void store4(float* p, Float4 a) {
     for (int i = 0; i < 4; ++i) p[i] = a.v[i];

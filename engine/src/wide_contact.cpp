@@ -104,19 +104,22 @@ std::uint32_t prepareWideContactLanes(const WorldState& w, const RowContext& x, 
     std::uint32_t found = 0;
     // Each lane's contact and bodies are read one lane at a time, as
     // prepareContactRow reads them; what the arithmetic below does not change
-    // goes straight to the lane, the rest to these arrays as well. Lanes past
+    // goes straight to the lane, the rest into rows of four values, one row
+    // per lane, transposed below into one register per value. (Written lane
+    // by lane into arrays of four and loaded whole, each array's load waited
+    // for its four stores to reach the cache: a store-forwarding stall per
+    // array, a fifth of this function's time in a pile of circles.) Lanes past
     // `count` stay zero (their results are not written).
-    alignas(16) float nx[4], ny[4], mA[4], iA[4], mB[4], iB[4], biasRate[4];
-    alignas(16) float rAx[2][4], rAy[2][4], rBx[2][4], rBy[2][4], separation[2][4];
-    alignas(16) float restLoad[2][4], restCompliance[4], restSagMost[4];  // rest_load.hpp: restSag
-    std::uint32_t flags[4];
-    int pointCount[4];
-    if (count < 4) {
-        for (float* a : {nx, ny, mA, iA, mB, iB, biasRate, restCompliance, restSagMost}) std::fill_n(a, 4, 0.0f);
-        for (auto* a : {rAx, rAy, rBx, rBy, separation, restLoad}) std::fill_n(&a[0][0], 8, 0.0f);
-        std::fill_n(flags, 4, 0u);
-        std::fill_n(pointCount, 4, 0);
-    }
+    const Float4 zero = splat(0.0f), one = splat(1.0f);
+    Float4 base[4] = {zero, zero, zero, zero};    // n.x, n.y, A's inverse mass and inertia
+    Float4 masses[4] = {zero, zero, zero, zero};  // B's inverse mass and inertia, biasRate, rest compliance
+    // Per point: the arms (rA.x, rA.y, rB.x, rB.y), and its separation, rest
+    // load (rest_load.hpp: restSag), 1 where the lane has it, and restSag's
+    // most (the lane's deep-overlap depth).
+    Float4 arms[2][4] = {{zero, zero, zero, zero}, {zero, zero, zero, zero}};
+    Float4 gaps[2][4] = {{zero, zero, zero, zero}, {zero, zero, zero, zero}};
+    std::uint32_t flags[4] = {0, 0, 0, 0};
+    int pointCount[4] = {0, 0, 0, 0};
     const std::vector<RowBody>& rowBodies = w.solver.rowBodies;
     // A body with a state is read from its RowBody, one without (static or
     // asleep: immovable this step, few and shared by many contacts) from
@@ -140,28 +143,29 @@ std::uint32_t prepareWideContactLanes(const WorldState& w, const RowContext& x, 
         k.a[lane] = bA.state, k.b[lane] = bB.state;
         cold.row[lane] = -1;
         cold.contact[lane] = c;
-        mA[i] = k.mA[lane] = bA.invMass, iA[i] = k.iA[lane] = bA.invInertia;
-        mB[i] = k.mB[lane] = bB.invMass, iB[i] = k.iB[lane] = bB.invInertia;
+        k.mA[lane] = bA.invMass, k.iA[lane] = bA.invInertia;
+        k.mB[lane] = bB.invMass, k.iB[lane] = bB.invInertia;
         const Vec2 n = ct.manifold.normal;
-        nx[i] = k.nx[lane] = n.x, ny[i] = k.ny[lane] = n.y;
+        k.nx[lane] = n.x, k.ny[lane] = n.y;
+        base[i] = make4(n.x, n.y, bA.invMass, bA.invInertia);
         k.friction[lane] = ct.friction;
         k.tangentSpeed[lane] = surfaces ? surfaces[c].tangentSpeed : 0.0f;
         const bool immovable = againstImmovable(bA.invMass, bB.invMass);
-        biasRate[i] = (immovable ? x.staticSoft : x.dynamicSoft).biasRate;
-        restCompliance[i] = immovable ? x.staticRestCompliance : x.dynamicRestCompliance;
+        masses[i] = make4(bB.invMass, bB.invInertia, (immovable ? x.staticSoft : x.dynamicSoft).biasRate,
+                          immovable ? x.staticRestCompliance : x.dynamicRestCompliance);
         std::uint32_t f = immovable ? kWideImmovableSide : 0u;
         if (ct.roundA) f |= kWideRoundA;
         if (ct.roundB) f |= kWideRoundB;
         f |= moveFlags(bA.invMass, bA.invInertia, bB.invMass, bB.invInertia);
         const int points = pointCount[i] = ct.manifold.pointCount;
         const float deep = deepOverlapOf(ct);
-        restSagMost[i] = deep;
+        Vec2 laneRA[2], laneRB[2];  // the arms, for the look at a contact at rest below
         for (int j = 0; j < 2; ++j) {
             WideContactPoint& p = k.points[j];
             cold.maxNormalImpulse[j][lane] = 0.0f;
             if (j >= points) {
                 // No such point: zero in the lane, as in packLane.
-                rAx[j][i] = rAy[j][i] = rBx[j][i] = rBy[j][i] = separation[j][i] = restLoad[j][i] = 0.0f;
+                gaps[j][i] = make4(0.0f, 0.0f, 0.0f, deep);
                 p.rAx[lane] = p.rAy[lane] = p.rBx[lane] = p.rBy[lane] = 0.0f;
                 p.adjustedSeparation[lane] = p.normalMass[lane] = p.tangentMass[lane] = 0.0f;
                 p.normalImpulse[lane] = p.tangentImpulse[lane] = 0.0f;
@@ -172,11 +176,12 @@ std::uint32_t prepareWideContactLanes(const WorldState& w, const RowContext& x, 
             f |= j == 0 ? kWidePoint0 : kWidePoint1;
             Vec2 rA, rB;
             contactArms(ct, bA, bB, j, rA, rB);
-            rAx[j][i] = p.rAx[lane] = rA.x, rAy[j][i] = p.rAy[lane] = rA.y;
-            rBx[j][i] = p.rBx[lane] = rB.x, rBy[j][i] = p.rBy[lane] = rB.y;
+            laneRA[j] = rA, laneRB[j] = rB;
+            p.rAx[lane] = rA.x, p.rAy[lane] = rA.y;
+            p.rBx[lane] = rB.x, p.rBy[lane] = rB.y;
+            arms[j][i] = make4(rA.x, rA.y, rB.x, rB.y);
             const float shift = shifted ? impactShift(w, c, w.bodies[ct.bodyA], w.bodies[ct.bodyB], mp.point, n) : 0.0f;
-            separation[j][i] = mp.separation + shift;
-            restLoad[j][i] = restForce(ct.restLoad[j]);
+            gaps[j][i] = make4(mp.separation + shift, restForce(ct.restLoad[j]), 1.0f, deep);
             p.normalImpulse[lane] = x.warm * ct.normalImpulse[j];
             p.tangentImpulse[lane] = x.warm * ct.tangentImpulse[j];
         }
@@ -188,7 +193,7 @@ std::uint32_t prepareWideContactLanes(const WorldState& w, const RowContext& x, 
             float depth[2], speed[2];
             for (int j = 0; j < points; ++j) {
                 depth[j] = ct.manifold.points[j].separation;
-                const Vec2 rA{rAx[j][i], rAy[j][i]}, rB{rBx[j][i], rBy[j][i]};
+                const Vec2 rA = laneRA[j], rB = laneRB[j];
                 speed[j] = dot((sB.v + cross(sB.w, rB)) - (sA.v + cross(sA.w, rA)), n);
             }
             if (coldAtRest(x, points, depth, speed)) f |= kWideCold;
@@ -199,17 +204,24 @@ std::uint32_t prepareWideContactLanes(const WorldState& w, const RowContext& x, 
     }
     // The arithmetic of prepareContactRow and finishContactRow (soft_step),
     // four lanes at once, in the same order: the bits are the scalar row's.
-    const Float4 zero = splat(0.0f), one = splat(1.0f);
-    const Float4 n_x = load4(nx), n_y = load4(ny), t_x = n_y, t_y = -n_x;  // t = rightPerp(n)
-    const Float4 invMassA = load4(mA), invIA = load4(iA), invMassB = load4(mB), invIB = load4(iB);
+    transpose(base[0], base[1], base[2], base[3]);
+    transpose(masses[0], masses[1], masses[2], masses[3]);
+    const Float4 n_x = base[0], n_y = base[1], t_x = n_y, t_y = -n_x;  // t = rightPerp(n)
+    const Float4 invMassA = base[2], invIA = base[3], invMassB = masses[0], invIB = masses[1];
+    const Float4 biasRate = masses[2], restCompliance = masses[3];
     const Float4 mAB = invMassA + invMassB;
     Float4 kn[2], rnA[2], rnB[2], normalMass[2] = {zero, zero}, tangentMass[2] = {zero, zero};
     Float4 adjusted[2] = {zero, zero};
     Float4 deepest = zero;
     // Lanes of one point each (circles) skip the second point's arithmetic.
     const int points = std::max(std::max(pointCount[0], pointCount[1]), std::max(pointCount[2], pointCount[3]));
+    Float4 present[2] = {zero, zero};  // 1 where the lane has the point
     for (int j = 0; j < points; ++j) {
-        const Float4 ax = load4(rAx[j]), ay = load4(rAy[j]), bx = load4(rBx[j]), by = load4(rBy[j]);
+        transpose(arms[j][0], arms[j][1], arms[j][2], arms[j][3]);
+        transpose(gaps[j][0], gaps[j][1], gaps[j][2], gaps[j][3]);
+        const Float4 ax = arms[j][0], ay = arms[j][1], bx = arms[j][2], by = arms[j][3];
+        const Float4 separation = gaps[j][0], restSagMost = gaps[j][3];
+        present[j] = gaps[j][2];
         rnA[j] = ax * n_y - ay * n_x;  // cross(rA, n)
         rnB[j] = bx * n_y - by * n_x;
         kn[j] = mAB + invIA * rnA[j] * rnA[j] + invIB * rnB[j] * rnB[j];
@@ -219,18 +231,17 @@ std::uint32_t prepareWideContactLanes(const WorldState& w, const RowContext& x, 
         tangentMass[j] = select(kt > zero, one / kt, zero);
         const Float4 arm = (bx - ax) * n_x + (by - ay) * n_y;  // dot(rB − rA, n)
         // Less the sag of the load the point was built carrying (restSag).
-        const Float4 rest = load4(restLoad[j]);
-        const Float4 sag = rest * kn[j] * load4(restCompliance);
-        adjusted[j] = (load4(separation[j]) - arm) - select((rest > zero) & (sag <= load4(restSagMost)), sag, zero);
-        const std::uint32_t bit = j == 0 ? kWidePoint0 : kWidePoint1;
-        deepest = select(hasBits(flags, bit), min4(deepest, adjusted[j] + arm), deepest);
+        const Float4 rest = gaps[j][1];
+        const Float4 sag = rest * kn[j] * restCompliance;
+        adjusted[j] = (separation - arm) - select((rest > zero) & (sag <= restSagMost), sag, zero);
+        deepest = select(present[j] > zero, min4(deepest, adjusted[j] + arm), deepest);
     }
     // pointsTogether and pairCoupling (finishContactRow, pairMatrix).
     Float4 pairCoupling = zero, togetherLanes = zero;
     if (points == 2) {
-        const Float4 push = (-load4(biasRate)) * deepest;
+        const Float4 push = (-biasRate) * deepest;
         const Float4 k12 = mAB + invIA * rnA[0] * rnA[1] + invIB * rnB[0] * rnB[1];
-        const Mask4 pressing = hasBits(flags, kWidePoint1) & (push < splat(w.settings.maxPushSpeed));
+        const Mask4 pressing = (present[1] > zero) & (push < splat(w.settings.maxPushSpeed));
         // blockDeterminant, in its operations.
         const Float4 positive = select(k12 > zero, k12, zero);
         const Float4 det = one - (normalMass[0] * positive) * (normalMass[1] * positive);
