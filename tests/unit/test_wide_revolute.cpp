@@ -136,7 +136,8 @@ void expectAgreement(int lanes) {
 TEST(WideRevolute, AgreesBitForBitWithTheScalarRowInFourLanes) { expectAgreement(4); }
 
 // A block in one register's eight lanes where the CPU has AVX2 (37 rows are
-// five blocks, the last with three empty lanes); the four-lane path solves
+// five blocks, the last with three empty lanes: the sweep takes two pairs of
+// blocks in sixteen lanes, then the last alone); the four-lane path solves
 // each block as two halves.
 TEST(WideRevolute, AgreesBitForBitWithTheScalarRowInEightLanes) {
     limitWideLanes(8);
