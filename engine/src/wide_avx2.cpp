@@ -148,9 +148,9 @@ struct Lanes8 {
 /// is a chain (gather, the normal row, the friction row on the velocities it
 /// left, scatter) longer than the core can look ahead of, so consecutive
 /// pairs hardly overlapped. Swept two pairs together, pyramid100's step took
-/// 7 % less time; four pairs together spilled registers and were slower than
-/// one (docs/performance.md, "Two block pairs at once"). Each lane still sees
-/// the same operations in the same order, so the bits are the same.
+/// 7 % less time; four pairs together were slower than one
+/// (docs/performance.md, "Two block pairs at once"). Each lane still sees the
+/// same operations in the same order, so the bits are the same.
 template <class T>
 struct Twin {
     T lo, hi;

@@ -107,9 +107,9 @@ std::uint32_t prepareWideContactLanes(const WorldState& w, const RowContext& x, 
     // goes straight to the lane, the rest into rows of four values, one row
     // per lane, transposed below into one register per value. (Written lane
     // by lane into arrays of four and loaded whole, each array's load waited
-    // for its four stores to reach the cache: a store-forwarding stall per
-    // array, a fifth of this function's time in a pile of circles.) Lanes past
-    // `count` stay zero (their results are not written).
+    // for its four stores to reach the cache, a store-forwarding stall per
+    // array: the preparation stage of a pile of 1,000 circles took 4 %
+    // longer.) Lanes past `count` stay zero (their results are not written).
     const Float4 zero = splat(0.0f), one = splat(1.0f);
     Float4 base[4] = {zero, zero, zero, zero};    // n.x, n.y, A's inverse mass and inertia
     Float4 masses[4] = {zero, zero, zero, zero};  // B's inverse mass and inertia, biasRate, rest compliance
