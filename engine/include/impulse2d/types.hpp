@@ -73,7 +73,7 @@ struct WorldSettings {
     /// deeper than 5 cm in soft_step (less between thin shapes) are pushed on
     /// pseudo-velocities that leave no velocity behind, until they are within
     /// a quarter of that depth (overlaps bodies were created or moved into:
-    /// within 1 cm); those may move a body across gravity at ten times this (a
+    /// within 1 cm); those may move a body across gravity at fifteen times this (a
     /// sideways move lifts nothing), up or down at most this.
     float maxPushSpeed = 3.0f;
     /// Contact stiffness (Hz) and damping ratio for soft_step. The stiffness is
