@@ -126,6 +126,21 @@ bool apartAlongASide(const Shape& sa, const Body& A, const Shape& sb, const Body
     return false;
 }
 
+/// How far any point of body A or B can move within a step of dt, each at
+/// its speed at the step's start (computeManifold's speculative bound).
+inline float motionBound(const Body& A, const Body& B, float dt) {
+    return dt * (length(A.v) + std::abs(A.w) * std::max(A.reach, 0.0f) + length(B.v) +
+                 std::abs(B.w) * std::max(B.reach, 0.0f));
+}
+
+/// How fast A and B close at point p along n (A to B), each body taken to
+/// move towards the other at most as fast as at the step's start
+/// (computeManifold: the bound on a point beyond the fixed distance).
+inline float closingAt(const Body& A, const Body& B, Vec2 p, Vec2 n) {
+    const Vec2 vA = A.v + cross(A.w, p - A.center), vB = B.v + cross(B.w, p - B.center);
+    return std::max(dot(vA, n), 0.0f) + std::max(-dot(vB, n), 0.0f);
+}
+
 // The speculative margin of a pair of moving bodies follows their motion. A
 // point is kept while its gap is within the fixed speculative distance plus
 // how far the two bodies can close at that point within this step: the solver's
@@ -169,8 +184,7 @@ inline __attribute__((always_inline)) void computeManifold(const WorldState& w, 
     const float spec = w.settings.speculativeDistance;
     const float dt = w.stepDt;
     // No point of either body moves further than this within the step.
-    const float bound = dt * (length(A.v) + std::abs(A.w) * std::max(A.reach, 0.0f) + length(B.v) +
-                              std::abs(B.w) * std::max(B.reach, 0.0f));
+    const float bound = motionBound(A, B, dt);
     if (!(bound > 0.0f) || !std::isfinite(bound)) {
         ::new (&m) Manifold(collideOrdered(sa, A.xf, sb, B.xf, spec));
         return;
@@ -185,9 +199,7 @@ inline __attribute__((always_inline)) void computeManifold(const WorldState& w, 
     for (int i = 0; i < m.pointCount; ++i) {
         const ManifoldPoint& mp = m.points[i];
         if (mp.separation > spec) {
-            const Vec2 vA = A.v + cross(A.w, mp.point - A.center), vB = B.v + cross(B.w, mp.point - B.center);
-            const float closing = std::max(dot(vA, n), 0.0f) + std::max(-dot(vB, n), 0.0f);
-            if (mp.separation > spec + dt * closing) continue;
+            if (mp.separation > spec + dt * closingAt(A, B, mp.point, n)) continue;
             keptByMotion = true;
         }
         // Moved only when a point before it was dropped: copying every point
@@ -302,18 +314,13 @@ Update updateCirclePair(WorldState& w, Contact& ct) {
     Manifold& m = ct.manifold;
     const float spec = w.settings.speculativeDistance;
     const float dt = w.stepDt;
-    // computeManifold's bound and its kept point, in its operations.
-    const float bound = dt * (length(A.v) + std::abs(A.w) * std::max(A.reach, 0.0f) + length(B.v) +
-                              std::abs(B.w) * std::max(B.reach, 0.0f));
+    // computeManifold's bound and its kept point.
+    const float bound = motionBound(A, B, dt);
     const bool bounded = bound > 0.0f && std::isfinite(bound);
     writeCircleManifold(ca, A.xf, cb, B.xf, bounded ? spec + bound : spec, m);
-    if (bounded && m.pointCount == 1 && m.points[0].separation > spec) {
-        const ManifoldPoint& mp = m.points[0];
-        const Vec2 n = m.normal;
-        const Vec2 vA = A.v + cross(A.w, mp.point - A.center), vB = B.v + cross(B.w, mp.point - B.center);
-        const float closing = std::max(dot(vA, n), 0.0f) + std::max(-dot(vB, n), 0.0f);
-        if (mp.separation > spec + dt * closing) m.pointCount = 0;
-    }
+    if (bounded && m.pointCount == 1 && m.points[0].separation > spec &&
+        m.points[0].separation > spec + dt * closingAt(A, B, m.points[0].point, m.normal))
+        m.pointCount = 0;
     const bool touching = m.pointCount > 0;
     if (touching)
         markDepth(w, ct, A, B);
